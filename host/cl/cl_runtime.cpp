@@ -1,0 +1,158 @@
+#include "cl/cl_runtime.h"
+
+#include <chrono>
+
+#include "cl/embedded_kernels.h"
+#include "cl/program_cache.h"
+#include "common/error.h"
+
+namespace pathcl {
+namespace {
+
+std::string device_type_name(cl_device_type t)
+{
+    if (t & CL_DEVICE_TYPE_GPU)
+        return "GPU";
+    if (t & CL_DEVICE_TYPE_CPU)
+        return "CPU";
+    if (t & CL_DEVICE_TYPE_ACCELERATOR)
+        return "accelerator";
+    return "other";
+}
+
+struct Enumerated {
+    DeviceInfo info;
+    cl::Device device;
+};
+
+std::vector<Enumerated> enumerate()
+{
+    std::vector<Enumerated> out;
+    std::vector<cl::Platform> platforms;
+    try {
+        cl::Platform::get(&platforms);
+    } catch (const cl::Error&) {
+        return out; // no ICD installed or no platform: an empty list, not a crash
+    }
+    for (const cl::Platform& p : platforms) {
+        std::vector<cl::Device> devices;
+        try {
+            p.getDevices(CL_DEVICE_TYPE_ALL, &devices);
+        } catch (const cl::Error&) {
+            continue;
+        }
+        for (const cl::Device& d : devices) {
+            DeviceInfo info;
+            info.index = static_cast<int>(out.size());
+            info.platform = p.getInfo<CL_PLATFORM_NAME>();
+            info.name = d.getInfo<CL_DEVICE_NAME>();
+            info.type = device_type_name(d.getInfo<CL_DEVICE_TYPE>());
+            info.version = d.getInfo<CL_DEVICE_VERSION>();
+            info.driver = d.getInfo<CL_DRIVER_VERSION>();
+            info.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+            info.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+            info.fp64 = d.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
+            out.push_back({info, d});
+        }
+    }
+    return out;
+}
+
+std::string strip_nuls(std::string s)
+{
+    while (!s.empty() && s.back() == '\0')
+        s.pop_back();
+    return s;
+}
+
+} // namespace
+
+std::vector<DeviceInfo> list_devices()
+{
+    std::vector<DeviceInfo> out;
+    for (const Enumerated& e : enumerate())
+        out.push_back(e.info);
+    return out;
+}
+
+ClDevice open_device(int index)
+{
+    std::vector<Enumerated> all = enumerate();
+    if (all.empty())
+        throw Error("no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
+    if (index < 0 || index >= static_cast<int>(all.size()))
+        throw Error("--device " + std::to_string(index) + ": no such device (" +
+                    std::to_string(all.size()) + " found; see 'pathcl devices')");
+    ClDevice dev;
+    dev.info = all[static_cast<std::size_t>(index)].info;
+    dev.device = all[static_cast<std::size_t>(index)].device;
+    try {
+        dev.context = cl::Context(dev.device);
+        dev.queue = cl::CommandQueue(dev.context, dev.device);
+    } catch (const cl::Error& e) {
+        throw Error("device " + std::to_string(index) + " (" + strip_nuls(dev.info.name) +
+                    "): cannot create a context: " + e.what() + " " + std::to_string(e.err()));
+    }
+    return dev;
+}
+
+std::string base_build_options()
+{
+    // No -cl-fast-relaxed-math: it lets the compiler drop NaN checks and break the
+    // compensated film sums.
+    return "-cl-std=CL1.2";
+}
+
+ProgramBuild build_program(const ClDevice& dev, const std::string& options,
+                           const std::vector<std::string>& extra_sources)
+{
+    auto start = std::chrono::steady_clock::now();
+    std::string source;
+    for (const EmbeddedFile& f : embedded_kernel_sources()) {
+        source += "// ---- ";
+        source += f.name;
+        source += " ----\n";
+        source += f.text;
+        source += '\n';
+    }
+    for (const std::string& s : extra_sources)
+        source += s + '\n';
+    std::string full_options = base_build_options() + " " + options;
+    std::string identity = dev.info.platform + '|' + dev.info.name + '|' + dev.info.driver + '|' +
+                           dev.info.version;
+    std::string key = program_cache_key(identity, full_options, source);
+
+    ProgramBuild result;
+    if (auto binary = program_cache_load(key)) {
+        try {
+            cl::Program::Binaries bins{*binary};
+            cl::Program program(dev.context, {dev.device}, bins);
+            program.build({dev.device}, full_options.c_str());
+            result.program = program;
+            result.from_cache = true;
+        } catch (const cl::Error&) {
+            // A stale or foreign binary: fall through to a fresh compile.
+        }
+    }
+    if (!result.from_cache) {
+        cl::Program program(dev.context, source);
+        try {
+            program.build({dev.device}, full_options.c_str());
+        } catch (const cl::Error&) {
+            std::string log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(dev.device);
+            throw Error("kernel build failed on " + strip_nuls(dev.info.name) + ":\n" + log);
+        }
+        result.program = program;
+        try {
+            auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
+            if (binaries.size() == 1)
+                program_cache_store(key, binaries[0]);
+        } catch (const cl::Error&) {
+            // Some drivers cannot return binaries; caching is only an optimization.
+        }
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace pathcl

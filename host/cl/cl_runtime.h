@@ -1,0 +1,48 @@
+// OpenCL devices and programs: enumerates every platform's devices under one global
+// index, and builds the kernel program for a device with the scene's feature defines
+// (binaries cached on disk, see program_cache.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+namespace pathcl {
+
+struct DeviceInfo {
+    int index = 0; // global index across platforms, as --device takes it
+    std::string platform, name, type, version, driver;
+    unsigned compute_units = 0;
+    unsigned long long global_memory = 0;
+    bool fp64 = false;
+};
+
+std::vector<DeviceInfo> list_devices();
+
+// A device with its context and in-order queue.
+struct ClDevice {
+    DeviceInfo info;
+    cl::Device device;
+    cl::Context context;
+    cl::CommandQueue queue;
+};
+
+// Opens the device with the given global index; throws pathcl::Error if there is none.
+ClDevice open_device(int index);
+
+struct ProgramBuild {
+    cl::Program program;
+    double seconds = 0.0;    // wall time to get a ready program (compile or cache load)
+    bool from_cache = false; // loaded from pathcl's binary cache
+};
+
+// Builds the embedded kernel sources plus `extra_sources` (test kernels) with `options`
+// (feature defines). Compile failures throw pathcl::Error with the build log.
+ProgramBuild build_program(const ClDevice& dev, const std::string& options,
+                           const std::vector<std::string>& extra_sources = {});
+
+// The options every build gets: strict IEEE float (no fast math), OpenCL C 1.2.
+std::string base_build_options();
+
+} // namespace pathcl

@@ -1,0 +1,20 @@
+// The host half of the shared-struct contract: sizes and offsets the kernels rely on
+// (kernels/shared_types.h). A mismatch is a compile error, not a corrupted render.
+#include <cstddef>
+
+#include "shared_types.h"
+
+namespace pathcl {
+
+static_assert(sizeof(pcl_float4) == 16 && alignof(pcl_float4) == 16);
+static_assert(sizeof(Ray) == 32);
+static_assert(sizeof(BvhNode) == 64 && offsetof(BvhNode, right_min) == 32);
+static_assert(sizeof(Triangle) == 48);
+static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);
+static_assert(sizeof(Material) == 48 && offsetof(Material, metallic) == 32);
+static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64);
+static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
+static_assert(sizeof(FrameParams) == 32);
+static_assert(sizeof(FilmPixel) == 64);
+
+} // namespace pathcl

@@ -1,0 +1,133 @@
+#include "image/image_compare.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "common/error.h"
+
+namespace pathcl {
+namespace {
+
+struct Estimate {
+    double mean = 0.0, var_of_mean = 0.0;
+};
+
+// Counts the failing tests among paired estimates.
+CompareScale run_scale(const std::string& name, const std::vector<Estimate>& a,
+                       const std::vector<Estimate>& b, double alpha)
+{
+    CompareScale s;
+    s.name = name;
+    s.tests = a.size();
+    s.z_threshold = sidak_z_threshold(alpha, a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        double diff = a[i].mean - b[i].mean;
+        double se = std::sqrt(a[i].var_of_mean + b[i].var_of_mean);
+        double z;
+        if (se > 0.0)
+            z = std::fabs(diff) / se;
+        else // both estimates are exact: they must agree to rounding
+            z = (std::fabs(diff) <= 1e-6 * std::max(std::fabs(a[i].mean), std::fabs(b[i].mean))) ? 0.0 : INFINITY;
+        if (!std::isfinite(a[i].mean) || !std::isfinite(b[i].mean))
+            z = INFINITY;
+        s.worst_z = std::max(s.worst_z, z);
+        if (!(z <= s.z_threshold))
+            ++s.failures;
+    }
+    return s;
+}
+
+// Means and variances of means of block x block tiles (partial tiles at the edges).
+std::vector<Estimate> tiles(const Image& img, int block)
+{
+    std::vector<Estimate> out;
+    double n = img.spp;
+    for (std::uint32_t ty = 0; ty < img.height; ty += static_cast<std::uint32_t>(block))
+        for (std::uint32_t tx = 0; tx < img.width; tx += static_cast<std::uint32_t>(block))
+            for (int c = 0; c < 3; ++c) {
+                Estimate e;
+                double count = 0.0;
+                for (std::uint32_t y = ty; y < std::min(img.height, ty + block); ++y)
+                    for (std::uint32_t x = tx; x < std::min(img.width, tx + block); ++x) {
+                        std::size_t i = (static_cast<std::size_t>(y) * img.width + x) * 3 + static_cast<std::size_t>(c);
+                        e.mean += img.rgb[i];
+                        e.var_of_mean += img.variance[i] / n;
+                        count += 1.0;
+                    }
+                e.mean /= count;
+                e.var_of_mean /= count * count;
+                out.push_back(e);
+            }
+    return out;
+}
+
+} // namespace
+
+double sidak_z_threshold(double alpha, std::size_t tests)
+{
+    double per_test = 1.0 - std::pow(1.0 - alpha, 1.0 / static_cast<double>(std::max<std::size_t>(tests, 1)));
+    // Solve erfc(z / sqrt 2) = per_test by bisection (erfc is decreasing).
+    double lo = 0.0, hi = 40.0;
+    for (int i = 0; i < 200; ++i) {
+        double mid = 0.5 * (lo + hi);
+        (std::erfc(mid / std::sqrt(2.0)) > per_test ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+CompareReport compare_images(const Image& a, const Image& b, const CompareOptions& opt)
+{
+    if (a.width != b.width || a.height != b.height)
+        throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                    " vs " + std::to_string(b.width) + "x" + std::to_string(b.height));
+    if (a.spp == 0 || b.spp == 0)
+        throw Error("an image has no sample count (pathcl:spp), so its variance cannot be used");
+    CompareReport r;
+    const std::size_t n = static_cast<std::size_t>(a.width) * a.height;
+
+    std::vector<Estimate> pa(n * 3), pb(n * 3);
+    for (std::size_t i = 0; i < n * 3; ++i) {
+        pa[i] = {a.rgb[i], a.variance[i] / static_cast<double>(a.spp)};
+        pb[i] = {b.rgb[i], b.variance[i] / static_cast<double>(b.spp)};
+    }
+    r.scales.push_back(run_scale("pixel", pa, pb, opt.alpha));
+    r.scales.push_back(run_scale(std::to_string(opt.block) + "x" + std::to_string(opt.block) + " tile",
+                                 tiles(a, opt.block), tiles(b, opt.block), opt.alpha));
+    int whole = static_cast<int>(std::max(a.width, a.height));
+    std::vector<Estimate> wa = tiles(a, whole), wb = tiles(b, whole);
+    r.scales.push_back(run_scale("image", wa, wb, opt.alpha));
+    for (int c = 0; c < 3; ++c) {
+        r.mean_a[c] = wa[static_cast<std::size_t>(c)].mean;
+        r.mean_b[c] = wb[static_cast<std::size_t>(c)].mean;
+        r.stderr_diff[c] = std::sqrt(wa[static_cast<std::size_t>(c)].var_of_mean + wb[static_cast<std::size_t>(c)].var_of_mean);
+    }
+    r.passed = true;
+    for (const CompareScale& s : r.scales) {
+        double limit = (s.name == "image") ? 0.0 : opt.max_fail_fraction;
+        if (static_cast<double>(s.failures) > limit * static_cast<double>(s.tests))
+            r.passed = false;
+    }
+    return r;
+}
+
+std::string CompareReport::summary() const
+{
+    std::string out;
+    char line[256];
+    for (const CompareScale& s : scales) {
+        std::snprintf(line, sizeof line, "%-10s %7zu tests, %5zu fail (%.3f%%), |z| threshold %.2f, worst |z| %.2f\n",
+                      s.name.c_str(), s.tests, s.failures,
+                      s.tests ? 100.0 * static_cast<double>(s.failures) / static_cast<double>(s.tests) : 0.0,
+                      s.z_threshold, s.worst_z);
+        out += line;
+    }
+    std::snprintf(line, sizeof line,
+                  "image mean A (%.5f %.5f %.5f)  B (%.5f %.5f %.5f)  std. error of difference (%.5f %.5f %.5f)\n",
+                  mean_a[0], mean_a[1], mean_a[2], mean_b[0], mean_b[1], mean_b[2], stderr_diff[0], stderr_diff[1],
+                  stderr_diff[2]);
+    out += line;
+    out += passed ? "PASS\n" : "FAIL\n";
+    return out;
+}
+
+} // namespace pathcl

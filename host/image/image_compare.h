@@ -1,0 +1,41 @@
+// Statistical comparison of two Monte Carlo renders (the Mitsuba 3 render-test method):
+// two-sided Welch z-tests of the pixel means, with a Šidák-corrected threshold, at three
+// scales: every pixel and channel, block x block tiles (more power against small biases),
+// and the whole image per channel. A scale passes when at most `max_fail_fraction` of its
+// tests fail; the whole-image scale must pass every test.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+
+namespace pathcl {
+
+struct CompareOptions {
+    double alpha = 0.01;              // family-wise false-alarm rate per scale
+    double max_fail_fraction = 0.01;  // tolerated failing fraction (heavy-tailed estimates)
+    int block = 8;
+};
+
+struct CompareScale {
+    std::string name;
+    std::size_t tests = 0, failures = 0;
+    double z_threshold = 0.0;
+    double worst_z = 0.0;
+};
+
+struct CompareReport {
+    std::vector<CompareScale> scales;
+    double mean_a[3] = {}, mean_b[3] = {}, stderr_diff[3] = {};
+    bool passed = false;
+    std::string summary() const;
+};
+
+// Throws pathcl::Error if sizes differ or an image lacks a sample count.
+CompareReport compare_images(const Image& a, const Image& b, const CompareOptions& options = {});
+
+// Two-sided standard-normal critical value for a Šidák-corrected family of `tests`.
+double sidak_z_threshold(double alpha, std::size_t tests);
+
+} // namespace pathcl

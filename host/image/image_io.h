@@ -1,0 +1,22 @@
+// Image files through OpenImageIO. EXR: linear float RGB plus the per-sample variance as
+// channels variance.R/G/B and the sample count as attribute "pathcl:spp". PNG: the same
+// radiance sRGB-encoded and clamped to 8 bits. Files are written under a temporary name in
+// the target directory and renamed, so a failed write never leaves a partial file and
+// never destroys an existing one.
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+
+namespace pathcl {
+
+// Throws pathcl::Error unless `path` ends in .exr or .png and its directory exists.
+void check_output_path(const std::string& path);
+
+void write_image(const std::string& path, const Image& image);
+
+// Reads an EXR written by write_image (variance channels optional: zero if absent).
+Image read_image(const std::string& path);
+
+} // namespace pathcl

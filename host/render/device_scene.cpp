@@ -1,0 +1,131 @@
+#include "render/device_scene.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace pathcl {
+namespace {
+
+pcl_float4 f4(const glm::vec3& v, float w = 0.0f)
+{
+    return {v.x, v.y, v.z, w};
+}
+
+pcl_float4 f4(const glm::dvec3& v, float w = 0.0f)
+{
+    return f4(glm::vec3(v), w);
+}
+
+} // namespace
+
+void build_light_alias_table(std::vector<Light>& lights, const std::vector<double>& power)
+{
+    // Vose's alias method, in double so that tiny lights keep their probability.
+    std::size_t n = lights.size();
+    if (n == 0)
+        return;
+    double total = 0.0;
+    for (double p : power)
+        total += p;
+    std::vector<double> scaled(n);
+    std::vector<std::size_t> small, large;
+    for (std::size_t i = 0; i < n; ++i) {
+        double pmf = total > 0.0 ? power[i] / total : 1.0 / static_cast<double>(n);
+        lights[i].radiance.w = static_cast<float>(pmf);
+        scaled[i] = pmf * static_cast<double>(n);
+        (scaled[i] < 1.0 ? small : large).push_back(i);
+    }
+    while (!small.empty() && !large.empty()) {
+        std::size_t s = small.back(), l = large.back();
+        small.pop_back();
+        lights[s].alias_threshold = static_cast<float>(scaled[s]);
+        lights[s].alias = static_cast<pcl_int>(l);
+        scaled[l] = (scaled[l] + scaled[s]) - 1.0;
+        if (scaled[l] < 1.0) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    for (std::size_t i : small) { // leftovers are 1 up to rounding
+        lights[i].alias_threshold = 2.0f; // always keep
+        lights[i].alias = static_cast<pcl_int>(i);
+    }
+    for (std::size_t i : large) {
+        lights[i].alias_threshold = 2.0f;
+        lights[i].alias = static_cast<pcl_int>(i);
+    }
+}
+
+DeviceScene make_device_scene(const Scene& scene)
+{
+    DeviceScene ds;
+    ds.features = scene_features(scene);
+    auto start = std::chrono::steady_clock::now();
+    BvhBuildInput input;
+    std::size_t n = scene.triangles.size();
+    input.box_min.resize(n);
+    input.box_max.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const SceneTriangle& t = scene.triangles[i];
+        input.box_min[i] = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
+        input.box_max[i] = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
+    }
+    Bvh bvh = build_bvh(input);
+    ds.bvh_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ds.nodes = std::move(bvh.nodes);
+    ds.bvh_stats = bvh;
+
+    for (const SceneMaterial& m : scene.materials) {
+        Material dm{};
+        dm.base_color = f4(m.base_color);
+        dm.emission = f4(m.emission);
+        dm.metallic = m.metallic;
+        dm.roughness = m.roughness;
+        dm.flags = m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u;
+        ds.materials.push_back(dm);
+    }
+
+    ds.triangles.resize(n);
+    ds.shading.resize(n);
+    std::vector<double> power;
+    for (std::size_t i = 0; i < n; ++i) {
+        const SceneTriangle& t = scene.triangles[bvh.triangle_order[i]];
+        ds.triangles[i] = Triangle{f4(t.v[0]), f4(t.v[1]), f4(t.v[2])};
+        TriangleShading& sh = ds.shading[i];
+        sh = TriangleShading{f4(t.n[0]), f4(t.n[1]), f4(t.n[2]), t.material, -1, 0, 0};
+        const SceneMaterial& m = scene.materials[static_cast<std::size_t>(t.material)];
+        if (!m.emits())
+            continue;
+        double area = 0.5 * glm::length(glm::cross(glm::dvec3(t.v[1]) - glm::dvec3(t.v[0]),
+                                                   glm::dvec3(t.v[2]) - glm::dvec3(t.v[0])));
+        Light light{};
+        light.type = LIGHT_TRIANGLE;
+        light.p0 = f4(t.v[0], static_cast<float>(area));
+        light.p1 = f4(t.v[1]);
+        light.p2 = f4(t.v[2]);
+        light.radiance = f4(m.emission);
+        sh.emitter = static_cast<pcl_int>(ds.lights.size());
+        ds.lights.push_back(light);
+        // Emitted power of a one-sided Lambertian emitter: pi * area * radiance (luminance-weighted).
+        double lum = 0.2126 * m.emission.x + 0.7152 * m.emission.y + 0.0722 * m.emission.z;
+        power.push_back(std::numbers::pi * area * std::max(lum, 1e-12));
+    }
+    build_light_alias_table(ds.lights, power);
+    return ds;
+}
+
+Camera make_device_camera(const SceneCamera& cam, std::uint32_t width, std::uint32_t height)
+{
+    double tan_half = std::tan(0.5 * cam.yfov);
+    double aspect = static_cast<double>(width) / static_cast<double>(height);
+    Camera c{};
+    c.type = CAMERA_PINHOLE;
+    c.position = f4(cam.position);
+    c.forward = f4(glm::normalize(cam.forward));
+    c.right = f4(glm::normalize(cam.right) * (tan_half * aspect));
+    c.up = f4(glm::normalize(cam.up) * tan_half);
+    return c;
+}
+
+} // namespace pathcl

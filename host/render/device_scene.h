@@ -1,0 +1,34 @@
+// The scene as the kernels read it: BVH nodes, triangles in leaf order with their shading
+// data, materials, lights with their alias table, and the camera; built once on the host.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bvh/bvh_builder.h"
+#include "scene/scene.h"
+#include "shared_types.h"
+
+namespace pathcl {
+
+struct DeviceScene {
+    std::vector<BvhNode> nodes;
+    std::vector<Triangle> triangles;
+    std::vector<TriangleShading> shading;
+    std::vector<Material> materials;
+    std::vector<Light> lights; // emissive triangles, selection by power
+    SceneFeatures features;
+    Bvh bvh_stats; // depth and leaf figures (nodes moved into `nodes`)
+    double bvh_build_seconds = 0.0;
+};
+
+DeviceScene make_device_scene(const Scene& scene);
+
+// Fills the alias-table fields and pmf (radiance.w) of `lights` from their powers.
+void build_light_alias_table(std::vector<Light>& lights, const std::vector<double>& power);
+
+// Camera for an image of the given size: yfov is kept; the horizontal extent follows
+// the image's aspect ratio.
+Camera make_device_camera(const SceneCamera& cam, std::uint32_t width, std::uint32_t height);
+
+} // namespace pathcl

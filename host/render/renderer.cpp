@@ -1,0 +1,187 @@
+#include "render/renderer.h"
+
+#include <chrono>
+#include <memory>
+
+#include "cl/cl_runtime.h"
+#include "common/error.h"
+#include "render/device_scene.h"
+
+namespace pathcl {
+namespace {
+
+// Fixed work-group shape for the 2D image kernels (a multiple of every SIMD width).
+constexpr std::uint32_t kTile = 8;
+
+std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
+{
+    return (v + m - 1) / m * m;
+}
+
+// Everything one device needs for a render.
+struct DeviceRender {
+    ClDevice dev;
+    cl::Program program;
+    cl::Kernel camera_kernel, path_kernel, clear_kernel;
+    cl::Buffer nodes, triangles, shading, materials, lights, rays, film, bad;
+    std::size_t pixels = 0;
+
+    template <typename T>
+    cl::Buffer make(const std::vector<T>& data)
+    {
+        std::size_t bytes = std::max<std::size_t>(sizeof(T), data.size() * sizeof(T));
+        cl::Buffer b(dev.context, CL_MEM_READ_ONLY, bytes);
+        if (!data.empty())
+            dev.queue.enqueueWriteBuffer(b, CL_TRUE, 0, data.size() * sizeof(T), data.data());
+        return b;
+    }
+};
+
+std::string cl_error_text(const cl::Error& e)
+{
+    return std::string(e.what()) + " (OpenCL error " + std::to_string(e.err()) + ")";
+}
+
+} // namespace
+
+RenderResult render(const Scene& scene, const RenderOptions& opt)
+{
+    if (opt.width == 0 || opt.height == 0)
+        throw Error("image size must be at least 1x1");
+    if (opt.spp == 0)
+        throw Error("--spp must be at least 1");
+    if (opt.devices.empty())
+        throw Error("no device selected");
+
+    RenderResult result;
+    RenderStats& stats = result.stats;
+    DeviceScene ds = make_device_scene(scene);
+    stats.triangles = ds.triangles.size();
+    stats.lights = ds.lights.size();
+    stats.bvh_nodes = ds.nodes.size();
+    stats.bvh_build_seconds = ds.bvh_build_seconds;
+
+    const std::size_t pixels = static_cast<std::size_t>(opt.width) * opt.height;
+    Camera camera = make_device_camera(scene.camera, opt.width, opt.height);
+    std::string defines = ds.features.build_defines() + " " + opt.extra_build_options;
+
+    std::vector<std::unique_ptr<DeviceRender>> devices;
+    stats.kernel_from_cache = true;
+    for (int index : opt.devices) {
+        auto dr = std::make_unique<DeviceRender>();
+        dr->dev = open_device(index);
+        ProgramBuild pb = build_program(dr->dev, defines);
+        stats.kernel_build_seconds += pb.seconds;
+        stats.kernel_from_cache = stats.kernel_from_cache && pb.from_cache;
+        try {
+            dr->program = pb.program;
+            dr->camera_kernel = cl::Kernel(dr->program, "generate_camera_rays");
+            dr->path_kernel = cl::Kernel(dr->program, "trace_paths");
+            dr->clear_kernel = cl::Kernel(dr->program, "clear_film");
+            dr->nodes = dr->make(ds.nodes);
+            dr->triangles = dr->make(ds.triangles);
+            dr->shading = dr->make(ds.shading);
+            dr->materials = dr->make(ds.materials);
+            dr->lights = dr->make(ds.lights);
+            dr->pixels = pixels;
+            dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
+            dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
+            dr->bad = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_uint));
+            dr->clear_kernel.setArg(0, dr->film);
+            dr->clear_kernel.setArg(1, dr->bad);
+            dr->clear_kernel.setArg(2, static_cast<cl_uint>(pixels));
+            dr->dev.queue.enqueueNDRangeKernel(dr->clear_kernel, cl::NullRange,
+                                               cl::NDRange(round_up(static_cast<std::uint32_t>(pixels), 64)),
+                                               cl::NDRange(64));
+            dr->camera_kernel.setArg(0, dr->rays);
+            dr->camera_kernel.setArg(1, camera);
+            int a = 0;
+            dr->path_kernel.setArg(a++, dr->rays);
+            dr->path_kernel.setArg(a++, dr->nodes);
+            dr->path_kernel.setArg(a++, dr->triangles);
+            dr->path_kernel.setArg(a++, dr->shading);
+            dr->path_kernel.setArg(a++, dr->materials);
+            dr->path_kernel.setArg(a++, dr->lights);
+            dr->path_kernel.setArg(a++, dr->film);
+            dr->path_kernel.setArg(a++, dr->bad);
+            dr->dev.queue.finish();
+        } catch (const cl::Error& e) {
+            throw Error("device " + std::to_string(index) + ": setting up the render failed: " +
+                        cl_error_text(e));
+        }
+        devices.push_back(std::move(dr));
+    }
+
+    const cl::NDRange global(round_up(opt.width, kTile), round_up(opt.height, kTile));
+    const cl::NDRange local(kTile, kTile);
+    auto start = std::chrono::steady_clock::now();
+    try {
+        for (std::uint32_t s = 0; s < opt.spp; ++s) {
+            DeviceRender& dr = *devices[s % devices.size()];
+            FrameParams frame{};
+            frame.width = opt.width;
+            frame.height = opt.height;
+            frame.sample_index = s;
+            frame.seed = opt.seed;
+            frame.max_bounces = opt.max_bounces;
+            frame.light_count = static_cast<pcl_uint>(ds.lights.size());
+            dr.camera_kernel.setArg(2, frame);
+            dr.path_kernel.setArg(8, frame);
+            dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
+            dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
+            if (s % 16 == 15)
+                dr.dev.queue.flush();
+        }
+        for (auto& dr : devices)
+            dr->dev.queue.finish();
+    } catch (const cl::Error& e) {
+        throw Error("rendering failed: " + cl_error_text(e));
+    }
+
+    // Sum the devices' films in double, then form means and per-sample variances.
+    std::vector<double> sum(pixels * 4, 0.0), sum_sq(pixels * 4, 0.0);
+    std::vector<FilmPixel> film(pixels);
+    std::vector<cl_uint> bad(pixels);
+    try {
+        for (auto& dr : devices) {
+            dr->dev.queue.enqueueReadBuffer(dr->film, CL_TRUE, 0, pixels * sizeof(FilmPixel), film.data());
+            dr->dev.queue.enqueueReadBuffer(dr->bad, CL_TRUE, 0, pixels * sizeof(cl_uint), bad.data());
+            for (std::size_t i = 0; i < pixels; ++i) {
+                const FilmPixel& f = film[i];
+                const float* s = &f.sum.x;
+                const float* sc = &f.sum_compensation.x;
+                const float* q = &f.sum_sq.x;
+                const float* qc = &f.sum_sq_compensation.x;
+                for (int c = 0; c < 4; ++c) {
+                    sum[i * 4 + c] += static_cast<double>(s[c]) + static_cast<double>(sc[c]);
+                    sum_sq[i * 4 + c] += static_cast<double>(q[c]) + static_cast<double>(qc[c]);
+                }
+                stats.bad_samples += bad[i];
+            }
+        }
+    } catch (const cl::Error& e) {
+        throw Error("reading the film failed: " + cl_error_text(e));
+    }
+    stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.samples_per_second = static_cast<double>(pixels) * opt.spp / std::max(stats.render_seconds, 1e-9);
+
+    Image& img = result.image;
+    img.width = opt.width;
+    img.height = opt.height;
+    img.spp = opt.spp;
+    img.rgb.resize(pixels * 3);
+    img.variance.resize(pixels * 3);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        double n = sum[i * 4 + 3]; // samples actually accumulated (bad ones excluded)
+        for (int c = 0; c < 3; ++c) {
+            double s = sum[i * 4 + c], q = sum_sq[i * 4 + c];
+            double mean = n > 0.0 ? s / n : 0.0;
+            double var = n > 1.0 ? std::max(0.0, (q - s * mean) / (n - 1.0)) : 0.0;
+            img.rgb[i * 3 + c] = static_cast<float>(mean);
+            img.variance[i * 3 + c] = static_cast<float>(var);
+        }
+    }
+    return result;
+}
+
+} // namespace pathcl

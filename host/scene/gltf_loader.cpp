@@ -1,0 +1,425 @@
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <numbers>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include "common/error.h"
+
+namespace pathcl {
+namespace {
+
+constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
+
+std::string one_line(std::string s)
+{
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\r'))
+        s.pop_back();
+    return s;
+}
+
+// Reads accessor elements as doubles, honouring stride, component type and normalization,
+// after checking that every element lies inside its buffer.
+class AccessorReader {
+public:
+    AccessorReader(const tinygltf::Model& model, int index, const std::string& what,
+                   const std::string& source)
+        : what_(what), source_(source)
+    {
+        if (index < 0 || index >= static_cast<int>(model.accessors.size()))
+            fail("accessor index " + std::to_string(index) + " does not exist");
+        const tinygltf::Accessor& acc = model.accessors[static_cast<std::size_t>(index)];
+        what_ += " (accessor " + std::to_string(index) + ")";
+        if (acc.sparse.isSparse)
+            fail("sparse accessors are not supported");
+        if (acc.bufferView < 0 || acc.bufferView >= static_cast<int>(model.bufferViews.size()))
+            fail("has no valid bufferView");
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(acc.bufferView)];
+        if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size()))
+            fail("its bufferView has no valid buffer");
+        const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
+        components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(acc.type));
+        component_size_ = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(acc.componentType));
+        if (components_ <= 0 || component_size_ <= 0)
+            fail("has an invalid type or component type");
+        component_type_ = acc.componentType;
+        normalized_ = acc.normalized;
+        count_ = acc.count;
+        std::size_t element = static_cast<std::size_t>(components_ * component_size_);
+        stride_ = view.byteStride ? view.byteStride : element;
+        std::size_t start = view.byteOffset + acc.byteOffset;
+        std::size_t needed = count_ ? start + (count_ - 1) * stride_ + element : start;
+        if (needed > view.byteOffset + view.byteLength || needed > buffer.data.size())
+            fail("reads past the end of its buffer (needs " + std::to_string(needed) +
+                 " bytes, buffer has " + std::to_string(buffer.data.size()) + ")");
+        data_ = buffer.data.data() + start;
+    }
+
+    std::size_t count() const { return count_; }
+    int components() const { return components_; }
+
+    double get(std::size_t i, int c) const
+    {
+        const unsigned char* p = data_ + i * stride_ + static_cast<std::size_t>(c * component_size_);
+        switch (component_type_) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float f;
+            std::memcpy(&f, p, 4);
+            return f;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return normalized_ ? *p / 255.0 : *p;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            auto v = static_cast<signed char>(*p);
+            return normalized_ ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized_ ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized_ ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        default:
+            fail("has an unsupported component type");
+        }
+    }
+
+    bool is_index_type() const
+    {
+        return components_ == 1 && !normalized_ &&
+               (component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    }
+
+    [[noreturn]] void fail(const std::string& msg) const
+    {
+        throw Error(source_ + ": " + what_ + ": " + msg);
+    }
+
+private:
+    std::string what_, source_;
+    const unsigned char* data_ = nullptr;
+    std::size_t count_ = 0, stride_ = 0;
+    int components_ = 0, component_size_ = 0, component_type_ = 0;
+    bool normalized_ = false;
+};
+
+glm::dmat4 local_transform(const tinygltf::Node& node)
+{
+    if (node.matrix.size() == 16)
+        return glm::make_mat4(node.matrix.data()); // column-major, as glTF stores it
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3)
+        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (node.rotation.size() == 4) {
+        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        m = m * glm::mat4_cast(glm::normalize(q));
+    }
+    if (node.scale.size() == 3)
+        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+double number_or(const tinygltf::Value& obj, const char* key, double fallback)
+{
+    if (!obj.IsObject() || !obj.Has(key))
+        return fallback;
+    const tinygltf::Value& v = obj.Get(key);
+    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+SceneMaterial import_material(const tinygltf::Material& m)
+{
+    SceneMaterial out;
+    out.name = m.name;
+    const auto& pbr = m.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() >= 3)
+        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                              pbr.baseColorFactor[2]));
+    out.metallic = static_cast<float>(pbr.metallicFactor);
+    out.roughness = static_cast<float>(pbr.roughnessFactor);
+    double strength = 1.0;
+    auto it = m.extensions.find("KHR_materials_emissive_strength");
+    if (it != m.extensions.end())
+        strength = number_or(it->second, "emissiveStrength", 1.0);
+    if (m.emissiveFactor.size() == 3)
+        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
+                                            m.emissiveFactor[2]) * strength);
+    out.double_sided = m.doubleSided;
+    return out;
+}
+
+struct Importer {
+    const tinygltf::Model& model;
+    const std::string& source;
+    Scene scene;
+    int default_material = -1;
+    std::size_t skipped_points_lines = 0;
+    std::size_t repaired_normals = 0;
+
+    int material_for(int gltf_material)
+    {
+        if (gltf_material >= 0) {
+            if (gltf_material >= static_cast<int>(model.materials.size()))
+                throw Error(source + ": material index " + std::to_string(gltf_material) +
+                            " does not exist");
+            return gltf_material;
+        }
+        if (default_material < 0) {
+            SceneMaterial def; // the glTF default material
+            def.name = "(default)";
+            default_material = static_cast<int>(scene.materials.size());
+            scene.materials.push_back(def);
+        }
+        return default_material;
+    }
+
+    // Vertex indices of the primitive's triangles, strips and fans converted.
+    std::vector<std::uint32_t> triangle_indices(const tinygltf::Primitive& prim,
+                                                std::size_t vertex_count, const std::string& what)
+    {
+        std::vector<std::uint32_t> idx;
+        if (prim.indices >= 0) {
+            AccessorReader r(model, prim.indices, what + " indices", source);
+            if (!r.is_index_type())
+                r.fail("indices must be unsigned byte, short or int scalars");
+            idx.resize(r.count());
+            for (std::size_t i = 0; i < r.count(); ++i) {
+                double v = r.get(i, 0);
+                if (v >= static_cast<double>(vertex_count))
+                    r.fail("index " + std::to_string(static_cast<std::uint64_t>(v)) +
+                           " is out of range (" + std::to_string(vertex_count) + " vertices)");
+                idx[i] = static_cast<std::uint32_t>(v);
+            }
+        } else {
+            idx.resize(vertex_count);
+            for (std::size_t i = 0; i < vertex_count; ++i)
+                idx[i] = static_cast<std::uint32_t>(i);
+        }
+        std::vector<std::uint32_t> tris;
+        if (prim.mode == kModeTriangles) {
+            tris.assign(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(idx.size() / 3 * 3));
+        } else if (prim.mode == kModeStrip) {
+            for (std::size_t i = 2; i < idx.size(); ++i) {
+                bool even = (i % 2) == 0; // alternate winding keeps every triangle CCW
+                tris.insert(tris.end(), {idx[i - 2], even ? idx[i - 1] : idx[i], even ? idx[i] : idx[i - 1]});
+            }
+        } else if (prim.mode == kModeFan) {
+            for (std::size_t i = 2; i < idx.size(); ++i)
+                tris.insert(tris.end(), {idx[0], idx[i - 1], idx[i]});
+        }
+        return tris;
+    }
+
+    void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world,
+                          const std::string& what)
+    {
+        if (prim.mode >= 0 && prim.mode < kModeTriangles) {
+            ++skipped_points_lines;
+            return;
+        }
+        if (prim.mode > kModeFan)
+            throw Error(source + ": " + what + ": invalid primitive mode " + std::to_string(prim.mode));
+        auto pos_it = prim.attributes.find("POSITION");
+        if (pos_it == prim.attributes.end())
+            throw Error(source + ": " + what + ": has no POSITION attribute");
+        AccessorReader pos(model, pos_it->second, what + " POSITION", source);
+        if (pos.components() != 3)
+            pos.fail("POSITION must be VEC3");
+        std::vector<glm::dvec3> p(pos.count());
+        for (std::size_t i = 0; i < pos.count(); ++i) {
+            glm::dvec4 w = world * glm::dvec4(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2), 1.0);
+            p[i] = glm::dvec3(w);
+            if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y) || !std::isfinite(p[i].z))
+                pos.fail("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+        }
+        glm::dmat3 m3(world);
+        glm::dmat3 normal_matrix = glm::transpose(glm::inverse(m3));
+        bool mirrored = glm::determinant(m3) < 0.0; // a mirror flips counter-clockwise
+        std::vector<glm::dvec3> n;
+        auto nrm_it = prim.attributes.find("NORMAL");
+        if (nrm_it != prim.attributes.end()) {
+            AccessorReader nr(model, nrm_it->second, what + " NORMAL", source);
+            if (nr.components() != 3 || nr.count() != pos.count())
+                nr.fail("NORMAL must be VEC3 with one normal per vertex");
+            n.resize(nr.count());
+            for (std::size_t i = 0; i < nr.count(); ++i)
+                n[i] = normal_matrix * glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
+        }
+        int material = material_for(prim.material);
+        std::vector<std::uint32_t> tris = triangle_indices(prim, p.size(), what);
+        for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+            std::uint32_t i0 = tris[t], i1 = tris[t + 1], i2 = tris[t + 2];
+            if (mirrored)
+                std::swap(i1, i2);
+            SceneTriangle tri;
+            tri.material = material;
+            tri.v[0] = glm::vec3(p[i0]);
+            tri.v[1] = glm::vec3(p[i1]);
+            tri.v[2] = glm::vec3(p[i2]);
+            // Degenerate (zero area in the float positions the device will see): drop.
+            glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
+            float len = glm::length(c);
+            if (!(len > 0.0f) || !std::isfinite(len)) {
+                ++scene.dropped_degenerate;
+                continue;
+            }
+            glm::vec3 ng = c / len;
+            const std::uint32_t ids[3] = {i0, i1, i2};
+            for (int k = 0; k < 3; ++k) {
+                glm::vec3 sn = ng;
+                if (!n.empty()) {
+                    glm::dvec3 d = n[ids[k]];
+                    double l = glm::length(d);
+                    if (l > 0.0 && std::isfinite(l))
+                        sn = glm::vec3(d / l);
+                    else
+                        ++repaired_normals;
+                }
+                tri.n[k] = sn;
+            }
+            scene.triangles.push_back(tri);
+        }
+    }
+
+    void run()
+    {
+        static const std::set<std::string> supported = {
+            "KHR_materials_emissive_strength", "KHR_materials_specular"};
+        for (const std::string& ext : model.extensionsRequired)
+            if (!supported.count(ext))
+                throw Error(source + ": requires the unsupported extension " + ext);
+
+        for (const tinygltf::Material& m : model.materials)
+            scene.materials.push_back(import_material(m));
+
+        int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (model.scenes.empty())
+            throw Error(source + ": has no scene");
+        if (scene_index >= static_cast<int>(model.scenes.size()))
+            throw Error(source + ": default scene " + std::to_string(scene_index) + " does not exist");
+
+        bool have_camera = false;
+        struct Item {
+            int node;
+            glm::dmat4 parent;
+            int depth;
+        };
+        std::vector<Item> stack;
+        const auto& roots = model.scenes[static_cast<std::size_t>(scene_index)].nodes;
+        for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+            stack.push_back({*it, glm::dmat4(1.0), 0});
+        const int max_depth = static_cast<int>(model.nodes.size()) + 1; // deeper means a cycle
+        while (!stack.empty()) {
+            Item item = stack.back();
+            stack.pop_back();
+            if (item.node < 0 || item.node >= static_cast<int>(model.nodes.size()))
+                throw Error(source + ": node index " + std::to_string(item.node) + " does not exist");
+            if (item.depth > max_depth)
+                throw Error(source + ": the node hierarchy has a cycle");
+            const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(item.node)];
+            glm::dmat4 world = item.parent * local_transform(node);
+            std::string what = "node " + std::to_string(item.node) +
+                               (node.name.empty() ? "" : " '" + node.name + "'");
+            if (node.mesh >= 0) {
+                if (node.mesh >= static_cast<int>(model.meshes.size()))
+                    throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");
+                const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
+                for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
+                    import_primitive(mesh.primitives[i], world,
+                                     what + " mesh " + std::to_string(node.mesh) + " primitive " +
+                                         std::to_string(i));
+            }
+            if (node.camera >= 0 && !have_camera) {
+                if (node.camera >= static_cast<int>(model.cameras.size()))
+                    throw Error(source + ": " + what + ": camera " + std::to_string(node.camera) + " does not exist");
+                const tinygltf::Camera& cam = model.cameras[static_cast<std::size_t>(node.camera)];
+                if (cam.type == "perspective") {
+                    import_camera(cam, world, what);
+                    have_camera = true;
+                }
+            }
+            for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+                stack.push_back({*it, world, item.depth + 1});
+        }
+        if (!have_camera)
+            scene.camera = framing_camera(scene, 0.8);
+        if (scene.materials.empty())
+            scene.materials.push_back(SceneMaterial{});
+        if (skipped_points_lines)
+            warn(source + ": skipped " + std::to_string(skipped_points_lines) +
+                 " point and line primitives (only triangles are rendered)");
+        if (scene.dropped_degenerate)
+            warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
+                 " degenerate (zero-area) triangles");
+        if (repaired_normals)
+            warn(source + ": replaced " + std::to_string(repaired_normals) +
+                 " zero-length or NaN normals by the geometric normal");
+    }
+
+    void import_camera(const tinygltf::Camera& cam, const glm::dmat4& world, const std::string& what)
+    {
+        double yfov = cam.perspective.yfov;
+        if (!(yfov > 0.0 && yfov < std::numbers::pi))
+            throw Error(source + ": " + what + ": perspective yfov must be in (0, pi)");
+        glm::dmat3 m3(world);
+        glm::dvec3 forward = m3 * glm::dvec3(0.0, 0.0, -1.0);
+        glm::dvec3 up = m3 * glm::dvec3(0.0, 1.0, 0.0);
+        glm::dvec3 right = glm::cross(forward, up);
+        if (!(glm::length(forward) > 0.0) || !(glm::length(right) > 0.0))
+            throw Error(source + ": " + what + ": the camera transform is degenerate");
+        SceneCamera& c = scene.camera;
+        c.position = glm::dvec3(world[3]);
+        c.forward = glm::normalize(forward); // node scale does not change the projection
+        c.right = glm::normalize(right);
+        c.up = glm::cross(c.right, c.forward);
+        c.yfov = yfov;
+        c.from_file = true;
+    }
+};
+
+} // namespace
+
+Scene import_gltf(const tinygltf::Model& model, const std::string& source)
+{
+    Importer importer{model, source, {}};
+    importer.run();
+    return std::move(importer.scene);
+}
+
+Scene load_gltf(const std::string& path)
+{
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(path + ": no such file");
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warning;
+    bool binary = std::filesystem::path(path).extension() == ".glb";
+    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warning, path)
+                     : loader.LoadASCIIFromFile(&model, &err, &warning, path);
+    if (!ok)
+        throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
+    return import_gltf(model, path);
+}
+
+} // namespace pathcl

@@ -1,0 +1,23 @@
+// glTF 2.0 (.gltf / .glb) to the flat Scene, following ../shared/CONVENTIONS.md: default
+// scene, node hierarchy composed in double precision, triangles (strips and fans
+// converted), shading normals, metallic-roughness materials with emissive strength, and
+// the first perspective camera.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace pathcl {
+
+// Loads a file; throws pathcl::Error("FILE: what is wrong") on any problem.
+Scene load_gltf(const std::string& path);
+
+// Imports an already parsed model; `source` names it in error messages.
+Scene import_gltf(const tinygltf::Model& model, const std::string& source);
+
+} // namespace pathcl

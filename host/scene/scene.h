@@ -1,0 +1,66 @@
+// The flat scene every later stage works on: world-space triangles, materials and one
+// camera, independent of glTF and of the device layout.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace pathcl {
+
+struct SceneMaterial {
+    std::string name;
+    glm::vec3 base_color{1.0f};
+    float metallic = 1.0f; // glTF defaults
+    float roughness = 1.0f;
+    glm::vec3 emission{0.0f}; // radiance, W m^-2 sr^-1
+    bool double_sided = false;
+
+    bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+};
+
+struct SceneTriangle {
+    glm::vec3 v[3]; // world positions; counter-clockwise = front
+    glm::vec3 n[3]; // world shading normals (the geometric normal when the file has none)
+    std::int32_t material = 0;
+};
+
+struct SceneCamera {
+    // World-space frame (unit vectors): the camera looks along forward.
+    glm::dvec3 position{0.0};
+    glm::dvec3 forward{0.0, 0.0, -1.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    glm::dvec3 right{1.0, 0.0, 0.0};
+    double yfov = 0.8; // full vertical field of view, radians
+    bool from_file = false;
+};
+
+struct Scene {
+    std::vector<SceneTriangle> triangles;
+    std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
+    SceneCamera camera;
+    std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
+};
+
+// Which effects a scene uses: each becomes a kernel build define, so a scene pays only
+// for what it uses.
+struct SceneFeatures {
+    bool area_lights = false;
+    bool lambertian = false;
+
+    std::string build_defines() const;
+};
+
+SceneFeatures scene_features(const Scene& scene);
+
+// Axis-aligned bounds of all triangles (min > max when the scene is empty).
+void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
+
+// A camera that sees the whole scene: looking along -Z at the bounds' centre, far enough
+// back that the bounding sphere fits the vertical field of view.
+SceneCamera framing_camera(const Scene& scene, double yfov);
+
+} // namespace pathcl

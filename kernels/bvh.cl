@@ -1,0 +1,171 @@
+/* Closest-hit and any-hit traversal of the two-wide BVH, with the watertight ray/triangle
+ * test of Woop, Benthin and Wald (JCGT 2013). Needs: shared_types.h.
+ *
+ * Watertightness needs each edge function computed identically by both triangles that
+ * share the edge, so floating-point contraction (fma) is off for this file: an fma would
+ * round the two orders of a shared edge differently and let rays slip between them. */
+
+#pragma OPENCL FP_CONTRACT OFF
+
+#ifdef cl_khr_fp64
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+#endif
+
+#define BVH_STACK_SIZE 64
+
+/* pbrt's gamma(n): bound on the relative error of n chained float operations. */
+#define FLOAT_GAMMA(n) ((float)(n) * 0x1.0p-24f / (1.0f - (float)(n) * 0x1.0p-24f))
+
+typedef struct {
+    float3 origin;
+    float3 inv_dir;
+    /* Woop's shear: the permutation making dir.z the largest axis, and shear constants. */
+    uint4 permutation;
+    float3 shear; /* (Sx, Sy, Sz) */
+} RayTraversal;
+
+typedef struct {
+    float t;
+    float b1, b2; /* barycentric weights of v1 and v2 */
+    int triangle; /* -1: no hit */
+} Hit;
+
+inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
+{
+    RayTraversal r;
+    r.origin = origin;
+    r.inv_dir = 1.0f / dir;
+    float3 a = fabs(dir);
+    uint kz = (a.x > a.y) ? ((a.x > a.z) ? 0u : 2u) : ((a.y > a.z) ? 1u : 2u);
+    uint kx = (kz + 1u) % 3u;
+    uint ky = (kx + 1u) % 3u;
+    float4 d4 = (float4)(dir, 0.0f);
+    float dz = (kz == 0u) ? dir.x : ((kz == 1u) ? dir.y : dir.z);
+    if (dz < 0.0f) { /* keep the winding: swap x and y when the permuted z flips */
+        uint t = kx;
+        kx = ky;
+        ky = t;
+    }
+    r.permutation = (uint4)(kx, ky, kz, 3u);
+    float4 pd = shuffle(d4, r.permutation);
+    r.shear = (float3)(pd.x / pd.z, pd.y / pd.z, 1.0f / pd.z);
+    return r;
+}
+
+/* Slab test against an AABB, with the far distance enlarged by 1 + 2 gamma(3) so that
+ * rounding never culls a box the ray touches (Ize 2013). Returns the entry distance or
+ * INFINITY on a miss. */
+inline float ray_box_entry(const RayTraversal* r, float3 bmin, float3 bmax, float tmax)
+{
+    float3 t0 = (bmin - r->origin) * r->inv_dir;
+    float3 t1 = (bmax - r->origin) * r->inv_dir;
+    float3 tn = fmin(t0, t1);
+    float3 tf = fmax(t0, t1);
+    float tnear = fmax(fmax(tn.x, tn.y), fmax(tn.z, 0.0f));
+    float tfar = fmin(fmin(tf.x, tf.y), fmin(tf.z, tmax)) * (1.0f + 2.0f * FLOAT_GAMMA(3));
+    return (tnear <= tfar) ? tnear : INFINITY;
+}
+
+/* Watertight ray/triangle test. On a hit closer than *t_max, updates hit and *t_max. */
+inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max,
+                         float* t_out, float* b1_out, float* b2_out)
+{
+    float4 o = (float4)(r->origin, 0.0f);
+    float4 a = shuffle(tri->v0 - o, r->permutation);
+    float4 b = shuffle(tri->v1 - o, r->permutation);
+    float4 c = shuffle(tri->v2 - o, r->permutation);
+    float sx = r->shear.x, sy = r->shear.y, sz = r->shear.z;
+    float ax = a.x - sx * a.z, ay = a.y - sy * a.z;
+    float bx = b.x - sx * b.z, by = b.y - sy * b.z;
+    float cx = c.x - sx * c.z, cy = c.y - sy * c.z;
+    float u = cx * by - cy * bx;
+    float v = ax * cy - ay * cx;
+    float w = bx * ay - by * ax;
+#ifdef cl_khr_fp64
+    /* An edge function of exactly zero may be a rounding artefact: redo it in double. */
+    if (u == 0.0f || v == 0.0f || w == 0.0f) {
+        u = (float)((double)cx * (double)by - (double)cy * (double)bx);
+        v = (float)((double)ax * (double)cy - (double)ay * (double)cx);
+        w = (float)((double)bx * (double)ay - (double)by * (double)ax);
+    }
+#endif
+    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f))
+        return false;
+    float det = u + v + w;
+    if (det == 0.0f)
+        return false;
+    float az = sz * a.z, bz = sz * b.z, cz = sz * c.z;
+    float t_scaled = u * az + v * bz + w * cz;
+    /* Compare t with (0, t_max) without dividing: flip signs to make det positive. */
+    float sign = (det < 0.0f) ? -1.0f : 1.0f;
+    float det_abs = det * sign;
+    float ts = t_scaled * sign;
+    if (ts <= 0.0f || ts >= t_max * det_abs)
+        return false;
+    float inv_det = 1.0f / det;
+    *t_out = t_scaled * inv_det;
+    *b1_out = v * inv_det;
+    *b2_out = w * inv_det;
+    return true;
+}
+
+/* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
+ * (shadow rays). */
+inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
+                     float3 origin, float3 dir, float t_max, bool any_hit)
+{
+    RayTraversal r = ray_traversal_setup(origin, dir);
+    Hit hit;
+    hit.t = t_max;
+    hit.b1 = 0.0f;
+    hit.b2 = 0.0f;
+    hit.triangle = -1;
+
+    int2 stack[BVH_STACK_SIZE];
+    int sp = 0;
+    int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
+    for (;;) {
+        if (cur.y > 0) {
+            for (int i = cur.x; i < cur.x + cur.y; ++i) {
+                float t, b1, b2;
+                if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
+                    hit.t = t;
+                    hit.b1 = b1;
+                    hit.b2 = b2;
+                    hit.triangle = i;
+                    if (any_hit)
+                        return hit;
+                }
+            }
+        } else {
+            BvhNode node = nodes[cur.x];
+            float tl = ray_box_entry(&r, node.left_min.xyz, node.left_max.xyz, hit.t);
+            float tr = ray_box_entry(&r, node.right_min.xyz, node.right_max.xyz, hit.t);
+            int2 left = (int2)(as_int(node.left_min.w), as_int(node.left_max.w));
+            int2 right = (int2)(as_int(node.right_min.w), as_int(node.right_max.w));
+            bool hl = tl != INFINITY && left.x >= 0, hr = tr != INFINITY && right.x >= 0;
+            if (hl && hr) {
+                int2 near_child = (tl <= tr) ? left : right;
+                int2 far_child = (tl <= tr) ? right : left;
+                if (sp < BVH_STACK_SIZE)
+                    stack[sp++] = far_child;
+                cur = near_child;
+                continue;
+            }
+            if (hl) {
+                cur = left;
+                continue;
+            }
+            if (hr) {
+                cur = right;
+                continue;
+            }
+        }
+        if (sp == 0)
+            break;
+        cur = stack[--sp];
+    }
+    return hit;
+}
+
+#pragma OPENCL FP_CONTRACT ON

@@ -1,0 +1,83 @@
+/* Surface points, shading frames and robust ray spawning. Needs: shared_types.h, bvh.cl.
+ *
+ * Spawned rays start at the hit point pushed along the geometric normal by pbrt's
+ * conservative bound on the point's rounding error, then rounded one more ulp away. The
+ * bound scales with the coordinates, so this stays correct at 1e-6 and at 1e6 from the
+ * origin, where any fixed epsilon is either too small (acne) or too big (leaks). */
+
+typedef struct {
+    float3 p;       /* world position, from barycentrics (more accurate than o + t d) */
+    float3 p_error; /* per-axis bound on |p - exact p| */
+    float3 ng;      /* geometric normal, flipped to the side the ray came from */
+    float3 ns;      /* shading normal, in the same hemisphere as ng */
+    bool front_face; /* the ray hit the counter-clockwise (emitting) side */
+    float area;
+    int material;
+    int emitter;
+} SurfacePoint;
+
+/* Orthonormal basis around a unit vector (Duff et al. 2017, branchless). */
+inline void make_basis(float3 n, float3* t, float3* b)
+{
+    float sign = copysign(1.0f, n.z);
+    float a = -1.0f / (sign + n.z);
+    float c = n.x * n.y * a;
+    *t = (float3)(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = (float3)(c, sign + n.y * n.y * a, -n.y);
+}
+
+inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float b2,
+                                float3* error)
+{
+    float b0 = 1.0f - b1 - b2;
+    float3 p0 = b0 * v0, p1 = b1 * v1, p2 = b2 * v2;
+    *error = FLOAT_GAMMA(7) * (fabs(p0) + fabs(p1) + fabs(p2));
+    return p0 + p1 + p2;
+}
+
+inline SurfacePoint surface_point(__global const Triangle* triangles,
+                                  __global const TriangleShading* shading, Hit hit, float3 wo)
+{
+    SurfacePoint sp;
+    Triangle tri = triangles[hit.triangle];
+    TriangleShading sh = shading[hit.triangle];
+    float3 v0 = tri.v0.xyz, v1 = tri.v1.xyz, v2 = tri.v2.xyz;
+    sp.p = barycentric_point(v0, v1, v2, hit.b1, hit.b2, &sp.p_error);
+    float3 c = cross(v1 - v0, v2 - v0);
+    float len = length(c);
+    sp.area = 0.5f * len;
+    float3 ng = c / len;
+    float b0 = 1.0f - hit.b1 - hit.b2;
+    float3 ns = b0 * sh.n0.xyz + hit.b1 * sh.n1.xyz + hit.b2 * sh.n2.xyz;
+    float ns_len = length(ns);
+    ns = (ns_len > 0.0f && isfinite(ns_len)) ? ns / ns_len : ng;
+    if (dot(ns, ng) < 0.0f)
+        ns = -ns;
+    sp.front_face = dot(ng, wo) > 0.0f;
+    if (!sp.front_face) {
+        ng = -ng;
+        ns = -ns;
+    }
+    sp.ng = ng;
+    sp.ns = ns;
+    sp.material = sh.material;
+    sp.emitter = sh.emitter;
+    return sp;
+}
+
+/* Origin for a ray leaving p in direction w (on either side of the surface n). */
+inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float3 w)
+{
+    float d = dot(fabs(n), p_error);
+    float3 offset = d * n;
+    if (dot(w, n) < 0.0f)
+        offset = -offset;
+    float3 po = p + offset;
+    po = select(po, nextafter(po, (float3)(INFINITY)), offset > 0.0f);
+    po = select(po, nextafter(po, (float3)(-INFINITY)), offset < 0.0f);
+    return po;
+}
+
+/* The part of a shadow ray's segment that is tested, as a fraction of its length:
+ * stops short of the offset end point so the light's own surface is never hit. */
+#define SHADOW_RAY_EXTENT (1.0f - 1.0e-4f)

@@ -1,0 +1,126 @@
+/* Every struct that crosses the host/device boundary, defined once for both sides.
+ *
+ * Rules that keep the two compilers in agreement: members are 4-byte scalars or 16-byte
+ * vectors, vectors come first, padding is explicit, and every size is a multiple of 16.
+ * host/cl/shared_types_check.cpp static_asserts each size and offset on the host.
+ * Byte sizes are part of the design (device memory traffic); they are listed per struct. */
+#ifndef PATHCL_SHARED_TYPES_H
+#define PATHCL_SHARED_TYPES_H
+
+#ifdef __OPENCL_C_VERSION__
+typedef float4 pcl_float4;
+typedef int pcl_int;
+typedef uint pcl_uint;
+typedef float pcl_float;
+#else
+#include <cstdint>
+namespace pathcl {
+struct alignas(16) pcl_float4 {
+    float x, y, z, w;
+};
+typedef std::int32_t pcl_int;
+typedef std::uint32_t pcl_uint;
+typedef float pcl_float;
+#endif
+
+/* Ray as written by the camera kernel: 32 bytes. */
+typedef struct {
+    pcl_float4 origin;    /* xyz; w unused */
+    pcl_float4 direction; /* xyz normalized; w unused */
+} Ray;
+
+/* Two-wide BVH node holding both children's boxes, so one 64-byte fetch decides which
+ * children a ray enters. A child is either an inner node (count == 0, index = node) or a
+ * leaf (count > 0, index = first triangle, count triangles). An empty child has count
+ * 0 and index -1 and an inverted box. 64 bytes. */
+typedef struct {
+    pcl_float4 left_min;  /* w: as_float(left index) */
+    pcl_float4 left_max;  /* w: as_float(left count) */
+    pcl_float4 right_min; /* w: as_float(right index) */
+    pcl_float4 right_max; /* w: as_float(right count) */
+} BvhNode;
+
+/* Triangle positions in BVH leaf order, for intersection only: 48 bytes. */
+typedef struct {
+    pcl_float4 v0, v1, v2; /* xyz world position; w unused */
+} Triangle;
+
+/* What shading needs of a triangle, same order as Triangle: 64 bytes. */
+typedef struct {
+    pcl_float4 n0, n1, n2; /* world shading normals at the vertices (geometric if absent) */
+    pcl_int material;
+    pcl_int emitter; /* index into the light array, -1 when the triangle does not emit */
+    pcl_int pad0, pad1;
+} TriangleShading;
+
+/* Material flags */
+#define MATERIAL_DOUBLE_SIDED 1
+
+/* glTF metallic-roughness material, as far as the kernels read it: 48 bytes. */
+typedef struct {
+    pcl_float4 base_color; /* rgb linear; a unused */
+    pcl_float4 emission;   /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
+    pcl_float metallic;
+    pcl_float roughness;
+    pcl_uint flags;
+    pcl_uint pad0;
+} Material;
+
+/* Light types */
+#define LIGHT_TRIANGLE 0
+
+/* A light, with its entry of the power-proportional alias table used to pick lights.
+ * For LIGHT_TRIANGLE, p0..p2 are the world vertices and radiance is the emitted radiance.
+ * 80 bytes. */
+typedef struct {
+    pcl_float4 p0, p1, p2;
+    pcl_float4 radiance; /* rgb; w: selection probability (pmf) of this light */
+    pcl_int type;
+    pcl_float alias_threshold; /* keep this light if u < threshold, else take alias */
+    pcl_int alias;
+    pcl_int pad0;
+} Light;
+
+/* Camera types */
+#define CAMERA_PINHOLE 0
+
+/* Camera in world space: 80 bytes. A film position (sx, sy) in [-1, 1]^2 (sy up) maps to
+ * the direction forward + sx * right + sy * up, so right and up carry tan(fov / 2). */
+typedef struct {
+    pcl_float4 position;
+    pcl_float4 forward; /* unit */
+    pcl_float4 right;   /* length tan(yfov / 2) * aspect */
+    pcl_float4 up;      /* length tan(yfov / 2) */
+    pcl_int type;
+    pcl_int pad0, pad1, pad2;
+} Camera;
+
+/* Per-pass constants: 32 bytes. */
+typedef struct {
+    pcl_uint width, height;
+    pcl_uint sample_index; /* index of this pass's sample within the pixel */
+    pcl_uint seed;
+    pcl_uint max_bounces;
+    pcl_uint light_count;
+    pcl_uint pad0, pad1;
+} FrameParams;
+
+/* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a
+ * pixel's mean and variance stay accurate over millions of samples on devices without
+ * doubles. 64 bytes. */
+typedef struct {
+    pcl_float4 sum, sum_compensation;
+    pcl_float4 sum_sq, sum_sq_compensation;
+} FilmPixel;
+
+/* Random-number dimensions the camera kernel consumes; the integrator starts after. */
+#define DIM_PIXEL 0
+#define DIM_LENS 2
+#define DIM_PATH_START 4
+#define DIMS_PER_BOUNCE 8
+
+#ifndef __OPENCL_C_VERSION__
+} /* namespace pathcl */
+#endif
+
+#endif

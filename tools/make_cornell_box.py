@@ -1,0 +1,154 @@
+#!/usr/bin/env python3
+"""Writes scenes/cornell-box.gltf: the Cornell box from the Cornell University Program of
+Computer Graphics' published measurements (https://www.graphics.cornell.edu/online/box/data.html).
+
+Geometry is the measured data in millimetres, converted to metres (glTF units). The light
+sits flush in the ceiling: the ceiling is cut into four rectangles around it, so the light
+neither z-fights the ceiling nor hangs below it. Reflectances and the light's radiance are
+the RGB conversions of the measured spectra used by the pbrt-v4 / Mitsuba 3 / Bitterli
+Cornell box scenes. Walls are exactly Lambertian (metallic 0, KHR_materials_specular
+specularFactor 0). The camera is the measured pinhole: 35 mm focal length, 25 mm square
+film, at (278, 273, -800) looking along +z.
+
+Usage: python3 tools/make_cornell_box.py [OUT.gltf]   (no dependencies beyond Python 3)
+"""
+import base64, json, math, struct, sys
+
+MM = 0.001
+
+# Quads as listed by the measurement page (mm). Each quad is oriented below so that its
+# geometric (counter-clockwise) normal faces the inside of the box / out of the blocks.
+FLOOR = [(552.8, 0, 0), (0, 0, 0), (0, 0, 559.2), (549.6, 0, 559.2)]
+LIGHT = [(343, 548.8, 227), (343, 548.8, 332), (213, 548.8, 332), (213, 548.8, 227)]
+CEILING_PIECES = [  # the ceiling (0..556 x 0..559.2 at y 548.8) minus the light's rectangle
+    [(0, 548.8, 0), (213, 548.8, 0), (213, 548.8, 559.2), (0, 548.8, 559.2)],
+    [(343, 548.8, 0), (556, 548.8, 0), (556, 548.8, 559.2), (343, 548.8, 559.2)],
+    [(213, 548.8, 0), (343, 548.8, 0), (343, 548.8, 227), (213, 548.8, 227)],
+    [(213, 548.8, 332), (343, 548.8, 332), (343, 548.8, 559.2), (213, 548.8, 559.2)],
+]
+BACK_WALL = [(549.6, 0, 559.2), (0, 0, 559.2), (0, 548.8, 559.2), (556, 548.8, 559.2)]
+RIGHT_WALL = [(0, 0, 559.2), (0, 0, 0), (0, 548.8, 0), (0, 548.8, 559.2)]  # green
+LEFT_WALL = [(552.8, 0, 0), (549.6, 0, 559.2), (556, 548.8, 559.2), (556, 548.8, 0)]  # red
+SHORT_BLOCK = [
+    [(130, 165, 65), (82, 165, 225), (240, 165, 272), (290, 165, 114)],
+    [(290, 0, 114), (290, 165, 114), (240, 165, 272), (240, 0, 272)],
+    [(130, 0, 65), (130, 165, 65), (290, 165, 114), (290, 0, 114)],
+    [(82, 0, 225), (82, 165, 225), (130, 165, 65), (130, 0, 65)],
+    [(240, 0, 272), (240, 165, 272), (82, 165, 225), (82, 0, 225)],
+]
+TALL_BLOCK = [
+    [(423, 330, 247), (265, 330, 296), (314, 330, 456), (472, 330, 406)],
+    [(423, 0, 247), (423, 330, 247), (472, 330, 406), (472, 0, 406)],
+    [(472, 0, 406), (472, 330, 406), (314, 330, 456), (314, 0, 456)],
+    [(314, 0, 456), (314, 330, 456), (265, 330, 296), (265, 0, 296)],
+    [(265, 0, 296), (265, 330, 296), (423, 330, 247), (423, 0, 247)],
+]
+BOX_CENTRE = (278.0, 274.4, 279.6)
+
+def sub(a, b): return tuple(x - y for x, y in zip(a, b))
+def cross(a, b): return (a[1]*b[2]-a[2]*b[1], a[2]*b[0]-a[0]*b[2], a[0]*b[1]-a[1]*b[0])
+def dot(a, b): return sum(x * y for x, y in zip(a, b))
+def centroid(q): return tuple(sum(v[i] for v in q) / len(q) for i in range(3))
+
+def oriented(quad, facing):
+    """Returns the quad wound so that its normal points towards `facing` (a point)."""
+    n = cross(sub(quad[1], quad[0]), sub(quad[2], quad[0]))
+    return quad if dot(n, sub(facing, centroid(quad))) > 0 else list(reversed(quad))
+
+def outward(quad, solid_centre):
+    n_quad = oriented(quad, solid_centre)
+    return list(reversed(n_quad))
+
+def block_centre(faces):
+    pts = [v for f in faces for v in f]
+    return centroid(pts)
+
+class Builder:
+    def __init__(self):
+        self.blob = bytearray()
+        self.accessors, self.views, self.meshes, self.nodes = [], [], [], []
+
+    def add_view(self, data, target):
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        self.views.append({"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data),
+                           "target": target})
+        self.blob += data
+        return len(self.views) - 1
+
+    def add_mesh(self, name, quads, material):
+        positions, indices = [], []
+        for q in quads:
+            base = len(positions)
+            positions += [tuple(c * MM for c in v) for v in q]
+            indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+        pos_bytes = b"".join(struct.pack("<3f", *p) for p in positions)
+        idx_bytes = b"".join(struct.pack("<H", i) for i in indices)
+        lo = [min(p[i] for p in positions) for i in range(3)]
+        hi = [max(p[i] for p in positions) for i in range(3)]
+        # glTF requires min/max to match the stored (float32) values exactly.
+        f32 = lambda x: struct.unpack("<f", struct.pack("<f", x))[0]
+        pv = self.add_view(pos_bytes, 34962)
+        self.accessors.append({"bufferView": pv, "componentType": 5126, "count": len(positions),
+                               "type": "VEC3", "min": [f32(x) for x in lo],
+                               "max": [f32(x) for x in hi]})
+        iv = self.add_view(idx_bytes, 34963)
+        self.accessors.append({"bufferView": iv, "componentType": 5123, "count": len(indices),
+                               "type": "SCALAR"})
+        self.meshes.append({"name": name, "primitives": [{
+            "attributes": {"POSITION": len(self.accessors) - 2},
+            "indices": len(self.accessors) - 1, "material": material, "mode": 4}]})
+        self.nodes.append({"name": name, "mesh": len(self.meshes) - 1})
+
+def lambertian(name, rgb):
+    return {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(rgb) + [1.0],
+            "metallicFactor": 0.0, "roughnessFactor": 1.0},
+            "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "scenes/cornell-box.gltf"
+    materials = [
+        lambertian("white", (0.725, 0.71, 0.68)),
+        lambertian("red", (0.63, 0.065, 0.05)),
+        lambertian("green", (0.14, 0.45, 0.091)),
+        {"name": "light", "pbrMetallicRoughness": {"baseColorFactor": [0.78, 0.78, 0.78, 1.0],
+         "metallicFactor": 0.0, "roughnessFactor": 1.0},
+         # Radiance (17, 12, 4) W m^-2 sr^-1 = factor x strength.
+         "emissiveFactor": [1.0, 12.0 / 17.0, 4.0 / 17.0],
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 17.0},
+                        "KHR_materials_specular": {"specularFactor": 0.0}}},
+    ]
+    WHITE, RED, GREEN, LIGHT_M = 0, 1, 2, 3
+    b = Builder()
+    inside = BOX_CENTRE
+    b.add_mesh("floor", [oriented(FLOOR, inside)], WHITE)
+    b.add_mesh("ceiling", [oriented(q, inside) for q in CEILING_PIECES], WHITE)
+    b.add_mesh("back_wall", [oriented(BACK_WALL, inside)], WHITE)
+    b.add_mesh("right_wall_green", [oriented(RIGHT_WALL, inside)], GREEN)
+    b.add_mesh("left_wall_red", [oriented(LEFT_WALL, inside)], RED)
+    b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], WHITE)
+    b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
+    b.add_mesh("light", [oriented(LIGHT, (278, 0, 279.5))], LIGHT_M)  # faces down
+
+    yfov = 2.0 * math.atan(12.5 / 35.0)
+    # glTF cameras look along local -Z; a half turn about +Y makes that world +Z.
+    b.nodes.append({"name": "camera", "camera": 0, "translation": [0.278, 0.273, -0.800],
+                    "rotation": [0.0, 1.0, 0.0, 0.0]})
+    gltf = {
+        "asset": {"version": "2.0", "generator": "pathcl tools/make_cornell_box.py"},
+        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
+        "scene": 0,
+        "scenes": [{"name": "cornell-box", "nodes": list(range(len(b.nodes)))}],
+        "nodes": b.nodes, "meshes": b.meshes, "materials": materials,
+        "cameras": [{"type": "perspective", "perspective": {
+            "yfov": yfov, "aspectRatio": 1.0, "znear": 0.01}}],
+        "accessors": b.accessors, "bufferViews": b.views,
+        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
+                     + base64.b64encode(bytes(b.blob)).decode("ascii")}],
+    }
+    with open(out, "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+if __name__ == "__main__":
+    main()
