@@ -31,6 +31,10 @@ inline BsdfEval bsdf_eval(const Material* m, const SurfacePoint* sp, float3 wo, 
         return e;
     }
     e.f_cos = m->base_color.xyz * (INV_PI * cos_i);
+#ifdef PATHCL_FAULT_LAMBERT_NO_COSINE
+    /* A deliberate bug, compiled only by the test proving the render tests can fail. */
+    e.f_cos = m->base_color.xyz * INV_PI;
+#endif
     e.pdf = cos_i * INV_PI;
     return e;
 }

@@ -85,16 +85,26 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
     CompareReport r;
     const std::size_t n = static_cast<std::size_t>(a.width) * a.height;
 
+    // Under the null hypothesis both renders sample one distribution per pixel, so its
+    // variance is estimated from both together (pooled, as in Student's t-test). A
+    // low-spp render alone underestimates the variance of pixels whose rare bright paths
+    // it missed, which would make correct renders fail.
+    const double na = a.spp, nb = b.spp;
+    Image pooled_a = a, pooled_b = b;
+    for (std::size_t i = 0; i < n * 3; ++i) {
+        double pooled = ((na - 1.0) * a.variance[i] + (nb - 1.0) * b.variance[i]) / std::max(na + nb - 2.0, 1.0);
+        pooled_a.variance[i] = pooled_b.variance[i] = static_cast<float>(pooled);
+    }
     std::vector<Estimate> pa(n * 3), pb(n * 3);
     for (std::size_t i = 0; i < n * 3; ++i) {
-        pa[i] = {a.rgb[i], a.variance[i] / static_cast<double>(a.spp)};
-        pb[i] = {b.rgb[i], b.variance[i] / static_cast<double>(b.spp)};
+        pa[i] = {a.rgb[i], pooled_a.variance[i] / na};
+        pb[i] = {b.rgb[i], pooled_b.variance[i] / nb};
     }
     r.scales.push_back(run_scale("pixel", pa, pb, opt.alpha));
     r.scales.push_back(run_scale(std::to_string(opt.block) + "x" + std::to_string(opt.block) + " tile",
-                                 tiles(a, opt.block), tiles(b, opt.block), opt.alpha));
+                                 tiles(pooled_a, opt.block), tiles(pooled_b, opt.block), opt.alpha));
     int whole = static_cast<int>(std::max(a.width, a.height));
-    std::vector<Estimate> wa = tiles(a, whole), wb = tiles(b, whole);
+    std::vector<Estimate> wa = tiles(pooled_a, whole), wb = tiles(pooled_b, whole);
     r.scales.push_back(run_scale("image", wa, wb, opt.alpha));
     for (int c = 0; c < 3; ++c) {
         r.mean_a[c] = wa[static_cast<std::size_t>(c)].mean;

@@ -1,5 +1,6 @@
 // Statistical comparison of two Monte Carlo renders (the Mitsuba 3 render-test method):
-// two-sided Welch z-tests of the pixel means, with a Šidák-corrected threshold, at three
+// two-sided z-tests of the pixel means (pooled per-pixel variance, as in Student's t-test),
+// with a Šidák-corrected threshold, at three
 // scales: every pixel and channel, block x block tiles (more power against small biases),
 // and the whole image per channel. A scale passes when at most `max_fail_fraction` of its
 // tests fail; the whole-image scale must pass every test.

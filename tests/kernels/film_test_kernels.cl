@@ -1,0 +1,32 @@
+/* Accumulates `count` samples of 0.1 + noise into film pixel 0 from one work-item,
+ * through the real film code (kernels/film.cl), and the same with a naive float sum for
+ * contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
+
+inline float film_test_sample(uint i)
+{
+    return 0.1f + (u32_to_unit_float(hash_u32(i * 2654435761u + 1u)) - 0.5f) * 0.1f;
+}
+
+__kernel void test_film_accumulate(__global FilmPixel* film, __global uint* bad, uint count)
+{
+    for (uint i = 0; i < count; ++i) {
+        float v = film_test_sample(i);
+        film_add_sample(film, bad, 0u, (float3)(v, v, v));
+    }
+}
+
+__kernel void test_naive_accumulate(__global float* out, uint count)
+{
+    float sum = 0.0f;
+    for (uint i = 0; i < count; ++i)
+        sum += film_test_sample(i);
+    out[0] = sum;
+}
+
+__kernel void test_film_rejects_non_finite(__global FilmPixel* film, __global uint* bad)
+{
+    film_add_sample(film, bad, 0u, (float3)(1.0f, 1.0f, 1.0f));
+    film_add_sample(film, bad, 0u, (float3)(NAN, 1.0f, 1.0f));
+    film_add_sample(film, bad, 0u, (float3)(1.0f, INFINITY, 1.0f));
+    film_add_sample(film, bad, 0u, (float3)(1.0f, 1.0f, -INFINITY));
+}

@@ -1,0 +1,157 @@
+#include "support/gltf_builder.h"
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+namespace pathcl::test {
+
+GltfBuilder::GltfBuilder()
+{
+    model.buffers.emplace_back();
+    model.scenes.emplace_back();
+    model.defaultScene = 0;
+}
+
+int GltfBuilder::add_view(const void* data, std::size_t bytes)
+{
+    std::vector<unsigned char>& buf = model.buffers[0].data;
+    while (buf.size() % 4)
+        buf.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buf.size();
+    view.byteLength = bytes;
+    buf.insert(buf.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
+    model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size()) - 1;
+}
+
+int GltfBuilder::add_accessor(int view, int component_type, int type, std::size_t count)
+{
+    tinygltf::Accessor acc;
+    acc.bufferView = view;
+    acc.componentType = component_type;
+    acc.type = type;
+    acc.count = count;
+    model.accessors.push_back(acc);
+    return static_cast<int>(model.accessors.size()) - 1;
+}
+
+int GltfBuilder::add_positions(const std::vector<glm::vec3>& p)
+{
+    int view = add_view(p.data(), p.size() * sizeof(glm::vec3));
+    return add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, p.size());
+}
+
+int GltfBuilder::add_normals(const std::vector<glm::vec3>& n)
+{
+    return add_positions(n);
+}
+
+int GltfBuilder::add_indices(const std::vector<std::uint32_t>& idx, int component_type)
+{
+    std::vector<unsigned char> bytes;
+    std::size_t size = component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                       : component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                                                                  : 4;
+    for (std::uint32_t i : idx)
+        for (std::size_t b = 0; b < size; ++b)
+            bytes.push_back(static_cast<unsigned char>(i >> (8 * b)));
+    int view = add_view(bytes.data(), bytes.size());
+    return add_accessor(view, component_type, TINYGLTF_TYPE_SCALAR, idx.size());
+}
+
+int GltfBuilder::add_material(const glm::vec3& base_color, const glm::vec3& emission, bool double_sided,
+                              double emissive_strength)
+{
+    tinygltf::Material m;
+    m.pbrMetallicRoughness.baseColorFactor = {base_color.x, base_color.y, base_color.z, 1.0};
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.emissiveFactor = {emission.x, emission.y, emission.z};
+    m.doubleSided = double_sided;
+    if (emissive_strength != 1.0) {
+        tinygltf::Value::Object ext;
+        ext["emissiveStrength"] = tinygltf::Value(emissive_strength);
+        m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(ext);
+    }
+    model.materials.push_back(m);
+    return static_cast<int>(model.materials.size()) - 1;
+}
+
+int GltfBuilder::add_mesh(int positions, int indices, int material, int mode, int normals)
+{
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] = positions;
+    if (normals >= 0)
+        prim.attributes["NORMAL"] = normals;
+    prim.indices = indices;
+    prim.material = material;
+    prim.mode = mode;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+    return static_cast<int>(model.meshes.size()) - 1;
+}
+
+int GltfBuilder::add_node(int mesh, const std::vector<double>& matrix, const std::vector<double>& translation,
+                          const std::vector<double>& rotation, const std::vector<double>& scale)
+{
+    tinygltf::Node node;
+    node.mesh = mesh;
+    node.matrix = matrix;
+    node.translation = translation;
+    node.rotation = rotation;
+    node.scale = scale;
+    model.nodes.push_back(node);
+    return static_cast<int>(model.nodes.size()) - 1;
+}
+
+int GltfBuilder::add_perspective_camera(double yfov)
+{
+    tinygltf::Camera cam;
+    cam.type = "perspective";
+    cam.perspective.yfov = yfov;
+    cam.perspective.aspectRatio = 1.0;
+    cam.perspective.znear = 0.01;
+    model.cameras.push_back(cam);
+    return static_cast<int>(model.cameras.size()) - 1;
+}
+
+void GltfBuilder::add_root(int node)
+{
+    model.scenes[0].nodes.push_back(node);
+}
+
+int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward)
+{
+    std::vector<glm::vec3> p;
+    for (int i = 0; i <= stacks; ++i) {
+        double theta = std::numbers::pi * i / stacks;
+        for (int j = 0; j < slices; ++j) {
+            double phi = 2.0 * std::numbers::pi * j / slices;
+            p.emplace_back(glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                      std::sin(theta) * std::sin(phi)) * radius);
+        }
+    }
+    std::vector<std::uint32_t> idx;
+    auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * slices + (j % slices)); };
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            // Outward-facing (counter-clockwise seen from outside) unless inward.
+            std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            std::uint32_t tri[6] = {a, c, b, a, d, c};
+            if (inward)
+                std::swap(tri[1], tri[2]), std::swap(tri[4], tri[5]);
+            // The pole rows collapse to a point: skip their zero-area triangles.
+            if (i != stacks - 1)
+                idx.insert(idx.end(), tri, tri + 3);
+            if (i != 0)
+                idx.insert(idx.end(), tri + 3, tri + 6);
+        }
+    int pos = add_positions(p);
+    int ind = add_indices(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    return add_mesh(pos, ind, material);
+}
+
+} // namespace pathcl::test

@@ -1,0 +1,45 @@
+// Builds tinygltf models in memory, so tests can make exactly the geometry they need
+// (hierarchies, instancing, index types, strips, broken data) without files.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+namespace pathcl::test {
+
+class GltfBuilder {
+public:
+    GltfBuilder();
+
+    // Appends raw bytes as a new buffer view; returns the view index.
+    int add_view(const void* data, std::size_t bytes);
+    int add_accessor(int view, int component_type, int type, std::size_t count);
+
+    int add_positions(const std::vector<glm::vec3>& p);
+    int add_normals(const std::vector<glm::vec3>& n);
+    // component_type: TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE/SHORT/INT
+    int add_indices(const std::vector<std::uint32_t>& idx, int component_type);
+
+    int add_material(const glm::vec3& base_color, const glm::vec3& emission = glm::vec3(0.0f),
+                     bool double_sided = false, double emissive_strength = 1.0);
+    // A mesh with one primitive. indices < 0: non-indexed. normals < 0: none.
+    int add_mesh(int positions, int indices, int material, int mode = 4, int normals = -1);
+    // A node; returns its index. Root nodes must also be passed to add_root.
+    int add_node(int mesh, const std::vector<double>& matrix = {},
+                 const std::vector<double>& translation = {}, const std::vector<double>& rotation = {},
+                 const std::vector<double>& scale = {});
+    int add_perspective_camera(double yfov);
+    void add_root(int node);
+
+    // A UV sphere (stacks x slices) of the given radius; normals point inward when
+    // `inward` (the front face then faces the centre).
+    int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward);
+
+    tinygltf::Model model;
+};
+
+} // namespace pathcl::test

@@ -1,0 +1,160 @@
+// The kernels' BVH traversal (kernels/bvh.cl) against brute force over every triangle,
+// on the device, for 100k random rays per mesh. Both use the same ray/triangle test, so
+// the closest distance must agree exactly; a traversal that culls a box it should enter
+// shows up as a different (farther) hit or a miss.
+#include <bit>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "bvh/bvh_builder.h"
+#include "support/device_fixture.h"
+#include "support/random_meshes.h"
+
+namespace pathcl {
+namespace {
+
+struct TraceResults {
+    std::vector<pcl_float4> bvh, brute;
+};
+
+struct DeviceMesh {
+    std::vector<BvhNode> nodes;
+    std::vector<Triangle> triangles; // leaf order
+};
+
+DeviceMesh make_mesh(const std::vector<glm::vec3>& v)
+{
+    Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    DeviceMesh m;
+    m.nodes = bvh.nodes;
+    for (std::uint32_t t : bvh.triangle_order)
+        m.triangles.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
+                                       {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
+                                       {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    return m;
+}
+
+template <typename T>
+cl::Buffer to_device(const std::vector<T>& data)
+{
+    ClDevice& dev = test::test_device();
+    return cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
+                      const_cast<T*>(data.data()));
+}
+
+const cl::Program& program()
+{
+    static cl::Program p = test::build_test_program("trace_test_kernels.cl");
+    return p;
+}
+
+TraceResults trace(const DeviceMesh& mesh, const std::vector<pcl_float4>& origins, const std::vector<pcl_float4>& dirs)
+{
+    ClDevice& dev = test::test_device();
+    std::size_t n = origins.size();
+    cl::Buffer o = to_device(origins), d = to_device(dirs), nodes = to_device(mesh.nodes),
+               tris = to_device(mesh.triangles);
+    cl::Buffer out_bvh(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Buffer out_brute(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Kernel k1(program(), "test_trace_closest");
+    k1.setArg(0, o);
+    k1.setArg(1, d);
+    k1.setArg(2, nodes);
+    k1.setArg(3, tris);
+    k1.setArg(4, out_bvh);
+    cl::Kernel k2(program(), "test_trace_brute_force");
+    k2.setArg(0, o);
+    k2.setArg(1, d);
+    k2.setArg(2, tris);
+    k2.setArg(3, static_cast<cl_uint>(mesh.triangles.size()));
+    k2.setArg(4, out_brute);
+    dev.queue.enqueueNDRangeKernel(k1, cl::NullRange, cl::NDRange(n));
+    dev.queue.enqueueNDRangeKernel(k2, cl::NullRange, cl::NDRange(n));
+    TraceResults r;
+    r.bvh.resize(n);
+    r.brute.resize(n);
+    dev.queue.enqueueReadBuffer(out_bvh, CL_TRUE, 0, n * sizeof(pcl_float4), r.bvh.data());
+    dev.queue.enqueueReadBuffer(out_brute, CL_TRUE, 0, n * sizeof(pcl_float4), r.brute.data());
+    return r;
+}
+
+// Random rays: origins in [-1.5, 1.5]^3, isotropic directions, one in eight along an axis
+// (zero direction components exercise the infinite slab reciprocals).
+void random_rays(std::size_t n, std::uint32_t seed, std::vector<pcl_float4>& o, std::vector<pcl_float4>& d)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.5f, 1.5f);
+    std::normal_distribution<float> g;
+    for (std::size_t i = 0; i < n; ++i) {
+        o.push_back({u(rng), u(rng), u(rng), 0});
+        glm::vec3 dir(g(rng), g(rng), g(rng));
+        if (i % 8 == 0) {
+            int axis = static_cast<int>(i / 8 % 3);
+            dir = glm::vec3(0.0f);
+            dir[axis] = (i / 24 % 2) ? 1.0f : -1.0f;
+        }
+        dir = glm::normalize(dir);
+        d.push_back({dir.x, dir.y, dir.z, 0});
+    }
+}
+
+void expect_same_closest_hits(const TraceResults& r, const DeviceMesh& mesh)
+{
+    std::size_t mismatches = 0, hits = 0;
+    for (std::size_t i = 0; i < r.bvh.size(); ++i) {
+        int tb = std::bit_cast<int>(r.bvh[i].w), tf = std::bit_cast<int>(r.brute[i].w);
+        hits += tf >= 0;
+        // Same hit/miss, and the same distance (ties between triangles at one t allowed).
+        bool same = (tb < 0) == (tf < 0) && (tf < 0 || r.bvh[i].x == r.brute[i].x);
+        if (!same && mismatches++ < 5)
+            ADD_FAILURE() << "ray " << i << ": bvh tri " << tb << " t " << r.bvh[i].x << ", brute force tri " << tf
+                          << " t " << r.brute[i].x;
+    }
+    EXPECT_EQ(mismatches, 0u);
+    // The test means something only if many rays hit.
+    EXPECT_GT(hits, r.bvh.size() / 10) << "too few hits for a meaningful comparison (" << mesh.triangles.size()
+                                       << " triangles)";
+}
+
+TEST(BvhTraversal, RandomSoupMatchesBruteForce100kRays)
+{
+    DeviceMesh mesh = make_mesh(test::random_triangle_soup(3000, 11));
+    std::vector<pcl_float4> o, d;
+    random_rays(100000, 5, o, d);
+    expect_same_closest_hits(trace(mesh, o, d), mesh);
+}
+
+TEST(BvhTraversal, JitteredSphereMatchesBruteForce100kRays)
+{
+    DeviceMesh mesh = make_mesh(test::jittered_sphere(30, 60, 3));
+    std::vector<pcl_float4> o, d;
+    random_rays(100000, 6, o, d);
+    expect_same_closest_hits(trace(mesh, o, d), mesh);
+}
+
+TEST(BvhTraversal, ClosedSphereHasNoHolesFromInside)
+{
+    // Watertightness: from inside a closed mesh every ray hits, including rays aimed
+    // exactly at vertices (where up to six triangles meet) and at edge midpoints.
+    auto v = test::jittered_sphere(30, 60, 9);
+    DeviceMesh mesh = make_mesh(v);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+    std::vector<pcl_float4> o, d;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        glm::vec3 origin(u(rng), u(rng), u(rng));
+        glm::vec3 target = (i % 2) ? v[i] : 0.5f * (v[i] + v[i / 3 * 3 + (i + 1) % 3]);
+        glm::vec3 dir = glm::normalize(target - origin);
+        o.push_back({origin.x, origin.y, origin.z, 0});
+        d.push_back({dir.x, dir.y, dir.z, 0});
+    }
+    TraceResults r = trace(mesh, o, d);
+    std::size_t misses = 0;
+    for (const pcl_float4& h : r.bvh)
+        misses += std::bit_cast<int>(h.w) < 0;
+    EXPECT_EQ(misses, 0u) << "of " << r.bvh.size() << " rays aimed at vertices and edges";
+}
+
+} // namespace
+} // namespace pathcl

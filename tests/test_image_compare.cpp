@@ -1,0 +1,72 @@
+// The statistical comparator itself: it must accept two independent estimates of the
+// same image and reject a small bias, so the render tests that rely on it can fail.
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "image/image_compare.h"
+
+namespace pathcl {
+namespace {
+
+// An image whose pixel means are the average of spp normal samples around `truth`.
+Image synthetic(std::uint32_t w, std::uint32_t h, std::uint32_t spp, double bias, std::uint32_t seed)
+{
+    std::mt19937 rng(seed);
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.spp = spp;
+    for (std::uint32_t i = 0; i < w * h * 3; ++i) {
+        double truth = 0.2 + 0.6 * (i % 97) / 97.0, sigma = 0.5 * truth;
+        std::normal_distribution<double> g(truth * (1.0 + bias), sigma);
+        double s = 0.0, s2 = 0.0;
+        for (std::uint32_t k = 0; k < spp; ++k) {
+            double x = g(rng);
+            s += x;
+            s2 += x * x;
+        }
+        double mean = s / spp;
+        img.rgb.push_back(static_cast<float>(mean));
+        img.variance.push_back(static_cast<float>((s2 - s * mean) / (spp - 1)));
+    }
+    return img;
+}
+
+TEST(ImageCompare, SidakThresholdMatchesKnownValues)
+{
+    EXPECT_NEAR(sidak_z_threshold(0.05, 1), 1.95996, 1e-4);
+    // 1 - (1 - 0.01)^(1/1000) = 1.00503e-5 two-sided -> z = 4.4172
+    EXPECT_NEAR(sidak_z_threshold(0.01, 1000), 4.4172, 2e-3);
+}
+
+TEST(ImageCompare, IndependentEstimatesOfTheSameImagePass)
+{
+    for (std::uint32_t seed = 0; seed < 5; ++seed) {
+        CompareReport r = compare_images(synthetic(48, 48, 32, 0.0, seed), synthetic(48, 48, 256, 0.0, 100 + seed));
+        EXPECT_TRUE(r.passed) << r.summary();
+    }
+}
+
+TEST(ImageCompare, TwoPercentBiasFails)
+{
+    CompareReport r = compare_images(synthetic(48, 48, 32, 0.02, 1), synthetic(48, 48, 256, 0.0, 2));
+    EXPECT_FALSE(r.passed) << r.summary();
+}
+
+TEST(ImageCompare, OneWrongPixelOutOfFewFails)
+{
+    Image a = synthetic(8, 8, 64, 0.0, 3), b = synthetic(8, 8, 64, 0.0, 4);
+    a.rgb[27] *= 3.0f; // 1 of 192 tests is within the 1% tolerance, but the image mean moves
+    a.rgb[28] *= 3.0f;
+    a.rgb[29] *= 3.0f;
+    EXPECT_FALSE(compare_images(a, b).passed);
+}
+
+TEST(ImageCompare, SizeMismatchThrows)
+{
+    EXPECT_THROW(compare_images(synthetic(4, 4, 8, 0, 1), synthetic(4, 5, 8, 0, 1)), std::exception);
+}
+
+} // namespace
+} // namespace pathcl
