@@ -1,7 +1,10 @@
 // pathcl command line: `render`, `devices`, `compare`. Every error is one line on stderr
 // ("pathcl: error: ...") and exit code 2; nothing is written unless the render succeeded.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -29,18 +32,52 @@ int run_devices()
     return 0;
 }
 
-int run_render(const std::string& scene_path, const std::string& output, const pathcl::RenderOptions& opt)
+int run_render(const std::string& scene_path, const std::vector<std::string>& outputs,
+               const pathcl::RenderOptions& opt)
 {
-    pathcl::check_output_path(output); // fail before spending time on the render
+    for (const std::string& output : outputs)
+        pathcl::check_output_path(output); // fail before spending time on the render
     pathcl::Scene scene = pathcl::load_gltf(scene_path);
     pathcl::RenderResult r = pathcl::render(scene, opt);
-    pathcl::write_image(output, r.image);
+    for (const std::string& output : outputs)
+        pathcl::write_image(output, r.image);
     const pathcl::RenderStats& s = r.stats;
+    std::string names;
+    for (const std::string& output : outputs)
+        names += (names.empty() ? "" : ", ") + output;
     std::printf("%s: %zu triangles, %zu lights | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
                 "%.3g samples/s | %llu NaN/Inf samples\n",
-                output.c_str(), s.triangles, s.lights, s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
+                names.c_str(), s.triangles, s.lights, s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
                 s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
                 static_cast<unsigned long long>(s.bad_samples));
+    return 0;
+}
+
+// Times renders of one scene: the first render's kernel build (time to first pixel
+// includes it), one warm-up render, then `runs` timed renders; prints min/median/max.
+int run_bench(const std::string& scene_path, pathcl::RenderOptions opt, int runs)
+{
+    pathcl::Scene scene = pathcl::load_gltf(scene_path);
+    pathcl::RenderOptions warm = opt;
+    warm.spp = 1;
+    pathcl::RenderResult first = pathcl::render(scene, warm);
+    std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s\n",
+                scene_path.c_str(), first.stats.triangles, first.stats.bvh_nodes, first.stats.bvh_build_seconds * 1e3,
+                first.stats.kernel_build_seconds, first.stats.kernel_from_cache ? " (from cache)" : " (compiled)");
+    std::vector<double> rates, seconds;
+    for (int i = 0; i < runs; ++i) {
+        opt.seed = static_cast<std::uint32_t>(i);
+        pathcl::RenderResult r = pathcl::render(scene, opt);
+        rates.push_back(r.stats.samples_per_second);
+        seconds.push_back(r.stats.render_seconds);
+    }
+    std::sort(rates.begin(), rates.end());
+    std::sort(seconds.begin(), seconds.end());
+    std::size_t mid = rates.size() / 2;
+    std::printf("%ux%u, %u spp, max bounces %u, %d runs: samples/s min %.4g median %.4g max %.4g | "
+                "render s min %.3f median %.3f max %.3f\n",
+                opt.width, opt.height, opt.spp, opt.max_bounces, runs, rates.front(), rates[mid], rates.back(),
+                seconds.front(), seconds[mid], seconds.back());
     return 0;
 }
 
@@ -59,11 +96,15 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
 
     CLI::App* render = app.add_subcommand("render", "Render a glTF scene to an EXR or PNG image");
-    std::string scene_path, output;
+    std::string scene_path;
+    std::vector<std::string> outputs;
     pathcl::RenderOptions opt;
     int device = 0;
     render->add_option("scene", scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
-    render->add_option("-o,--output", output, "output image (.exr: linear float + variance; .png: sRGB)")->required();
+    render->add_option("-o,--output", outputs,
+                       "output image, repeatable (.exr: linear float + variance; .png: sRGB, clamped)")
+        ->required()
+        ->allow_extra_args(false);
     render->add_option("--spp", opt.spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 30));
     render->add_option("--width", opt.width, "image width")->capture_default_str()->check(CLI::Range(1u, 32768u));
     render->add_option("--height", opt.height, "image height")->capture_default_str()->check(CLI::Range(1u, 32768u));
@@ -75,6 +116,20 @@ int main(int argc, char** argv)
     render->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
 
     app.add_subcommand("devices", "List every OpenCL platform and device with its index");
+
+    CLI::App* bench = app.add_subcommand("bench", "Time repeated renders of a scene (min/median/max samples/s)");
+    std::string bench_scene;
+    pathcl::RenderOptions bench_opt;
+    bench_opt.width = bench_opt.height = 256;
+    bench_opt.spp = 16;
+    int bench_runs = 5, bench_device = 0;
+    bench->add_option("scene", bench_scene, "glTF 2.0 scene")->required();
+    bench->add_option("--spp", bench_opt.spp, "samples per pixel per run")->capture_default_str();
+    bench->add_option("--width", bench_opt.width, "image width")->capture_default_str();
+    bench->add_option("--height", bench_opt.height, "image height")->capture_default_str();
+    bench->add_option("--max-bounces", bench_opt.max_bounces, "scattering events per path")->capture_default_str();
+    bench->add_option("--runs", bench_runs, "timed runs after one warm-up")->capture_default_str()->check(CLI::Range(1, 1000));
+    bench->add_option("--device", bench_device, "OpenCL device index")->capture_default_str();
 
     CLI::App* compare = app.add_subcommand(
         "compare", "Statistically compare two EXR renders (per-pixel, tile and image z-tests); exit 1 if they differ");
@@ -96,7 +151,11 @@ int main(int argc, char** argv)
     try {
         if (render->parsed()) {
             opt.devices = {device};
-            return run_render(scene_path, output, opt);
+            return run_render(scene_path, outputs, opt);
+        }
+        if (bench->parsed()) {
+            bench_opt.devices = {bench_device};
+            return run_bench(bench_scene, bench_opt, bench_runs);
         }
         if (compare->parsed())
             return run_compare(cmp_a, cmp_b, cmp);
