@@ -43,6 +43,10 @@ void check_output_path(const std::string& path)
 void write_image(const std::string& path, const Image& img)
 {
     check_output_path(path);
+    const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+    if (pixels == 0 || img.rgb.size() != pixels * 3 || img.variance.size() != pixels * 3)
+        throw Error(path + ": internal error: image buffers do not match " + std::to_string(img.width) + "x" +
+                    std::to_string(img.height));
     const bool exr = extension_of(path) == ".exr";
     const int w = static_cast<int>(img.width), h = static_cast<int>(img.height);
 

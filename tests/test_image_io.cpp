@@ -1,0 +1,99 @@
+// Image files: EXR keeps radiance, variance and sample count exactly; PNG is sRGB-encoded
+// and clamped; a failed write leaves an existing file untouched.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <OpenImageIO/imagebuf.h>
+
+#include "common/error.h"
+#include "image/image_io.h"
+
+namespace pathcl {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir()
+{
+    fs::path d = fs::temp_directory_path() / ("pathcl-image-io-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+Image gradient(std::uint32_t w, std::uint32_t h)
+{
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.spp = 17;
+    for (std::uint32_t i = 0; i < w * h * 3; ++i) {
+        img.rgb.push_back(0.01f * static_cast<float>(i) + 1e-3f);
+        img.variance.push_back(0.5f * static_cast<float>(i) + 123.0f);
+    }
+    return img;
+}
+
+TEST(ImageIo, ExrRoundTripKeepsRadianceVarianceAndSpp)
+{
+    fs::path p = temp_dir() / "round.exr";
+    Image a = gradient(7, 5);
+    a.rgb[4] = 1e6f; // no clamping of bright samples
+    write_image(p.string(), a);
+    Image b = read_image(p.string());
+    EXPECT_EQ(b.width, 7u);
+    EXPECT_EQ(b.height, 5u);
+    EXPECT_EQ(b.spp, 17u);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.variance, b.variance);
+}
+
+TEST(ImageIo, PngIsSrgbEncodedAndClamped)
+{
+    fs::path p = temp_dir() / "srgb.png";
+    Image a;
+    a.width = 3;
+    a.height = 1;
+    a.spp = 1;
+    a.rgb = {0.5f, 0.5f, 0.5f, 2.0f, -1.0f, 0.0031308f, 0.0f, 1.0f, 0.2140f};
+    a.variance.assign(9, 0.0f);
+    write_image(p.string(), a);
+    OIIO::ImageBuf buf(p.string());
+    ASSERT_TRUE(buf.read(0, 0, true, OIIO::TypeDesc::UINT8));
+    unsigned char px[9];
+    buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, px);
+    EXPECT_NEAR(px[0], 188, 1); // sRGB(0.5) = 0.7354
+    EXPECT_EQ(px[3], 255);      // clamped above
+    EXPECT_EQ(px[4], 0);        // clamped below
+    EXPECT_NEAR(px[5], 10, 1);  // the linear segment: 12.92 * 0.0031308 = 0.04045
+    EXPECT_NEAR(px[8], 128, 1); // sRGB(0.214) = 0.5
+}
+
+TEST(ImageIo, FailedWriteLeavesExistingFileIntact)
+{
+    fs::path dir = temp_dir();
+    fs::path p = dir / "keep.exr";
+    {
+        std::ofstream f(p);
+        f << "precious";
+    }
+    Image broken = gradient(4, 4);
+    broken.rgb.resize(3); // inconsistent: too few pixels -> must not replace the file
+    EXPECT_THROW(write_image(p.string(), broken), Error);
+    std::ifstream f(p);
+    std::string content;
+    f >> content;
+    EXPECT_EQ(content, "precious");
+    for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "left behind " << e.path();
+}
+
+TEST(ImageIo, RejectsUnknownExtensionAndMissingDirectory)
+{
+    EXPECT_THROW(check_output_path("/tmp/x.jpg"), Error);
+    EXPECT_THROW(check_output_path("/nonexistent-dir-pathcl/x.exr"), Error);
+    EXPECT_NO_THROW(check_output_path((temp_dir() / "ok.png").string()));
+}
+
+} // namespace
+} // namespace pathcl
