@@ -103,7 +103,23 @@ inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, fl
     if (ts <= 0.0f || ts >= t_max * det_abs)
         return false;
     float inv_det = 1.0f / det;
-    *t_out = t_scaled * inv_det;
+    float t = t_scaled * inv_det;
+    /* Conservative bound on the rounding error of t (pbrt-v3, section 3.9.6): a hit closer
+     * than that may be the surface the ray starts on. Spawned origins are offset by the
+     * hit point's error bound, but that bound is zero for a point exactly on a coordinate
+     * plane (x = 0 walls), so this test is what stops those rays re-hitting the plane. */
+    float max_zt = fmax(fabs(az), fmax(fabs(bz), fabs(cz)));
+    float max_xt = fmax(fabs(ax), fmax(fabs(bx), fabs(cx)));
+    float max_yt = fmax(fabs(ay), fmax(fabs(by), fabs(cy)));
+    float delta_x = FLOAT_GAMMA(5) * (max_xt + max_zt);
+    float delta_y = FLOAT_GAMMA(5) * (max_yt + max_zt);
+    float delta_z = FLOAT_GAMMA(3) * max_zt;
+    float delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    float max_e = fmax(fabs(u), fmax(fabs(v), fabs(w)));
+    float delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
+    if (t <= delta_t)
+        return false;
+    *t_out = t;
     *b1_out = v * inv_det;
     *b2_out = w * inv_det;
     return true;

@@ -56,12 +56,20 @@ public:
         count_ = acc.count;
         std::size_t element = static_cast<std::size_t>(components_ * component_size_);
         stride_ = view.byteStride ? view.byteStride : element;
-        std::size_t start = view.byteOffset + acc.byteOffset;
-        std::size_t needed = count_ ? start + (count_ - 1) * stride_ + element : start;
-        if (needed > view.byteOffset + view.byteLength || needed > buffer.data.size())
-            fail("reads past the end of its buffer (needs " + std::to_string(needed) +
-                 " bytes, buffer has " + std::to_string(buffer.data.size()) + ")");
-        data_ = buffer.data.data() + start;
+        // The view must lie inside its buffer and the accessor inside its view. Offsets
+        // and counts come from the file, so every step is checked before it can wrap.
+        const std::size_t buffer_size = buffer.data.size();
+        if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset)
+            fail("its bufferView lies outside its buffer (" + std::to_string(buffer_size) + " bytes)");
+        if (acc.byteOffset > view.byteLength)
+            fail("byteOffset lies past the end of its bufferView");
+        const std::size_t room = view.byteLength - acc.byteOffset; // bytes from the first element
+        bool fits = count_ == 0 || (element <= room && (count_ - 1) <= (room - element) / stride_);
+        if (!fits)
+            fail("reads past the end of its bufferView (" + std::to_string(count_) + " elements of stride " +
+                 std::to_string(stride_) + " from offset " + std::to_string(acc.byteOffset) + " in " +
+                 std::to_string(view.byteLength) + " bytes)");
+        data_ = buffer.data.data() + view.byteOffset + acc.byteOffset;
     }
 
     std::size_t count() const { return count_; }
@@ -230,10 +238,13 @@ struct Importer {
         return tris;
     }
 
-    void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world,
+    void import_primitive(const tinygltf::Primitive& prim_in, const glm::dmat4& world,
                           const std::string& what)
     {
-        if (prim.mode >= 0 && prim.mode < kModeTriangles) {
+        tinygltf::Primitive prim = prim_in;
+        if (prim.mode < 0) // unset (tinygltf's -1): glTF's default is triangles
+            prim.mode = kModeTriangles;
+        if (prim.mode < kModeTriangles) {
             ++skipped_points_lines;
             return;
         }

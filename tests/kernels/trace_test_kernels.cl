@@ -39,3 +39,28 @@ __kernel void test_any_hit(__global const float4* origins, __global const float4
     uint i = get_global_id(0);
     out[i] = bvh_trace(nodes, triangles, origins[i].xyz, dirs[i].xyz, t_max, true).triangle >= 0;
 }
+
+/* Spawns one ray per work-item from a random point on a random triangle (through the
+ * kernels' own barycentric_point and offset_ray_origin), in a random direction on either
+ * side, and returns the triangle it hits first (-1: none). */
+__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles,
+                                    uint count, uint seed, __global int* hit_triangle,
+                                    __global int* source_triangle)
+{
+    uint i = get_global_id(0);
+    SamplerState s = sampler_start(i, 0u, seed, 0u);
+    uint t = min((uint)(sampler_get_1d(&s) * (float)count), count - 1u);
+    float2 u = sampler_get_2d(&s);
+    float su = sqrt(u.x);
+    Triangle tri = triangles[t];
+    float3 err;
+    float3 p = barycentric_point(tri.v0.xyz, tri.v1.xyz, tri.v2.xyz, 1.0f - su, u.y * su, &err);
+    float3 n = normalize(cross(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz));
+    float2 w = sampler_get_2d(&s);
+    float z = 1.0f - 2.0f * w.x;
+    float r = sqrt(fmax(0.0f, 1.0f - z * z));
+    float3 d = (float3)(r * cos(2.0f * PI_F * w.y), r * sin(2.0f * PI_F * w.y), z);
+    float3 o = offset_ray_origin(p, err, n, d);
+    hit_triangle[i] = bvh_trace(nodes, triangles, o, d, INFINITY, false).triangle;
+    source_triangle[i] = (int)t;
+}

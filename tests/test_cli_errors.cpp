@@ -1,0 +1,226 @@
+// The real `pathcl` binary on bad input: exit status exactly 2, exactly one stderr line
+// "pathcl: error: ..." naming the offending file, and no output file written (an existing
+// one left byte-identical). Every case here fails before rendering; the render options
+// are tiny anyway so that a regression cannot make this test slow.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+namespace pathcl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kBinary = PATHCL_BINARY;
+const std::string kCornell = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box.gltf";
+const std::string kTiny = " --width 4 --height 4 --spp 1";
+
+// Single-quoted for /bin/sh.
+std::string quoted(const std::string& s)
+{
+    std::string q = "'";
+    for (char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string read_file(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_file(const fs::path& p, const std::string& text)
+{
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+}
+
+struct RunResult {
+    int status = -1; // exit status, -1 when the process did not exit normally
+    std::string out, err;
+};
+
+// The names of the plain files in `dir` (not recursive) and of its subdirectories.
+std::set<std::string> listing(const fs::path& dir)
+{
+    std::set<std::string> names;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))
+        names.insert(e.path().filename().string());
+    return names;
+}
+
+// A glTF with one triangle whose only buffer lives in `bin_uri`.
+std::string gltf_with_external_buffer(const std::string& bin_uri)
+{
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"uri": ")" + bin_uri + R"(", "byteLength": 36}]}
+)";
+}
+
+// Each test works in its own directory: `work` holds scenes and outputs, `capture` holds
+// the redirected stdout/stderr (so that `work` shows exactly what the binary created).
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        root_ = fs::temp_directory_path() / ("pathcl-cli-" + std::to_string(::getpid()) + "-" + info->name());
+        fs::remove_all(root_);
+        work_ = root_ / "work";
+        capture_ = root_ / "capture";
+        fs::create_directories(work_);
+        fs::create_directories(capture_);
+    }
+
+    void TearDown() override
+    {
+        std::error_code ec;
+        fs::remove_all(root_, ec);
+    }
+
+    RunResult run(const std::string& args) const
+    {
+        fs::path out = capture_ / "stdout.txt", err = capture_ / "stderr.txt";
+        std::string cmd = "cd " + quoted(work_.string()) + " && " + quoted(kBinary) + " " + args + " >" +
+                          quoted(out.string()) + " 2>" + quoted(err.string());
+        int rc = std::system(cmd.c_str());
+        RunResult r;
+        r.status = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+        r.out = read_file(out);
+        r.err = read_file(err);
+        return r;
+    }
+
+    // The common contract of a failing run.
+    void expect_clean_failure(const RunResult& r, const std::string& offending_name) const
+    {
+        EXPECT_EQ(r.status, 2) << "stderr: " << r.err;
+        EXPECT_EQ(r.err.rfind("pathcl: error: ", 0), 0u) << "stderr: " << r.err;
+        EXPECT_FALSE(r.err.empty());
+        if (!r.err.empty()) {
+            EXPECT_EQ(r.err.back(), '\n') << "stderr: " << r.err;
+        }
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr is not exactly one line: " << r.err;
+        EXPECT_NE(r.err.find(offending_name), std::string::npos)
+            << "stderr does not name " << offending_name << ": " << r.err;
+    }
+
+    fs::path root_, work_, capture_;
+};
+
+// (a) a missing scene file
+TEST_F(Cli, MissingSceneFile)
+{
+    RunResult r = run("render " + quoted((work_ / "no-such-scene.gltf").string()) + " -o out.exr" + kTiny);
+    expect_clean_failure(r, "no-such-scene.gltf");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+// (b) an invalid glTF file: broken JSON
+TEST_F(Cli, InvalidJsonScene)
+{
+    write_file(work_ / "broken.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ ");
+    RunResult r = run("render broken.gltf -o out.exr" + kTiny);
+    expect_clean_failure(r, "broken.gltf");
+    EXPECT_EQ(listing(work_), std::set<std::string>{"broken.gltf"}) << "an output file was created";
+}
+
+// (b') an invalid glTF file: valid JSON whose mesh names an accessor that does not exist
+TEST_F(Cli, SceneWithMissingAccessor)
+{
+    write_file(work_ / "bad-accessor.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+ "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 7}}]}]})");
+    RunResult r = run("render bad-accessor.gltf -o out.exr" + kTiny);
+    expect_clean_failure(r, "bad-accessor.gltf");
+    EXPECT_EQ(listing(work_), std::set<std::string>{"bad-accessor.gltf"}) << "an output file was created";
+}
+
+// (c) a buffer URI that points at a missing .bin: the message names the .bin
+TEST_F(Cli, MissingBufferFile)
+{
+    write_file(work_ / "needs-bin.gltf", gltf_with_external_buffer("missing-data.bin"));
+    RunResult r = run("render needs-bin.gltf -o out.exr" + kTiny);
+    expect_clean_failure(r, "missing-data.bin");
+    EXPECT_EQ(listing(work_), std::set<std::string>{"needs-bin.gltf"}) << "an output file was created";
+}
+
+// (d) an output with an unsupported extension
+TEST_F(Cli, UnsupportedOutputExtension)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o picture.jpg" + kTiny);
+    expect_clean_failure(r, "picture.jpg");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+// (d') a bad output next to a good one: nothing is written at all
+TEST_F(Cli, UnsupportedSecondOutputWritesNeitherOutput)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o good.exr -o picture.jpg" + kTiny);
+    expect_clean_failure(r, "picture.jpg");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+// (e) an output in a directory that does not exist
+TEST_F(Cli, OutputDirectoryDoesNotExist)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o no-such-dir/out.exr" + kTiny);
+    expect_clean_failure(r, "no-such-dir/out.exr");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "the directory or an output file was created";
+}
+
+// An existing output file survives a failing run byte for byte.
+TEST_F(Cli, ExistingOutputIsUnchangedWhenTheSceneIsMissing)
+{
+    const std::string before = "not an image: pathcl must leave this file alone\n";
+    write_file(work_ / "out.exr", before);
+    RunResult r = run("render no-such-scene.gltf -o out.exr" + kTiny);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(read_file(work_ / "out.exr"), before);
+    EXPECT_EQ(listing(work_), std::set<std::string>{"out.exr"}) << "a stray file was created";
+}
+
+TEST_F(Cli, ExistingOutputIsUnchangedWhenTheSceneIsInvalid)
+{
+    const std::string before = "not an image: pathcl must leave this file alone\n";
+    write_file(work_ / "out.png", before);
+    write_file(work_ / "needs-bin.gltf", gltf_with_external_buffer("missing-data.bin"));
+    RunResult r = run("render needs-bin.gltf -o out.png" + kTiny);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(read_file(work_ / "out.png"), before);
+    EXPECT_EQ(listing(work_), (std::set<std::string>{"needs-bin.gltf", "out.png"})) << "a stray file was created";
+}
+
+TEST_F(Cli, RenderHelpExitsZero)
+{
+    RunResult r = run("render --help");
+    EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST_F(Cli, DevicesListsDeviceZero)
+{
+    RunResult r = run("devices");
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+    bool found = false;
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);)
+        found = found || line.rfind("0: ", 0) == 0;
+    EXPECT_TRUE(found) << "no line starts with \"0: \":\n" << r.out;
+}
+
+} // namespace
+} // namespace pathcl
