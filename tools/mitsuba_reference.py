@@ -1,0 +1,384 @@
+#!/usr/bin/env python3
+"""Renders a glTF scene with Mitsuba 3 as an independent reference for pathcl.
+
+    tools/mitsuba_reference.py SCENE.gltf -o OUT.exr --width W --height H --spp N \
+        --max-bounces B --runs K [--seed S] [--variant V]
+
+Writes OUT.exr with R, G, B = the mean over all K*N samples per pixel,
+variance.R/G/B = the estimated variance of ONE sample (variance across the K run means
+times N) and the int attribute pathcl:spp = K*N: the layout pathcl writes, so
+`pathcl compare OUT.exr PATHCL.exr` tests the two renders statistically.
+
+Install (pip only; the Debian python3 has no numpy):
+    python3 -m venv /tmp/mivenv
+    /tmp/mivenv/bin/pip install mitsuba numpy OpenEXR     # or openimageio instead of OpenEXR
+    /tmp/mivenv/bin/python tools/mitsuba_reference.py scenes/cornell-box.gltf -o ref.exr ...
+
+The glTF reader is our own (numpy only, no pathcl code) and covers what
+scenes/cornell-box.gltf uses: node TRS/matrix hierarchy, triangle primitives (mode 4)
+with float VEC3 POSITION and u8/u16/u32 indices, base64 data-URI or external buffers,
+baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, and the first
+perspective camera. Textures, normals, metallic/roughness and other extensions are
+ignored: every surface is a flat-shaded Lambertian `diffuse` BSDF.
+
+Conventions matched to pathcl:
+  * --max-bounces B counts scattering events (B=0: emission only). Mitsuba's path
+    integrator max_depth counts path segments, so max_depth = B + 1.
+  * Emission leaves the front face only: the side the counter-clockwise winding's
+    normal points to. Mitsuba's mesh face normal is cross(v1-v0, v2-v0), the same side,
+    and its area emitter is one-sided in that direction. Nodes whose world matrix
+    mirrors (negative determinant) get their winding reversed, as glTF requires.
+  * glTF cameras look along local -Z with +Y up; the sensor is placed with
+    look_at(origin, origin + forward, up) so no handedness flip is needed.
+  * Film: box reconstruction filter, so each pixel is the plain mean of its samples.
+"""
+import argparse
+import base64
+import json
+import math
+import os
+import sys
+import time
+
+try:
+    import numpy as np
+except ImportError:
+    sys.exit("mitsuba_reference.py: numpy is missing. Install: python3 -m venv /tmp/mivenv && "
+             "/tmp/mivenv/bin/pip install mitsuba numpy OpenEXR")
+
+
+# ---------------------------------------------------------------------------------------
+# EXR I/O: OpenImageIO if importable, else the OpenEXR pip package.
+
+def _backend():
+    try:
+        import OpenImageIO as oiio
+        return "oiio", oiio
+    except ImportError:
+        pass
+    try:
+        import OpenEXR
+        return "openexr", OpenEXR
+    except ImportError:
+        pass
+    raise ImportError("no EXR library: pip install openimageio  (or)  pip install OpenEXR")
+
+
+def exr_backend_name():
+    return {"oiio": "OpenImageIO", "openexr": "OpenEXR"}[_backend()[0]]
+
+
+def write_exr(path, channels, int_attrs=None):
+    """Writes float32 channels {name: HxW array} plus int header attributes."""
+    kind, lib = _backend()
+    names = list(channels)
+    h, w = next(iter(channels.values())).shape
+    if kind == "oiio":
+        spec = lib.ImageSpec(w, h, len(names), lib.FLOAT)
+        spec.channelnames = tuple(names)
+        spec.attribute("compression", "zip")
+        for k, v in (int_attrs or {}).items():
+            spec.attribute(k, int(v))
+        pixels = np.stack([np.asarray(channels[n], np.float32) for n in names], axis=-1)
+        out = lib.ImageOutput.create(path)
+        if out is None or not out.open(path, spec):
+            raise IOError(f"cannot open {path} for writing: {lib.geterror()}")
+        ok = out.write_image(np.ascontiguousarray(pixels))
+        out.close()
+        if not ok:
+            raise IOError(f"cannot write {path}: {lib.geterror()}")
+    else:
+        header = {"compression": lib.ZIP_COMPRESSION, "type": lib.scanlineimage}
+        header.update({k: int(v) for k, v in (int_attrs or {}).items()})
+        data = {n: np.ascontiguousarray(channels[n], np.float32) for n in names}
+        with lib.File(header, data) as f:
+            f.write(path)
+
+COMPONENT_DTYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
+                    5125: np.uint32, 5126: np.float32}
+TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
+
+
+# ---------------------------------------------------------------------------------------
+# Minimal glTF 2.0 reader.
+
+class Gltf:
+    def __init__(self, path):
+        with open(path, "rb") as f:
+            raw = f.read()
+        if raw[:4] == b"glTF":
+            raise ValueError(f"{path}: binary .glb is not supported, only .gltf json")
+        self.doc = json.loads(raw)
+        self.dir = os.path.dirname(os.path.abspath(path))
+        self.buffers = [self._load_buffer(b) for b in self.doc.get("buffers", [])]
+
+    def _load_buffer(self, buf):
+        uri = buf["uri"]
+        if uri.startswith("data:"):
+            header, _, payload = uri.partition(",")
+            if not header.endswith(";base64"):
+                raise ValueError("only base64 data URIs are supported")
+            data = base64.b64decode(payload)
+        else:
+            from urllib.parse import unquote  # glTF URIs are percent-encoded
+            with open(os.path.join(self.dir, unquote(uri)), "rb") as f:
+                data = f.read()
+        if len(data) < buf["byteLength"]:
+            raise ValueError(f"buffer shorter than its byteLength {buf['byteLength']}")
+        return data
+
+    def accessor(self, index):
+        """Returns accessor `index` as a (count, components) numpy array."""
+        acc = self.doc["accessors"][index]
+        if "sparse" in acc:
+            raise ValueError("sparse accessors are not supported")
+        dtype = np.dtype(COMPONENT_DTYPES[acc["componentType"]]).newbyteorder("<")
+        ncomp, count = TYPE_SIZES[acc["type"]], acc["count"]
+        if "bufferView" not in acc:  # all zeros by spec
+            return np.zeros((count, ncomp), dtype)
+        view = self.doc["bufferViews"][acc["bufferView"]]
+        data = self.buffers[view["buffer"]]
+        start = view.get("byteOffset", 0) + acc.get("byteOffset", 0)
+        elem = dtype.itemsize * ncomp
+        stride = view.get("byteStride", elem)
+        # Strided view over the buffer, copied so it no longer aliases the bytes.
+        arr = np.ndarray((count, ncomp), dtype, buffer=data, offset=start,
+                         strides=(stride, dtype.itemsize))
+        return np.array(arr)
+
+
+def quat_to_matrix(q):
+    x, y, z, w = q  # glTF order is x, y, z, w
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def node_matrix(node):
+    if "matrix" in node:
+        return np.array(node["matrix"], np.float64).reshape(4, 4).T  # stored column-major
+    m = np.eye(4)
+    r = quat_to_matrix(node.get("rotation", [0, 0, 0, 1]))
+    s = np.diag(node.get("scale", [1, 1, 1]))
+    m[:3, :3] = r @ s  # T * R * S
+    m[:3, 3] = node.get("translation", [0, 0, 0])
+    return m
+
+
+def walk_nodes(doc):
+    """Yields (node, world matrix) depth-first in scene order."""
+    scenes = doc.get("scenes")
+    if scenes:
+        roots = scenes[doc.get("scene", 0)]["nodes"]
+    else:  # no scene list: every node that is nobody's child is a root
+        children = {c for n in doc.get("nodes", []) for c in n.get("children", [])}
+        roots = [i for i in range(len(doc.get("nodes", []))) if i not in children]
+    stack = [(i, np.eye(4)) for i in reversed(roots)]
+    while stack:
+        i, parent = stack.pop()
+        node = doc["nodes"][i]
+        world = parent @ node_matrix(node)
+        yield node, world
+        stack.extend((c, world) for c in reversed(node.get("children", [])))
+
+
+def material_params(doc, index):
+    """(base colour rgb, emitted radiance rgb, double sided) of material `index`."""
+    if index is None:  # glTF default material: white, not emissive
+        return (1.0, 1.0, 1.0), (0.0, 0.0, 0.0), False
+    mat = doc["materials"][index]
+    base = mat.get("pbrMetallicRoughness", {}).get("baseColorFactor", [1, 1, 1, 1])[:3]
+    strength = mat.get("extensions", {}).get("KHR_materials_emissive_strength", {}) \
+                  .get("emissiveStrength", 1.0)
+    emissive = [c * strength for c in mat.get("emissiveFactor", [0, 0, 0])]
+    return tuple(base), tuple(emissive), bool(mat.get("doubleSided", False))
+
+
+def load_scene(path):
+    """Returns (list of triangle primitives, camera) in world space."""
+    g = Gltf(path)
+    doc = g.doc
+    prims, camera = [], None
+    for node, world in walk_nodes(doc):
+        if "camera" in node and camera is None:
+            cam = doc["cameras"][node["camera"]]
+            if cam.get("type") == "perspective":
+                camera = {"world": world, **cam["perspective"]}
+        if "mesh" not in node:
+            continue
+        mirrored = np.linalg.det(world[:3, :3]) < 0
+        for k, p in enumerate(doc["meshes"][node["mesh"]]["primitives"]):
+            if p.get("mode", 4) != 4:
+                print(f"warning: skipping non-triangle primitive (mode {p['mode']})",
+                      file=sys.stderr)
+                continue
+            pos = g.accessor(p["attributes"]["POSITION"]).astype(np.float64)
+            if pos.shape[1] != 3:
+                raise ValueError("POSITION must be VEC3")
+            if "indices" in p:
+                idx = g.accessor(p["indices"]).reshape(-1).astype(np.uint32)
+            else:
+                idx = np.arange(len(pos), dtype=np.uint32)
+            faces = idx[: len(idx) // 3 * 3].reshape(-1, 3)
+            if mirrored:  # a mirroring transform flips which side is counter-clockwise
+                faces = faces[:, ::-1]
+            pos = pos @ world[:3, :3].T + world[:3, 3]
+            base, emit, two_sided = material_params(doc, p.get("material"))
+            prims.append({"name": f"{node.get('name', 'node')}_{k}", "positions": pos,
+                          "faces": np.ascontiguousarray(faces), "base": base,
+                          "emission": emit, "two_sided": two_sided})
+    if camera is None:
+        raise ValueError(f"{path}: no perspective camera node in the scene")
+    return prims, camera
+
+
+# ---------------------------------------------------------------------------------------
+# Mitsuba scene.
+
+def make_mesh(mi, prim):
+    """A Mitsuba mesh without vertex normals (flat shading) with its BSDF/emitter."""
+    props = mi.Properties()
+    bsdf = {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(prim["base"])}}
+    if prim["two_sided"]:
+        bsdf = {"type": "twosided", "material": bsdf}
+    props["bsdf"] = mi.load_dict(bsdf)
+    if any(c > 0 for c in prim["emission"]):
+        # One-sided: radiance leaves along the face normal only.
+        props["emitter"] = mi.load_dict(
+            {"type": "area", "radiance": {"type": "rgb", "value": list(prim["emission"])}})
+    pos, faces = prim["positions"], prim["faces"]
+    mesh = mi.Mesh(prim["name"], len(pos), len(faces), props=props,
+                   has_vertex_normals=False, has_vertex_texcoords=False)
+    params = mi.traverse(mesh)
+    # Flat buffers of the variant's own array types (dynamic arrays in scalar_* too).
+    params["vertex_positions"] = type(params["vertex_positions"])(pos.astype(np.float32).ravel())
+    params["faces"] = type(params["faces"])(faces.astype(np.uint32).ravel())
+    params.update()  # recomputes bounds/areas the emitter sampling needs
+    return mesh
+
+
+def camera_to_world(mi, camera):
+    world = camera["world"]
+    origin = world[:3, 3]
+    forward = world[:3, :3] @ np.array([0.0, 0.0, -1.0])  # glTF cameras look down -Z
+    up = world[:3, :3] @ np.array([0.0, 1.0, 0.0])
+    forward /= np.linalg.norm(forward)
+    return mi.ScalarTransform4f().look_at(origin=origin.tolist(),
+                                          target=(origin + forward).tolist(),
+                                          up=up.tolist())
+
+
+def build_scene(mi, prims, camera, width, height, spp, max_bounces):
+    scene = {
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": max_bounces + 1, "hide_emitters": False},
+        "sensor": {
+            "type": "perspective",
+            "fov": math.degrees(camera["yfov"]),
+            "fov_axis": "y",
+            "near_clip": float(camera.get("znear", 0.01)),
+            "far_clip": float(camera.get("zfar", 1e4)),
+            "to_world": camera_to_world(mi, camera),
+            # Independent samples so that separately seeded runs are independent too.
+            "sampler": {"type": "independent", "sample_count": spp},
+            "film": {"type": "hdrfilm", "width": width, "height": height,
+                     "rfilter": {"type": "box"}, "pixel_format": "rgb",
+                     "component_format": "float32"},
+        },
+    }
+    for i, prim in enumerate(prims):
+        scene[f"shape_{i:03d}"] = make_mesh(mi, prim)
+    return mi.load_dict(scene)
+
+
+def pick_variant(mi, requested):
+    """scalar_rgb unless told otherwise.
+
+    llvm_ad_rgb is ~1.6x faster on 2 cores but drjit 1.5 needs a newer libLLVM than
+    Debian 12's default 14/15 (those abort inside codegen, uncatchably); point
+    DRJIT_LIBLLVM_PATH at e.g. libLLVM.so.19.1 (Debian package libllvm19) to use it.
+    """
+    variant = requested or "scalar_rgb"
+    if variant not in mi.variants():
+        sys.exit(f"mitsuba_reference.py: variant {variant} not in {mi.variants()}")
+    try:
+        mi.set_variant(variant)
+        if not variant.startswith("scalar"):
+            # JIT variants fail only on first use when libLLVM / CUDA is missing.
+            np.array(mi.Float([1.0, 2.0]) * 2)
+    except Exception as e:  # noqa: BLE001 - report whatever the backend raised
+        sys.exit(f"mitsuba_reference.py: variant {variant} unusable: {e}")
+    return variant
+
+
+def main():
+    ap = argparse.ArgumentParser(description="Mitsuba 3 reference render of a glTF scene")
+    ap.add_argument("scene")
+    ap.add_argument("-o", "--output", required=True)
+    ap.add_argument("--width", type=int, required=True)
+    ap.add_argument("--height", type=int, required=True)
+    ap.add_argument("--spp", type=int, required=True, help="samples per pixel per run")
+    ap.add_argument("--max-bounces", type=int, required=True,
+                    help="scattering events (0 = emission only); max_depth = this + 1")
+    ap.add_argument("--runs", type=int, required=True,
+                    help="independent runs (>= 2) for the variance estimate")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--variant",
+                    help="Mitsuba variant (default scalar_rgb; see pick_variant for llvm_ad_rgb)")
+    args = ap.parse_args()
+    if args.runs < 2:
+        ap.error("--runs must be >= 2 to estimate a variance")
+
+    try:
+        import mitsuba as mi
+    except ImportError:
+        sys.exit("mitsuba_reference.py: Mitsuba 3 is not installed. Install it with\n"
+                 "  python3 -m venv /tmp/mivenv && /tmp/mivenv/bin/pip install mitsuba numpy "
+                 "OpenEXR\nand run this script with /tmp/mivenv/bin/python")
+    try:
+        backend = exr_backend_name()
+    except ImportError as e:
+        sys.exit(f"mitsuba_reference.py: {e}")
+
+    variant = pick_variant(mi, args.variant)
+    prims, camera = load_scene(args.scene)
+    scene = build_scene(mi, prims, camera, args.width, args.height, args.spp,
+                        args.max_bounces)
+    print(f"mitsuba {mi.__version__} variant {variant}, EXR via {backend}; "
+          f"{len(prims)} primitives, {args.width}x{args.height}, "
+          f"{args.runs} runs x {args.spp} spp, max_depth {args.max_bounces + 1}")
+
+    # Welford over run means in float64: mean and spread of the K independent estimates.
+    mean = m2 = None
+    t0 = time.time()
+    for k in range(args.runs):
+        # Run seeds S*K .. S*K+K-1: Mitsuba spreads each seed over disjoint per-pixel
+        # RNG streams (scalar) or hashes it (LLVM), so these runs do not overlap.
+        seed = args.seed * args.runs + k
+        img = np.array(mi.render(scene, spp=args.spp, seed=seed), np.float64)[..., :3]
+        if mean is None:
+            mean, m2 = np.zeros_like(img), np.zeros_like(img)
+        d = img - mean
+        mean += d / (k + 1)
+        m2 += d * (img - mean)
+        print(f"  run {k + 1}/{args.runs} seed {seed}: {time.time() - t0:.1f} s", flush=True)
+
+    # Var of one run's mean, times N = var of one sample.
+    sample_var = m2 / (args.runs - 1) * args.spp
+    total_spp = args.runs * args.spp
+    chans = {"R": mean[..., 0], "G": mean[..., 1], "B": mean[..., 2],
+             "variance.R": sample_var[..., 0], "variance.G": sample_var[..., 1],
+             "variance.B": sample_var[..., 2]}
+    write_exr(args.output, chans, {"pathcl:spp": total_spp, "pathcl:runs": args.runs})
+
+    npx = args.width * args.height
+    img_mean = mean.reshape(-1, 3).mean(0)
+    img_se = np.sqrt((sample_var / total_spp).reshape(-1, 3).sum(0)) / npx
+    print(f"wrote {args.output} ({total_spp} spp) in {time.time() - t0:.1f} s")
+    print("image mean +- standard error: " + "  ".join(
+        f"{c} {m:.6g} +- {s:.2g}" for c, m, s in zip("RGB", img_mean, img_se)))
+
+
+if __name__ == "__main__":
+    main()
