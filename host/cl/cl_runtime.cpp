@@ -1,8 +1,6 @@
 #include "cl/cl_runtime.h"
 
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
 
 #include "cl/embedded_kernels.h"
 #include "cl/program_cache.h"
@@ -96,33 +94,6 @@ ClDevice open_device(int index)
                     "): cannot create a context: " + e.what() + " " + std::to_string(e.err()));
     }
     return dev;
-}
-
-void wait_for_queue(const cl::CommandQueue& queue)
-{
-    struct Waiter {
-        std::mutex mutex;
-        std::condition_variable done;
-        bool complete = false;
-    } waiter;
-    cl::Event marker;
-    queue.enqueueMarkerWithWaitList(nullptr, &marker);
-    marker.setCallback(
-        CL_COMPLETE,
-        [](cl_event, cl_int, void* data) {
-            auto* w = static_cast<Waiter*>(data);
-            std::lock_guard<std::mutex> lock(w->mutex);
-            w->complete = true;
-            w->done.notify_one();
-        },
-        &waiter);
-    queue.flush();
-    std::unique_lock<std::mutex> lock(waiter.mutex);
-    waiter.done.wait(lock, [&] { return waiter.complete; });
-    lock.unlock();
-    // The callback may still be returning; a blocking wait on the (complete) event
-    // returns at once and orders its end before `waiter` goes out of scope.
-    marker.wait();
 }
 
 std::string base_build_options()

@@ -31,10 +31,6 @@ struct ClDevice {
 // Opens the device with the given global index; throws pathcl::Error if there is none.
 ClDevice open_device(int index);
 
-// Waits until everything enqueued on `queue` so far has completed, sleeping rather than
-// spinning: PoCL's clFinish busy-waits, taking a core from its own worker threads.
-void wait_for_queue(const cl::CommandQueue& queue);
-
 struct ProgramBuild {
     cl::Program program;
     double seconds = 0.0;    // wall time to get a ready program (compile or cache load)

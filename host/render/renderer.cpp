@@ -104,7 +104,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->path_kernel.setArg(a++, dr->lights);
             dr->path_kernel.setArg(a++, dr->film);
             dr->path_kernel.setArg(a++, dr->bad);
-            wait_for_queue(dr->dev.queue);
+            dr->dev.queue.finish();
         } catch (const cl::Error& e) {
             throw Error("device " + std::to_string(index) + ": setting up the render failed: " +
                         cl_error_text(e));
@@ -133,7 +133,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
                 dr.dev.queue.flush();
         }
         for (auto& dr : devices)
-            wait_for_queue(dr->dev.queue);
+            dr->dev.queue.finish();
     } catch (const cl::Error& e) {
         throw Error("rendering failed: " + cl_error_text(e));
     }
