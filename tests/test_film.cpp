@@ -17,23 +17,20 @@ const cl::Program& program()
     return p;
 }
 
-// The same samples as film_test_sample() in the test kernel, summed exactly on the host.
+// The samples the kernels accumulate, generated on the device, summed exactly (long
+// double) on the host.
 double exact_sum(std::uint32_t count)
 {
-    auto hash = [](std::uint32_t x) {
-        x ^= x >> 16;
-        x *= 0x7feb352du;
-        x ^= x >> 15;
-        x *= 0x846ca68bu;
-        x ^= x >> 16;
-        return x;
-    };
+    ClDevice& dev = test::test_device();
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, count * sizeof(float));
+    cl::Kernel k(program(), "test_film_samples");
+    k.setArg(0, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(count));
+    std::vector<float> samples(count);
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(float), samples.data());
     long double sum = 0.0L;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        float u = static_cast<float>(hash(i * 2654435761u + 1u) >> 8) * 0x1.0p-24f;
-        float v = 0.1f + (u - 0.5f) * 0.1f;
+    for (float v : samples)
         sum += v;
-    }
     return static_cast<double>(sum);
 }
 

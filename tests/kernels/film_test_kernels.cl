@@ -15,6 +15,13 @@ __kernel void test_film_accumulate(__global FilmPixel* film, __global uint* bad,
     }
 }
 
+/* The same samples, one per work-item, for an exact host-side sum. */
+__kernel void test_film_samples(__global float* out)
+{
+    uint i = get_global_id(0);
+    out[i] = film_test_sample(i);
+}
+
 __kernel void test_naive_accumulate(__global float* out, uint count)
 {
     float sum = 0.0f;
