@@ -37,9 +37,21 @@ constexpr int kStrip = 5, kFan = 6;
 // ---------------------------------------------------------------------------------------
 // Helpers
 
+// The loader returns render space (positions relative to render_origin, the camera);
+// these tests state their expectations in world space.
+Scene in_world_space(Scene s)
+{
+    for (SceneTriangle& t : s.triangles)
+        for (glm::vec3& v : t.v)
+            v = glm::vec3(glm::dvec3(v) + s.render_origin);
+    s.camera.position += s.render_origin;
+    s.render_origin = glm::dvec3(0.0);
+    return s;
+}
+
 Scene import(const GltfBuilder& b, const std::string& source = "test.gltf")
 {
-    return import_gltf(b.model, source);
+    return in_world_space(import_gltf(b.model, source));
 }
 
 glm::dvec3 d3(const glm::vec3& v) { return glm::dvec3(v); }
@@ -943,7 +955,7 @@ const std::string kCornell = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-b
 
 const Scene& cornell_box()
 {
-    static const Scene s = load_gltf(kCornell);
+    static const Scene s = in_world_space(load_gltf(kCornell));
     return s;
 }
 

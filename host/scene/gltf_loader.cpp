@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -184,6 +185,15 @@ struct Importer {
     std::size_t skipped_points_lines = 0;
     std::size_t repaired_normals = 0;
 
+    // Triangles in double-precision world space, until the render-space origin is known.
+    struct PendingTriangle {
+        glm::dvec3 v[3];
+        glm::dvec3 n[3];
+        bool has_normals = false;
+        int material = 0;
+    };
+    std::vector<PendingTriangle> pending;
+
     int material_for(int gltf_material)
     {
         if (gltf_material >= 0) {
@@ -279,14 +289,29 @@ struct Importer {
         int material = material_for(prim.material);
         std::vector<std::uint32_t> tris = triangle_indices(prim, p.size(), what);
         for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
-            std::uint32_t i0 = tris[t], i1 = tris[t + 1], i2 = tris[t + 2];
+            std::uint32_t ids[3] = {tris[t], tris[t + 1], tris[t + 2]};
             if (mirrored)
-                std::swap(i1, i2);
-            SceneTriangle tri;
+                std::swap(ids[1], ids[2]);
+            PendingTriangle tri;
             tri.material = material;
-            tri.v[0] = glm::vec3(p[i0]);
-            tri.v[1] = glm::vec3(p[i1]);
-            tri.v[2] = glm::vec3(p[i2]);
+            tri.has_normals = !n.empty();
+            for (int k = 0; k < 3; ++k) {
+                tri.v[k] = p[ids[k]];
+                tri.n[k] = n.empty() ? glm::dvec3(0.0) : n[ids[k]];
+            }
+            pending.push_back(tri);
+        }
+    }
+
+    // Converts the double-precision world triangles to float, relative to `origin`.
+    void finish_triangles(const glm::dvec3& origin)
+    {
+        scene.triangles.reserve(pending.size());
+        for (const PendingTriangle& pt : pending) {
+            SceneTriangle tri;
+            tri.material = pt.material;
+            for (int k = 0; k < 3; ++k)
+                tri.v[k] = glm::vec3(pt.v[k] - origin);
             // Degenerate (zero area in the float positions the device will see): drop.
             glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
             float len = glm::length(c);
@@ -295,14 +320,12 @@ struct Importer {
                 continue;
             }
             glm::vec3 ng = c / len;
-            const std::uint32_t ids[3] = {i0, i1, i2};
             for (int k = 0; k < 3; ++k) {
                 glm::vec3 sn = ng;
-                if (!n.empty()) {
-                    glm::dvec3 d = n[ids[k]];
-                    double l = glm::length(d);
+                if (pt.has_normals) {
+                    double l = glm::length(pt.n[k]);
                     if (l > 0.0 && std::isfinite(l))
-                        sn = glm::vec3(d / l);
+                        sn = glm::vec3(pt.n[k] / l);
                     else
                         ++repaired_normals;
                 }
@@ -310,6 +333,7 @@ struct Importer {
             }
             scene.triangles.push_back(tri);
         }
+        pending.clear();
     }
 
     void run()
@@ -372,7 +396,26 @@ struct Importer {
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
                 stack.push_back({*it, world, item.depth + 1});
         }
-        if (!have_camera)
+        // Render space: world space translated so that the camera (else the centre of the
+        // geometry) is the origin. Positions are composed in double and only then rounded
+        // to float, so a scene 1e5 from the world origin keeps its full float precision.
+        glm::dvec3 origin(0.0);
+        if (have_camera) {
+            origin = scene.camera.position;
+        } else if (!pending.empty()) {
+            glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+            for (const PendingTriangle& t : pending)
+                for (const glm::dvec3& v : t.v) {
+                    lo = glm::min(lo, v);
+                    hi = glm::max(hi, v);
+                }
+            origin = 0.5 * (lo + hi);
+        }
+        finish_triangles(origin);
+        scene.render_origin = origin;
+        if (have_camera)
+            scene.camera.position -= origin;
+        else
             scene.camera = framing_camera(scene, 0.8);
         if (scene.materials.empty())
             scene.materials.push_back(SceneMaterial{});
@@ -412,7 +455,7 @@ struct Importer {
 
 Scene import_gltf(const tinygltf::Model& model, const std::string& source)
 {
-    Importer importer{model, source, {}};
+    Importer importer{model, source, {}, -1, 0, 0, {}};
     importer.run();
     return std::move(importer.scene);
 }

@@ -1,5 +1,8 @@
-// The flat scene every later stage works on: world-space triangles, materials and one
-// camera, independent of glTF and of the device layout.
+// The flat scene every later stage works on: triangles, materials and one camera,
+// independent of glTF and of the device layout. Positions are in render space: world
+// space translated by -render_origin (the camera position, else the centre of the
+// geometry), so float precision is spent where the camera looks, not on the distance
+// from the world origin.
 #pragma once
 
 #include <cstddef>
@@ -23,13 +26,13 @@ struct SceneMaterial {
 };
 
 struct SceneTriangle {
-    glm::vec3 v[3]; // world positions; counter-clockwise = front
-    glm::vec3 n[3]; // world shading normals (the geometric normal when the file has none)
+    glm::vec3 v[3]; // render-space positions; counter-clockwise = front
+    glm::vec3 n[3]; // shading normals (the geometric normal when the file has none)
     std::int32_t material = 0;
 };
 
 struct SceneCamera {
-    // World-space frame (unit vectors): the camera looks along forward.
+    // Render-space position and world-space frame (unit vectors): looks along forward.
     glm::dvec3 position{0.0};
     glm::dvec3 forward{0.0, 0.0, -1.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
@@ -43,6 +46,7 @@ struct Scene {
     std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
     SceneCamera camera;
     std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
+    glm::dvec3 render_origin{0.0};      // world position of the render-space origin
 };
 
 // Which effects a scene uses: each becomes a kernel build define, so a scene pays only
