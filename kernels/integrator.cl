@@ -2,14 +2,27 @@
  * scattering events. Needs every other kernel file.
  *
  * Estimator (the rendering equation, unrolled): at each vertex
- *   L += beta * Le(wo)                      emission, MIS-weighted against light sampling
- *   L += beta * f cos Le / p_light * w      next event estimation (shadow ray), MIS weight
- *   beta *= f cos / p_bsdf                  continue the path by BSDF sampling
- * with the power heuristic w = p^2 / (p_light^2 + p_bsdf^2) and unbiased Russian roulette
- * after 3 bounces. Feature flags (PATHCL_HAS_*) come from the scene; code for features a
- * scene lacks is not compiled. */
+ *   L += beta * Le(wo) * w_bsdf              emission reached by the previous BSDF sample
+ *   L += beta * f cos Le / p_light * w_light next event estimation (shadow ray)
+ *   beta *= f cos / p_bsdf                   continue the path by BSDF sampling
+ * The strategy (frame.strategy) sets the weights:
+ *   bsdf:       w_bsdf = 1, no light sampling;
+ *   nee:        w_bsdf = 0, w_light = 1 (BSDF rays carry indirect light only);
+ *   mis:        power heuristic, w = p^2 / (p_light^2 + p_bsdf^2);
+ *   one-sample: a coin picks ONE technique per bounce (probability 1/2 each) and its
+ *               sample is divided by the mixture pdf (p_light + p_bsdf) / 2 (Veach's
+ *               one-sample model; the coin's probability is inside the mixture).
+ * Emission seen by camera rays (or after a delta BSDF) always has weight 1. Russian
+ * roulette after 3 bounces is unbiased. Feature flags (PATHCL_HAS_*) come from the scene;
+ * code for features a scene lacks is not compiled. */
 
 #define RR_START_BOUNCE 3
+
+/* Random dimensions within a bounce (DIMS_PER_BOUNCE of them). */
+#define DIM_TECHNIQUE 0
+#define DIM_LIGHT 1 /* 4: pick (2) and point (2) */
+#define DIM_BSDF 5  /* 2 */
+#define DIM_RR 7
 
 inline float power_heuristic(float pdf_a, float pdf_b)
 {
@@ -22,6 +35,39 @@ inline float power_heuristic(float pdf_a, float pdf_b)
 inline float max_component(float3 v)
 {
     return fmax(v.x, fmax(v.y, v.z));
+}
+
+/* Weight of emission found by a BSDF-sampled ray whose pdf was bsdf_pdf, where light
+ * sampling would have produced the same direction with light_pdf. */
+inline float bsdf_hit_weight(uint strategy, bool technique_was_bsdf, float bsdf_pdf, float light_pdf)
+{
+    switch (strategy) {
+    case STRATEGY_BSDF:
+        return 1.0f;
+    case STRATEGY_NEE:
+        return 0.0f;
+    case STRATEGY_ONE_SAMPLE:
+        /* beta already holds f cos / p_bsdf: this turns it into f cos / p_mixture. */
+        return technique_was_bsdf ? bsdf_pdf / (0.5f * (bsdf_pdf + light_pdf)) : 0.0f;
+    default:
+        return power_heuristic(bsdf_pdf, light_pdf);
+    }
+}
+
+/* Factor applied to f cos Le of a light sample with pdfs light_pdf and bsdf_pdf
+ * (0 when the strategy does not sample lights at this vertex). */
+inline float light_sample_factor(uint strategy, bool technique_is_light, float light_pdf, float bsdf_pdf)
+{
+    switch (strategy) {
+    case STRATEGY_BSDF:
+        return 0.0f;
+    case STRATEGY_NEE:
+        return 1.0f / light_pdf;
+    case STRATEGY_ONE_SAMPLE:
+        return technique_is_light ? 1.0f / (0.5f * (light_pdf + bsdf_pdf)) : 0.0f;
+    default:
+        return power_heuristic(light_pdf, bsdf_pdf) / light_pdf;
+    }
 }
 
 __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* nodes,
@@ -43,7 +89,8 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
     float3 radiance = (float3)(0.0f);
     float3 beta = (float3)(1.0f);
     float prev_bsdf_pdf = 0.0f;
-    bool prev_delta = true; /* camera rays see emission with full weight */
+    bool prev_delta = true;         /* camera rays see emission with full weight */
+    bool prev_technique_bsdf = true; /* one-sample: the coin chose the BSDF technique */
 
     for (uint depth = 0;; ++depth) {
         Hit hit = bvh_trace(nodes, triangles, origin, dir, INFINITY, false);
@@ -61,9 +108,9 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                 radiance += beta * le;
             } else {
                 Light light = lights[sp.emitter];
-                float cos_light = dot(sp.ng, wo);
-                float light_pdf = triangle_light_pdf(&light, hit.t, cos_light);
-                radiance += beta * le * power_heuristic(prev_bsdf_pdf, light_pdf);
+                float light_pdf = triangle_light_pdf(&light, hit.t, dot(sp.ng, wo));
+                radiance += beta * le *
+                            bsdf_hit_weight(frame.strategy, prev_technique_bsdf, prev_bsdf_pdf, light_pdf);
             }
         }
 #endif
@@ -73,12 +120,16 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         if (!sp.front_face && !(m.flags & MATERIAL_DOUBLE_SIDED))
             break;
 
-        SamplerState sampler = sampler_start(pixel, frame.sample_index, frame.seed,
-                                             DIM_PATH_START + depth * DIMS_PER_BOUNCE);
+        uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
+        SamplerState sampler = sampler_start(pixel, frame.sample_index, frame.seed, dims + DIM_TECHNIQUE);
+        bool technique_light = sampler_get_1d(&sampler) < 0.5f; /* used by one-sample only */
 
 #ifdef PATHCL_HAS_AREA_LIGHTS
         /* Next event estimation: one shadow ray to a point on a light. */
-        if (frame.light_count > 0u) {
+        bool sample_light = frame.light_count > 0u && frame.strategy != STRATEGY_BSDF &&
+                            (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light);
+        if (sample_light) {
+            sampler.dimension = dims + DIM_LIGHT;
             LightSample ls = light_sample(lights, frame.light_count, sp.p, &sampler);
             if (ls.pdf > 0.0f) {
                 float3 wi = normalize(ls.p - sp.p);
@@ -88,29 +139,29 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                     float3 to = offset_ray_origin(ls.p, ls.p_error, ls.n, -wi);
                     Hit blocker = bvh_trace(nodes, triangles, from, to - from,
                                             SHADOW_RAY_EXTENT, true);
-                    if (blocker.triangle < 0) {
-                        float w = power_heuristic(ls.pdf, e.pdf);
-                        radiance += beta * e.f_cos * ls.radiance * (w / ls.pdf);
-                    }
+                    if (blocker.triangle < 0)
+                        radiance += beta * e.f_cos * ls.radiance *
+                                    light_sample_factor(frame.strategy, technique_light, ls.pdf, e.pdf);
                 }
             }
-        } else {
-            sampler.dimension += 4u;
         }
 #endif
 
         /* Continue the path by sampling the BSDF. */
+        sampler.dimension = dims + DIM_BSDF;
         BsdfSample bs = bsdf_sample(&m, &sp, wo, sampler_get_2d(&sampler));
         if (!(bs.pdf > 0.0f))
             break;
         beta *= bs.weight;
         prev_bsdf_pdf = bs.pdf;
         prev_delta = bs.delta;
+        prev_technique_bsdf = !technique_light;
         origin = offset_ray_origin(sp.p, sp.p_error, sp.ng, bs.wi);
         dir = bs.wi;
 
         /* Russian roulette: survive with probability q, divide by q (unbiased). */
         if (depth + 1u >= RR_START_BOUNCE) {
+            sampler.dimension = dims + DIM_RR;
             float q = fmin(1.0f, max_component(beta));
             if (sampler_get_1d(&sampler) >= q)
                 break;

@@ -95,6 +95,12 @@ typedef struct {
     pcl_int pad0, pad1, pad2;
 } Camera;
 
+/* Light-sampling strategies (--strategy); all converge to the same image. */
+#define STRATEGY_BSDF 0       /* BSDF sampling only: lights are found by chance */
+#define STRATEGY_NEE 1        /* light sampling for direct light, BSDF rays for indirect */
+#define STRATEGY_ONE_SAMPLE 2 /* one of {light, BSDF} per bounce, mixture-pdf weight */
+#define STRATEGY_MIS 3        /* both, power heuristic */
+
 /* Per-pass constants: 32 bytes. */
 typedef struct {
     pcl_uint width, height;
@@ -102,7 +108,8 @@ typedef struct {
     pcl_uint seed;
     pcl_uint max_bounces;
     pcl_uint light_count;
-    pcl_uint pad0, pad1;
+    pcl_uint strategy;
+    pcl_uint pad0;
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a
@@ -117,7 +124,7 @@ typedef struct {
 #define DIM_PIXEL 0
 #define DIM_LENS 2
 #define DIM_PATH_START 4
-#define DIMS_PER_BOUNCE 8
+#define DIMS_PER_BOUNCE 8 /* technique coin, light pick (2), light point (2), BSDF (2), RR */
 
 #ifndef __OPENCL_C_VERSION__
 } /* namespace pathcl */

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "shared_types.h"
 
 namespace {
 
@@ -114,6 +116,13 @@ int main(int argc, char** argv)
         ->check(CLI::Range(0u, 1u << 16));
     render->add_option("--seed", opt.seed, "random seed (same seed, scene, options: same image)")->capture_default_str();
     render->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
+    const std::map<std::string, std::uint32_t> strategies = {{"bsdf", STRATEGY_BSDF},
+                                                             {"nee", STRATEGY_NEE},
+                                                             {"one-sample", STRATEGY_ONE_SAMPLE},
+                                                             {"mis", STRATEGY_MIS}};
+    render->add_option("--strategy", opt.strategy, "light sampling: bsdf, nee, one-sample or mis")
+        ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
+        ->default_str("mis");
 
     app.add_subcommand("devices", "List every OpenCL platform and device with its index");
 
@@ -130,6 +139,9 @@ int main(int argc, char** argv)
     bench->add_option("--max-bounces", bench_opt.max_bounces, "scattering events per path")->capture_default_str();
     bench->add_option("--runs", bench_runs, "timed runs after one warm-up")->capture_default_str()->check(CLI::Range(1, 1000));
     bench->add_option("--device", bench_device, "OpenCL device index")->capture_default_str();
+    bench->add_option("--strategy", bench_opt.strategy, "light sampling: bsdf, nee, one-sample or mis")
+        ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
+        ->default_str("mis");
 
     CLI::App* compare = app.add_subcommand(
         "compare", "Statistically compare two EXR renders (per-pixel, tile and image z-tests); exit 1 if they differ");
@@ -140,6 +152,10 @@ int main(int argc, char** argv)
     compare->add_option("--alpha", cmp.alpha, "family-wise significance level")->capture_default_str();
     compare->add_option("--max-fail-fraction", cmp.max_fail_fraction, "tolerated failing fraction per scale")
         ->capture_default_str();
+    bool welch = false;
+    compare->add_flag("--welch", welch,
+                      "separate variances, for renders by different estimators (default: pooled, for a render "
+                      "against a reference made by the same estimator)");
 
     try {
         app.parse(argc, argv);
@@ -157,8 +173,10 @@ int main(int argc, char** argv)
             bench_opt.devices = {bench_device};
             return run_bench(bench_scene, bench_opt, bench_runs);
         }
-        if (compare->parsed())
+        if (compare->parsed()) {
+            cmp.pooled_variance = !welch;
             return run_compare(cmp_a, cmp_b, cmp);
+        }
         return run_devices();
     } catch (const pathcl::Error& e) {
         std::cerr << "pathcl: error: " << e.what() << '\n';

@@ -1,5 +1,5 @@
 // Statistical comparison of two Monte Carlo renders (the Mitsuba 3 render-test method):
-// two-sided z-tests of the pixel means (pooled per-pixel variance, as in Student's t-test),
+// two-sided z-tests of the pixel means (pooled or separate variances, see CompareOptions),
 // with a Šidák-corrected threshold, at three
 // scales: every pixel and channel, block x block tiles (more power against small biases),
 // and the whole image per channel. A scale passes when at most `max_fail_fraction` of its
@@ -17,6 +17,16 @@ struct CompareOptions {
     double alpha = 0.01;              // family-wise false-alarm rate per scale
     double max_fail_fraction = 0.01;  // tolerated failing fraction (heavy-tailed estimates)
     int block = 8;
+    // Pooled per-pixel variance (the default) is right for a render against a reference
+    // made by the same estimator: under the null hypothesis both sample one distribution,
+    // and the high-spp reference fixes the low-spp render's underestimated variance.
+    // Renders by different estimators (light-sampling strategies, samplers) share only
+    // the mean: compare them with separate (Welch) variances.
+    bool pooled_variance = true;
+    // Judge the per-pixel scale too. Turn off only where single pixels cannot be near
+    // normal at the spp used (BSDF-only sampling of a small light: most pixels miss it);
+    // it is still reported.
+    bool judge_pixels = true;
 };
 
 struct CompareScale {

@@ -6,6 +6,7 @@
 #include "cl/cl_runtime.h"
 #include "common/error.h"
 #include "render/device_scene.h"
+#include "shared_types.h"
 
 namespace pathcl {
 namespace {
@@ -52,6 +53,8 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
         throw Error("--spp must be at least 1");
     if (opt.devices.empty())
         throw Error("no device selected");
+    if (opt.strategy > STRATEGY_MIS)
+        throw Error("unknown light-sampling strategy " + std::to_string(opt.strategy));
 
     RenderResult result;
     RenderStats& stats = result.stats;
@@ -125,6 +128,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             frame.seed = opt.seed;
             frame.max_bounces = opt.max_bounces;
             frame.light_count = static_cast<pcl_uint>(ds.lights.size());
+            frame.strategy = opt.strategy;
             dr.camera_kernel.setArg(2, frame);
             dr.path_kernel.setArg(8, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);

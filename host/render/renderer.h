@@ -17,6 +17,7 @@ struct RenderOptions {
     std::uint32_t spp = 64;
     std::uint32_t max_bounces = 8; // scattering events: 0 = emission only, 1 = direct light
     std::uint32_t seed = 0;
+    std::uint32_t strategy = 3; // STRATEGY_MIS; see kernels/shared_types.h
     std::vector<int> devices{0};
     std::string extra_build_options; // appended to the feature defines (tests, opt-ins)
 };
