@@ -124,7 +124,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         SamplerState sampler = sampler_start(pixel, frame.sample_index, frame.seed, dims + DIM_TECHNIQUE);
         bool technique_light = sampler_get_1d(&sampler) < 0.5f; /* used by one-sample only */
 
-#ifdef PATHCL_HAS_AREA_LIGHTS
+#ifdef PATHCL_HAS_LIGHTS
         /* Next event estimation: one shadow ray to a point on a light. */
         bool sample_light = frame.light_count > 0u && frame.strategy != STRATEGY_BSDF &&
                             (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light);
@@ -132,16 +132,21 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
             sampler.dimension = dims + DIM_LIGHT;
             LightSample ls = light_sample(lights, frame.light_count, sp.p, &sampler);
             if (ls.pdf > 0.0f) {
-                float3 wi = normalize(ls.p - sp.p);
-                BsdfEval e = bsdf_eval(&m, &sp, wo, wi);
+                BsdfEval e = bsdf_eval(&m, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {
-                    float3 from = offset_ray_origin(sp.p, sp.p_error, sp.ng, wi);
-                    float3 to = offset_ray_origin(ls.p, ls.p_error, ls.n, -wi);
-                    Hit blocker = bvh_trace(nodes, triangles, from, to - from,
-                                            SHADOW_RAY_EXTENT, true);
+                    float3 from = offset_ray_origin(sp.p, sp.p_error, sp.ng, ls.wi);
+                    Hit blocker;
+                    if (ls.at_infinity) {
+                        blocker = bvh_trace(nodes, triangles, from, ls.wi, INFINITY, true);
+                    } else {
+                        float3 to = ls.delta ? ls.p : offset_ray_origin(ls.p, ls.p_error, ls.n, -ls.wi);
+                        blocker = bvh_trace(nodes, triangles, from, to - from, SHADOW_RAY_EXTENT, true);
+                    }
+                    /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
+                    float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
                     if (blocker.triangle < 0)
                         radiance += beta * e.f_cos * ls.radiance *
-                                    light_sample_factor(frame.strategy, technique_light, ls.pdf, e.pdf);
+                                    light_sample_factor(frame.strategy, technique_light, ls.pdf, bsdf_pdf);
                 }
             }
         }

@@ -1,14 +1,25 @@
 /* Light selection and sampling. Needs: shared_types.h, samplers.cl, geometry.cl.
  * Lights are picked in proportion to their emitted power through an alias table (O(1));
  * each light's selection probability is in radiance.w, which MIS needs for BSDF-found
- * hits on the light too. */
+ * hits on area lights too. Only the light types a scene has are compiled
+ * (PATHCL_HAS_*_LIGHTS). */
+
+#if defined(PATHCL_HAS_AREA_LIGHTS) || defined(PATHCL_HAS_POINT_LIGHTS) || \
+    defined(PATHCL_HAS_SPOT_LIGHTS) || defined(PATHCL_HAS_DIRECTIONAL_LIGHTS)
+#define PATHCL_HAS_LIGHTS
+#endif
 
 typedef struct {
-    float3 p;       /* point on the light */
-    float3 p_error;
-    float3 n;       /* light surface normal (front side) */
-    float3 radiance; /* emitted towards the shading point; 0 if facing away */
-    float pdf;       /* solid angle at the shading point, selection included; 0: none */
+    float3 p;        /* point on the light (position for point lights) */
+    float3 p_error;  /* rounding bound on p (0 for positions given exactly) */
+    float3 n;        /* area lights: surface normal on the emitting side */
+    float3 wi;       /* unit direction from the shading point towards the light */
+    float3 radiance; /* what arrives: area lights: radiance; delta lights: irradiance
+                      * at normal incidence (I / d^2, or E) */
+    float pdf;       /* solid angle for area lights, selection included; delta lights:
+                      * selection probability only; 0: no sample */
+    bool delta;      /* cannot be hit by a ray (point, spot, directional) */
+    bool at_infinity; /* directional: the shadow ray is unbounded */
 } LightSample;
 
 inline int light_pick(__global const Light* lights, uint count, float u_index, float u_alias)
@@ -26,15 +37,75 @@ inline float triangle_light_pdf(const Light* light, float dist, float cos_light)
     return light->radiance.w * dist * dist / (light->p0.w * cos_light);
 }
 
+/* Angular factor of a spot light for light leaving along unit direction `out`. */
+inline float spot_falloff(const Light* light, float3 out)
+{
+#ifdef PATHCL_HAS_SPOT_LIGHTS
+    float3 axis = light->p1.xyz;
+    float z = dot(out, axis);
+    if (light->type == LIGHT_SPOT) {
+        /* KHR_lights_punctual: t = clamp((cos - cos_outer) / max(0.001, cos_inner - cos_outer)) */
+        float t = clamp((z - light->p2.x) / fmax(0.001f, light->p2.y - light->p2.x), 0.0f, 1.0f);
+        return t * t;
+    }
+    if (light->type == LIGHT_RECT_SPOT) {
+        /* Inside the frustum |x/z| <= tan(hfov/2), |y/z| <= tan(vfov/2): full intensity. */
+        float3 right = light->p2.xyz;
+        float3 up = cross(right, axis);
+        if (!(z > 0.0f))
+            return 0.0f;
+        bool inside = fabs(dot(out, right)) <= light->p2.w * z && fabs(dot(out, up)) <= light->p1.w * z;
+        return inside ? 1.0f : 0.0f;
+    }
+#endif
+    return 1.0f;
+}
+
 inline LightSample light_sample(__global const Light* lights, uint count, float3 ref,
                                 SamplerState* sampler)
 {
     LightSample ls;
     ls.pdf = 0.0f;
+    ls.delta = false;
+    ls.at_infinity = false;
+    ls.p_error = (float3)(0.0f);
+    ls.radiance = (float3)(0.0f);
     float u_index = sampler_get_1d(sampler);
     float u_alias = sampler_get_1d(sampler);
     float2 u = sampler_get_2d(sampler);
     Light light = lights[light_pick(lights, count, u_index, u_alias)];
+
+#ifdef PATHCL_HAS_DIRECTIONAL_LIGHTS
+    if (light.type == LIGHT_DIRECTIONAL) {
+        ls.delta = true;
+        ls.at_infinity = true;
+        ls.wi = -light.p1.xyz;
+        ls.p = ref; /* unused */
+        ls.n = light.p1.xyz;
+        ls.radiance = light.radiance.xyz;
+        ls.pdf = light.radiance.w;
+        return ls;
+    }
+#endif
+#if defined(PATHCL_HAS_POINT_LIGHTS) || defined(PATHCL_HAS_SPOT_LIGHTS)
+    if (light.type == LIGHT_POINT || light.type == LIGHT_SPOT || light.type == LIGHT_RECT_SPOT) {
+        ls.delta = true;
+        ls.p = light.p0.xyz;
+        float3 to_light = ls.p - ref;
+        float d2 = dot(to_light, to_light);
+        if (!(d2 > 0.0f))
+            return ls;
+        ls.wi = to_light * rsqrt(d2);
+        ls.n = -ls.wi;
+        float falloff = spot_falloff(&light, -ls.wi);
+        if (!(falloff > 0.0f))
+            return ls;
+        ls.radiance = light.radiance.xyz * (falloff / d2);
+        ls.pdf = light.radiance.w;
+        return ls;
+    }
+#endif
+#ifdef PATHCL_HAS_AREA_LIGHTS
     /* Uniform point on the triangle (square-root parameterization). */
     float su = sqrt(u.x);
     float b1 = 1.0f - su;
@@ -46,8 +117,10 @@ inline LightSample light_sample(__global const Light* lights, uint count, float3
     float dist = length(to_light);
     if (!(dist > 0.0f))
         return ls;
-    float cos_light = -dot(to_light, ls.n) / dist;
+    ls.wi = to_light / dist;
+    float cos_light = -dot(ls.wi, ls.n);
     ls.pdf = triangle_light_pdf(&light, dist, cos_light);
     ls.radiance = (ls.pdf > 0.0f) ? light.radiance.xyz : (float3)(0.0f);
+#endif
     return ls;
 }

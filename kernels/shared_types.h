@@ -67,14 +67,25 @@ typedef struct {
 } Material;
 
 /* Light types */
-#define LIGHT_TRIANGLE 0
+#define LIGHT_TRIANGLE 0    /* an emissive triangle (area light) */
+#define LIGHT_POINT 1       /* KHR_lights_punctual point */
+#define LIGHT_SPOT 2        /* KHR_lights_punctual spot: cone with smooth falloff */
+#define LIGHT_RECT_SPOT 3   /* spot with extras hfov/vfov: rectangular frustum, hard edges */
+#define LIGHT_DIRECTIONAL 4 /* KHR_lights_punctual directional */
 
 /* A light, with its entry of the power-proportional alias table used to pick lights.
- * For LIGHT_TRIANGLE, p0..p2 are the world vertices and radiance is the emitted radiance.
- * 80 bytes. */
+ * 80 bytes. Fields by type:
+ *   TRIANGLE:    p0, p1, p2 = vertices (p0.w = area); radiance = emitted radiance
+ *   POINT:       p0 = position; radiance = intensity (W/sr)
+ *   SPOT:        p0 = position; p1 = axis (unit, the way light travels);
+ *                p2.x = cos(outer angle), p2.y = cos(inner angle); radiance = intensity
+ *   RECT_SPOT:   p0 = position; p1 = axis, p1.w = tan(vfov / 2);
+ *                p2 = right (unit, node +X), p2.w = tan(hfov / 2); radiance = intensity
+ *   DIRECTIONAL: p1 = direction light travels (unit); radiance = irradiance (W/m^2)
+ * radiance.w is the light's selection probability (pmf) for every type. */
 typedef struct {
     pcl_float4 p0, p1, p2;
-    pcl_float4 radiance; /* rgb; w: selection probability (pmf) of this light */
+    pcl_float4 radiance;
     pcl_int type;
     pcl_float alias_threshold; /* keep this light if u < threshold, else take alias */
     pcl_int alias;

@@ -185,6 +185,21 @@ TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
     }
 }
 
+TEST(Render, EachLightTypeSceneMatchesItsCommittedReference)
+{
+    // One scene per punctual light type (tools/make_scenes.sh), against its 8192-spp
+    // reference (tools/make_references.sh); zero NaN/Inf samples.
+    for (const char* name : {"cornell-box-point", "cornell-box-spot", "cornell-box-rect-spot", "cornell-box-directional"}) {
+        Scene scene = load_gltf(kSource + "/scenes/" + name + ".gltf");
+        RenderResult r = render(scene, cornell_test_options());
+        EXPECT_EQ(r.stats.bad_samples, 0u) << name;
+        Image ref = read_image(kSource + "/tests/references/" + name + "-64.exr");
+        CompareReport cmp = compare_images(r.image, ref);
+        std::cout << name << "\n" << cmp.summary();
+        EXPECT_TRUE(cmp.passed) << name << "\n" << cmp.summary();
+    }
+}
+
 TEST(Render, SameSeedGivesIdenticalImageOtherSeedDoesNot)
 {
     RenderOptions o;

@@ -10,7 +10,11 @@ Cornell box scenes. Walls are exactly Lambertian (metallic 0, KHR_materials_spec
 specularFactor 0). The camera is the measured pinhole: 35 mm focal length, 25 mm square
 film, at (278, 273, -800) looking along +z.
 
-Usage: python3 tools/make_cornell_box.py [OUT.gltf]   (no dependencies beyond Python 3)
+With --light KIND the ceiling light is replaced by a KHR_lights_punctual light of that
+kind (point, spot, rect-spot, directional) and the ceiling is closed: one test scene per
+light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh).
+
+Usage: python3 tools/make_cornell_box.py [--light KIND] [OUT.gltf]   (Python 3 only)
 """
 import base64, json, math, struct, sys
 
@@ -105,8 +109,50 @@ def lambertian(name, rgb):
             "metallicFactor": 0.0, "roughnessFactor": 1.0},
             "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
 
+# Punctual replacements for the ceiling light (radiometric: W/sr, or W/m^2 for directional).
+# Each hangs 10 cm below the light's place in the ceiling, pointing down, except the
+# directional light, which shines in through the open front at an angle.
+PUNCTUAL_LIGHTS = {
+    "point": {"type": "point", "color": [1.0, 0.85, 0.6], "intensity": 0.15},
+    "spot": {"type": "spot", "color": [1.0, 0.85, 0.6], "intensity": 1.5,
+             "spot": {"innerConeAngle": math.radians(25.0), "outerConeAngle": math.radians(40.0)}},
+    # KHR_lights_punctual requires "spot" for spot lights; pathcl ignores its angles when
+    # extras hfov/vfov are present. The outer angle is the frustum's half diagonal, so
+    # other viewers show a cone around the frustum.
+    "rect-spot": {"type": "spot", "color": [1.0, 0.85, 0.6], "intensity": 1.5,
+                  "spot": {"innerConeAngle": 0.0, "outerConeAngle": math.atan(math.hypot(
+                      math.tan(math.radians(35.0)), math.tan(math.radians(22.5))))},
+                  "extras": {"hfov": 70.0, "vfov": 45.0}},
+    "directional": {"type": "directional", "color": [1.0, 0.85, 0.6], "intensity": 3.0},
+}
+LOOK_DOWN = [-math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)]  # node -Z to world -Y
+
+def quat_from_to(a, b):
+    """Shortest-arc rotation (x, y, z, w) taking direction a to direction b."""
+    na, nb = math.sqrt(dot(a, a)), math.sqrt(dot(b, b))
+    a = tuple(x / na for x in a)
+    b = tuple(x / nb for x in b)
+    axis = cross(a, b)
+    w = 1.0 + dot(a, b)
+    n = math.sqrt(dot(axis, axis) + w * w)
+    return [axis[0] / n, axis[1] / n, axis[2] / n, w / n]
+
+def quat_rotate(q, v):
+    x, y, z, w = q
+    u = (x, y, z)
+    t = tuple(2.0 * c for c in cross(u, v))
+    return tuple(v[i] + w * t[i] + cross(u, t)[i] for i in range(3))
+
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "scenes/cornell-box.gltf"
+    args = sys.argv[1:]
+    light_kind = None
+    if len(args) >= 2 and args[0] == "--light":
+        light_kind = args[1]
+        if light_kind not in PUNCTUAL_LIGHTS:
+            sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
+        args = args[2:]
+    default_out = "scenes/cornell-box.gltf" if light_kind is None else f"scenes/cornell-box-{light_kind}.gltf"
+    out = args[0] if args else default_out
     materials = [
         lambertian("white", (0.725, 0.71, 0.68)),
         lambertian("red", (0.63, 0.065, 0.05)),
@@ -128,7 +174,22 @@ def main():
     b.add_mesh("left_wall_red", [oriented(LEFT_WALL, inside)], RED)
     b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], WHITE)
     b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
-    b.add_mesh("light", [oriented(LIGHT, (278, 0, 279.5))], LIGHT_M)  # faces down
+    extensions_used = ["KHR_materials_emissive_strength", "KHR_materials_specular"]
+    lights = []
+    if light_kind is None:
+        b.add_mesh("light", [oriented(LIGHT, (278, 0, 279.5))], LIGHT_M)  # faces down
+    else:
+        b.add_mesh("ceiling_closed", [oriented(LIGHT, (278, 0, 279.5))], WHITE)
+        lights.append(dict(PUNCTUAL_LIGHTS[light_kind], name=light_kind))
+        extensions_used.append("KHR_lights_punctual")
+        if light_kind == "directional":
+            # Into the box (+z) and down, through the open front, slightly sideways.
+            rot = quat_from_to((0.0, 0.0, -1.0), (0.15, -0.55, 1.0))
+            node = {"name": "light", "translation": [0.278, 0.4, -0.5], "rotation": rot}
+        else:
+            node = {"name": "light", "translation": [0.278, 0.4488, 0.2795], "rotation": LOOK_DOWN}
+        node["extensions"] = {"KHR_lights_punctual": {"light": 0}}
+        b.nodes.append(node)
 
     yfov = 2.0 * math.atan(12.5 / 35.0)
     # glTF cameras look along local -Z; a half turn about +Y makes that world +Z.
@@ -136,7 +197,7 @@ def main():
                     "rotation": [0.0, 1.0, 0.0, 0.0]})
     gltf = {
         "asset": {"version": "2.0", "generator": "pathcl tools/make_cornell_box.py"},
-        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
+        "extensionsUsed": extensions_used,
         "scene": 0,
         "scenes": [{"name": "cornell-box", "nodes": list(range(len(b.nodes)))}],
         "nodes": b.nodes, "meshes": b.meshes, "materials": materials,
@@ -146,6 +207,8 @@ def main():
         "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
                      + base64.b64encode(bytes(b.blob)).decode("ascii")}],
     }
+    if lights:
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
     with open(out, "w") as f:
         json.dump(gltf, f, indent=1)
         f.write("\n")

@@ -17,9 +17,10 @@ Install (pip only; the Debian python3 has no numpy):
 The glTF reader is our own (numpy only, no pathcl code) and covers what
 scenes/cornell-box.gltf uses: node TRS/matrix hierarchy, triangle primitives (mode 4)
 with float VEC3 POSITION and u8/u16/u32 indices, base64 data-URI or external buffers,
-baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, and the first
-perspective camera. Textures, normals, metallic/roughness and other extensions are
-ignored: every surface is a flat-shaded Lambertian `diffuse` BSDF.
+baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual
+point and directional lights, and the first perspective camera. Textures, normals,
+metallic/roughness and other extensions are ignored: every surface is a flat-shaded
+Lambertian `diffuse` BSDF.
 
 Conventions matched to pathcl:
   * --max-bounces B counts scattering events (B=0: emission only). Mitsuba's path
@@ -196,11 +197,21 @@ def material_params(doc, index):
 
 
 def load_scene(path):
-    """Returns (list of triangle primitives, camera) in world space."""
+    """Returns (triangle primitives, camera, punctual lights) in world space."""
     g = Gltf(path)
     doc = g.doc
-    prims, camera = [], None
+    prims, camera, lights = [], None, []
+    light_defs = doc.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
     for node, world in walk_nodes(doc):
+        light_ref = node.get("extensions", {}).get("KHR_lights_punctual")
+        if light_ref is not None:
+            ld = light_defs[light_ref["light"]]
+            if ld["type"] not in ("point", "directional"):
+                # Mitsuba's spot falloff is not glTF's t^2 one: no like-for-like reference.
+                raise ValueError(f"{path}: {ld['type']} lights have no Mitsuba equivalent here")
+            rgb = np.array(ld.get("color", [1.0, 1.0, 1.0]), np.float64) * ld.get("intensity", 1.0)
+            lights.append({"type": ld["type"], "rgb": rgb, "position": world[:3, 3].copy(),
+                           "direction": world[:3, :3] @ np.array([0.0, 0.0, -1.0])})
         if "camera" in node and camera is None:
             cam = doc["cameras"][node["camera"]]
             if cam.get("type") == "perspective":
@@ -230,7 +241,7 @@ def load_scene(path):
                           "emission": emit, "two_sided": two_sided})
     if camera is None:
         raise ValueError(f"{path}: no perspective camera node in the scene")
-    return prims, camera
+    return prims, camera, lights
 
 
 # ---------------------------------------------------------------------------------------
@@ -269,7 +280,17 @@ def camera_to_world(mi, camera):
                                           up=up.tolist())
 
 
-def build_scene(mi, prims, camera, width, height, spp, max_bounces):
+def make_light(mi, light):
+    """KHR_lights_punctual point (intensity, W/sr) and directional (irradiance, W/m^2):
+    Mitsuba's point and directional emitters take exactly these quantities."""
+    rgb = {"type": "rgb", "value": [float(c) for c in light["rgb"]]}
+    if light["type"] == "point":
+        return {"type": "point", "position": [float(c) for c in light["position"]], "intensity": rgb}
+    d = light["direction"] / np.linalg.norm(light["direction"])
+    return {"type": "directional", "direction": [float(c) for c in d], "irradiance": rgb}
+
+
+def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=()):
     scene = {
         "type": "scene",
         "integrator": {"type": "path", "max_depth": max_bounces + 1, "hide_emitters": False},
@@ -289,6 +310,8 @@ def build_scene(mi, prims, camera, width, height, spp, max_bounces):
     }
     for i, prim in enumerate(prims):
         scene[f"shape_{i:03d}"] = make_mesh(mi, prim)
+    for i, light in enumerate(lights):
+        scene[f"light_{i:03d}"] = make_light(mi, light)
     return mi.load_dict(scene)
 
 
@@ -342,9 +365,9 @@ def main():
         sys.exit(f"mitsuba_reference.py: {e}")
 
     variant = pick_variant(mi, args.variant)
-    prims, camera = load_scene(args.scene)
+    prims, camera, lights = load_scene(args.scene)
     scene = build_scene(mi, prims, camera, args.width, args.height, args.spp,
-                        args.max_bounces)
+                        args.max_bounces, lights)
     print(f"mitsuba {mi.__version__} variant {variant}, EXR via {backend}; "
           f"{len(prims)} primitives, {args.width}x{args.height}, "
           f"{args.runs} runs x {args.spp} spp, max_depth {args.max_bounces + 1}")

@@ -1,5 +1,6 @@
 #include "render/device_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -57,6 +58,68 @@ void build_light_alias_table(std::vector<Light>& lights, const std::vector<doubl
     }
 }
 
+namespace {
+
+double luminance(const glm::vec3& c)
+{
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// Solid angle a cone spot lights, weighted by the glTF falloff t^2:
+// 2 pi * integral over cos(theta) in [cos outer, 1] of t(cos)^2.
+double spot_weighted_solid_angle(double cos_inner, double cos_outer)
+{
+    const int steps = 4096;
+    double sum = 0.0, h = (1.0 - cos_outer) / steps;
+    for (int i = 0; i < steps; ++i) {
+        double c = cos_outer + (i + 0.5) * h;
+        double t = std::clamp((c - cos_outer) / std::max(0.001, cos_inner - cos_outer), 0.0, 1.0);
+        sum += t * t * h;
+    }
+    return 2.0 * std::numbers::pi * sum;
+}
+
+void add_punctual_lights(const Scene& scene, std::vector<Light>& lights, std::vector<double>& power)
+{
+    glm::vec3 lo, hi;
+    scene_bounds(scene, lo, hi);
+    double radius = scene.triangles.empty() ? 1.0 : 0.5 * glm::length(glm::dvec3(hi) - glm::dvec3(lo));
+    for (const SceneLight& sl : scene.lights) {
+        Light l{};
+        l.p0 = f4(sl.position);
+        l.p1 = f4(sl.direction);
+        l.radiance = f4(sl.intensity);
+        double lum = std::max(luminance(sl.intensity), 1e-12);
+        switch (sl.type) {
+        case SceneLight::Type::Point:
+            l.type = LIGHT_POINT;
+            power.push_back(4.0 * std::numbers::pi * lum);
+            break;
+        case SceneLight::Type::Spot:
+            l.type = LIGHT_SPOT;
+            l.p2 = {static_cast<float>(sl.cos_outer), static_cast<float>(sl.cos_inner), 0.0f, 0.0f};
+            power.push_back(lum * spot_weighted_solid_angle(sl.cos_inner, sl.cos_outer));
+            break;
+        case SceneLight::Type::RectSpot:
+            l.type = LIGHT_RECT_SPOT;
+            l.p1.w = static_cast<float>(sl.tan_half_v);
+            l.p2 = f4(sl.right, static_cast<float>(sl.tan_half_h));
+            // Solid angle of a rectangular frustum with half-angles a, b: 4 asin(sin a sin b).
+            power.push_back(lum * 4.0 *
+                            std::asin(std::sin(std::atan(sl.tan_half_h)) * std::sin(std::atan(sl.tan_half_v))));
+            break;
+        case SceneLight::Type::Directional:
+            l.type = LIGHT_DIRECTIONAL;
+            // Power through the scene's bounding disk (pbrt's convention).
+            power.push_back(lum * std::numbers::pi * radius * radius);
+            break;
+        }
+        lights.push_back(l);
+    }
+}
+
+} // namespace
+
 DeviceScene make_device_scene(const Scene& scene)
 {
     DeviceScene ds;
@@ -108,9 +171,9 @@ DeviceScene make_device_scene(const Scene& scene)
         sh.emitter = static_cast<pcl_int>(ds.lights.size());
         ds.lights.push_back(light);
         // Emitted power of a one-sided Lambertian emitter: pi * area * radiance (luminance-weighted).
-        double lum = 0.2126 * m.emission.x + 0.7152 * m.emission.y + 0.0722 * m.emission.z;
-        power.push_back(std::numbers::pi * area * std::max(lum, 1e-12));
+        power.push_back(std::numbers::pi * area * std::max(luminance(m.emission), 1e-12));
     }
+    add_punctual_lights(scene, ds.lights, power);
     build_light_alias_table(ds.lights, power);
     return ds;
 }

@@ -339,7 +339,7 @@ struct Importer {
     void run()
     {
         static const std::set<std::string> supported = {
-            "KHR_materials_emissive_strength", "KHR_materials_specular"};
+            "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_lights_punctual"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
@@ -384,6 +384,9 @@ struct Importer {
                                      what + " mesh " + std::to_string(node.mesh) + " primitive " +
                                          std::to_string(i));
             }
+            auto light_ext = node.extensions.find("KHR_lights_punctual");
+            if (light_ext != node.extensions.end() && light_ext->second.Has("light"))
+                import_light(light_ext->second.Get("light"), world, what);
             if (node.camera >= 0 && !have_camera) {
                 if (node.camera >= static_cast<int>(model.cameras.size()))
                     throw Error(source + ": " + what + ": camera " + std::to_string(node.camera) + " does not exist");
@@ -412,6 +415,8 @@ struct Importer {
             origin = 0.5 * (lo + hi);
         }
         finish_triangles(origin);
+        for (SceneLight& l : scene.lights)
+            l.position -= origin;
         scene.render_origin = origin;
         if (have_camera)
             scene.camera.position -= origin;
@@ -428,6 +433,61 @@ struct Importer {
         if (repaired_normals)
             warn(source + ": replaced " + std::to_string(repaired_normals) +
                  " zero-length or NaN normals by the geometric normal");
+    }
+
+    void import_light(const tinygltf::Value& index_value, const glm::dmat4& world, const std::string& what)
+    {
+        int index = index_value.IsNumber() ? static_cast<int>(index_value.GetNumberAsInt()) : -1;
+        if (index < 0 || index >= static_cast<int>(model.lights.size()))
+            throw Error(source + ": " + what + ": KHR_lights_punctual light " + std::to_string(index) +
+                        " does not exist");
+        const tinygltf::Light& l = model.lights[static_cast<std::size_t>(index)];
+        std::string name = what + ": light " + std::to_string(index);
+        SceneLight out;
+        out.name = l.name;
+        glm::dvec3 color(1.0);
+        if (l.color.size() == 3)
+            color = glm::dvec3(l.color[0], l.color[1], l.color[2]);
+        if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || color.x < 0.0 || color.y < 0.0 || color.z < 0.0)
+            throw Error(source + ": " + name + ": color and intensity must be finite and non-negative");
+        out.intensity = glm::vec3(color * l.intensity);
+        glm::dmat3 m3(world);
+        glm::dvec3 dir = m3 * glm::dvec3(0.0, 0.0, -1.0);
+        glm::dvec3 right = m3 * glm::dvec3(1.0, 0.0, 0.0);
+        if (!(glm::length(dir) > 0.0))
+            throw Error(source + ": " + name + ": the node transform is degenerate");
+        out.direction = glm::normalize(dir);
+        right -= glm::dot(right, out.direction) * out.direction; // orthonormal frame even under shear
+        out.right = glm::length(right) > 0.0 ? glm::normalize(right) : glm::dvec3(1.0, 0.0, 0.0);
+        out.position = glm::dvec3(world[3]);
+        if (l.type == "point") {
+            out.type = SceneLight::Type::Point;
+            if (l.extras.IsObject() && l.extras.Has("radius"))
+                warn(source + ": " + name + ": sphere lights (extras.radius) are not implemented yet; rendered as a "
+                                            "point light");
+        } else if (l.type == "spot") {
+            double h = number_or(l.extras, "hfov", -1.0), v = number_or(l.extras, "vfov", -1.0);
+            if (h >= 0.0 || v >= 0.0) {
+                if (!(h > 0.0 && h < 180.0 && v > 0.0 && v < 180.0))
+                    throw Error(source + ": " + name + ": extras hfov and vfov must both be in (0, 180) degrees");
+                out.type = SceneLight::Type::RectSpot;
+                out.tan_half_h = std::tan(0.5 * h * std::numbers::pi / 180.0);
+                out.tan_half_v = std::tan(0.5 * v * std::numbers::pi / 180.0);
+            } else {
+                double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
+                if (!(inner >= 0.0 && outer > 0.0 && outer <= 0.5 * std::numbers::pi && inner < outer))
+                    throw Error(source + ": " + name +
+                                ": spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
+                out.type = SceneLight::Type::Spot;
+                out.cos_inner = std::cos(inner);
+                out.cos_outer = std::cos(outer);
+            }
+        } else if (l.type == "directional") {
+            out.type = SceneLight::Type::Directional;
+        } else {
+            throw Error(source + ": " + name + ": unknown light type '" + l.type + "'");
+        }
+        scene.lights.push_back(out);
     }
 
     void import_camera(const tinygltf::Camera& cam, const glm::dmat4& world, const std::string& what)

@@ -10,6 +10,12 @@ std::string SceneFeatures::build_defines() const
     std::string d;
     if (area_lights)
         d += " -DPATHCL_HAS_AREA_LIGHTS";
+    if (point_lights)
+        d += " -DPATHCL_HAS_POINT_LIGHTS";
+    if (spot_lights)
+        d += " -DPATHCL_HAS_SPOT_LIGHTS";
+    if (directional_lights)
+        d += " -DPATHCL_HAS_DIRECTIONAL_LIGHTS";
     if (lambertian)
         d += " -DPATHCL_HAS_LAMBERTIAN";
     return d;
@@ -22,6 +28,11 @@ SceneFeatures scene_features(const Scene& scene)
         const SceneMaterial& m = scene.materials[static_cast<std::size_t>(t.material)];
         f.area_lights = f.area_lights || m.emits();
         f.lambertian = true; // every material has a diffuse lobe for now
+    }
+    for (const SceneLight& l : scene.lights) {
+        f.point_lights = f.point_lights || l.type == SceneLight::Type::Point;
+        f.spot_lights = f.spot_lights || l.type == SceneLight::Type::Spot || l.type == SceneLight::Type::RectSpot;
+        f.directional_lights = f.directional_lights || l.type == SceneLight::Type::Directional;
     }
     return f;
 }

@@ -31,6 +31,19 @@ struct SceneTriangle {
     std::int32_t material = 0;
 };
 
+// A KHR_lights_punctual light (see ../shared/CONVENTIONS.md for units).
+struct SceneLight {
+    enum class Type { Point, Spot, RectSpot, Directional };
+    Type type = Type::Point;
+    glm::dvec3 position{0.0};          // render space (not used by Directional)
+    glm::dvec3 direction{0.0, 0.0, -1.0}; // unit, the way light travels (node -Z)
+    glm::dvec3 right{1.0, 0.0, 0.0};   // unit, node +X, orthogonal to direction
+    glm::vec3 intensity{1.0f};         // color x intensity: W/sr, or W/m^2 (Directional)
+    double cos_inner = 1.0, cos_outer = 0.0; // Spot
+    double tan_half_h = 1.0, tan_half_v = 1.0; // RectSpot
+    std::string name;
+};
+
 struct SceneCamera {
     // Render-space position and world-space frame (unit vectors): looks along forward.
     glm::dvec3 position{0.0};
@@ -44,6 +57,7 @@ struct SceneCamera {
 struct Scene {
     std::vector<SceneTriangle> triangles;
     std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
+    std::vector<SceneLight> lights; // punctual lights; emissive triangles are area lights
     SceneCamera camera;
     std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
     glm::dvec3 render_origin{0.0};      // world position of the render-space origin
@@ -53,6 +67,9 @@ struct Scene {
 // for what it uses.
 struct SceneFeatures {
     bool area_lights = false;
+    bool point_lights = false; // point
+    bool spot_lights = false;  // cone and rectangular spots
+    bool directional_lights = false;
     bool lambertian = false;
 
     std::string build_defines() const;

@@ -1,5 +1,6 @@
 #include "support/gltf_builder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -116,6 +117,41 @@ int GltfBuilder::add_perspective_camera(double yfov)
     cam.perspective.znear = 0.01;
     model.cameras.push_back(cam);
     return static_cast<int>(model.cameras.size()) - 1;
+}
+
+int GltfBuilder::add_light(const std::string& type, const glm::vec3& color, double intensity, double inner_cone,
+                           double outer_cone, const tinygltf::Value& extras)
+{
+    tinygltf::Light l;
+    l.type = type;
+    l.color = {color.x, color.y, color.z};
+    l.intensity = intensity;
+    l.spot.innerConeAngle = inner_cone;
+    l.spot.outerConeAngle = outer_cone;
+    l.extras = extras;
+    model.lights.push_back(l);
+    if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_lights_punctual") ==
+        model.extensionsUsed.end())
+        model.extensionsUsed.push_back("KHR_lights_punctual");
+    return static_cast<int>(model.lights.size()) - 1;
+}
+
+int GltfBuilder::add_light_node(int light, const std::vector<double>& translation, const std::vector<double>& rotation)
+{
+    int node = add_node(-1, {}, translation, rotation);
+    tinygltf::Value::Object ext;
+    ext["light"] = tinygltf::Value(light);
+    model.nodes[static_cast<std::size_t>(node)].extensions["KHR_lights_punctual"] = tinygltf::Value(ext);
+    add_root(node);
+    return node;
+}
+
+int GltfBuilder::add_camera_node(int camera, const std::vector<double>& translation, const std::vector<double>& rotation)
+{
+    int node = add_node(-1, {}, translation, rotation);
+    model.nodes[static_cast<std::size_t>(node)].camera = camera;
+    add_root(node);
+    return node;
 }
 
 void GltfBuilder::add_root(int node)

@@ -33,6 +33,12 @@ public:
                  const std::vector<double>& translation = {}, const std::vector<double>& rotation = {},
                  const std::vector<double>& scale = {});
     int add_perspective_camera(double yfov);
+    // A KHR_lights_punctual light ("point", "spot", "directional"); returns its index.
+    int add_light(const std::string& type, const glm::vec3& color, double intensity, double inner_cone = 0.0,
+                  double outer_cone = 0.7853981634, const tinygltf::Value& extras = {});
+    // A root node carrying light `light` (or camera `camera`) with a TRS transform.
+    int add_light_node(int light, const std::vector<double>& translation, const std::vector<double>& rotation = {});
+    int add_camera_node(int camera, const std::vector<double>& translation, const std::vector<double>& rotation = {});
     void add_root(int node);
 
     // A UV sphere (stacks x slices) of the given radius; normals point inward when

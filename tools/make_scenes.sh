@@ -1,0 +1,8 @@
+#!/bin/sh
+# Regenerates every scene in scenes/ from the project's own tools.
+set -eu
+cd "$(dirname "$0")/.."
+python3 tools/make_cornell_box.py scenes/cornell-box.gltf
+for light in point spot rect-spot directional; do
+    python3 tools/make_cornell_box.py --light "$light"
+done
