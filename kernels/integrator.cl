@@ -94,6 +94,24 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 
     for (uint depth = 0;; ++depth) {
         Hit hit = bvh_trace(nodes, triangles, origin, dir, INFINITY, false);
+#ifdef PATHCL_HAS_SPHERE_LIGHTS
+        /* Sphere lights are outside the BVH: the nearer of the two hits wins. They emit
+         * outwards only, and their surface does not reflect: the path ends there. */
+        float t_sphere;
+        bool sphere_from_outside;
+        int sphere = closest_sphere_light(lights, frame.sphere_count, origin, dir, hit.t, &t_sphere,
+                                          &sphere_from_outside);
+        if (sphere >= 0) {
+            if (sphere_from_outside) {
+                Light light = lights[sphere];
+                float w = prev_delta ? 1.0f
+                                     : bsdf_hit_weight(frame.strategy, prev_technique_bsdf, prev_bsdf_pdf,
+                                                       sphere_light_pdf(&light, origin));
+                radiance += beta * light.radiance.xyz * w;
+            }
+            break;
+        }
+#endif
         if (hit.triangle < 0)
             break; /* escaped: no environment yet */
         float3 wo = -dir;
@@ -134,17 +152,27 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
             if (ls.pdf > 0.0f) {
                 BsdfEval e = bsdf_eval(&m, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {
+                    /* The shadow ray's segment: unbounded towards a directional light,
+                     * else up to just short of the light point (offset off an area
+                     * light's surface so the light itself never blocks). */
                     float3 from = offset_ray_origin(sp.p, sp.p_error, sp.ng, ls.wi);
-                    Hit blocker;
-                    if (ls.at_infinity) {
-                        blocker = bvh_trace(nodes, triangles, from, ls.wi, INFINITY, true);
-                    } else {
+                    float3 shadow_dir = ls.wi;
+                    float shadow_t_max = INFINITY;
+                    if (!ls.at_infinity) {
                         float3 to = ls.delta ? ls.p : offset_ray_origin(ls.p, ls.p_error, ls.n, -ls.wi);
-                        blocker = bvh_trace(nodes, triangles, from, to - from, SHADOW_RAY_EXTENT, true);
+                        shadow_dir = to - from;
+                        shadow_t_max = SHADOW_RAY_EXTENT;
                     }
+                    bool blocked = bvh_trace(nodes, triangles, from, shadow_dir, shadow_t_max, true).triangle >= 0;
+#ifdef PATHCL_HAS_SPHERE_LIGHTS
+                    float t_sphere_shadow;
+                    bool unused_side;
+                    blocked = blocked || closest_sphere_light(lights, frame.sphere_count, from, shadow_dir, shadow_t_max,
+                                                              &t_sphere_shadow, &unused_side) >= 0;
+#endif
                     /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
                     float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
-                    if (blocker.triangle < 0)
+                    if (!blocked)
                         radiance += beta * e.f_cos * ls.radiance *
                                     light_sample_factor(frame.strategy, technique_light, ls.pdf, bsdf_pdf);
                 }

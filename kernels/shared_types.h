@@ -72,6 +72,7 @@ typedef struct {
 #define LIGHT_SPOT 2        /* KHR_lights_punctual spot: cone with smooth falloff */
 #define LIGHT_RECT_SPOT 3   /* spot with extras hfov/vfov: rectangular frustum, hard edges */
 #define LIGHT_DIRECTIONAL 4 /* KHR_lights_punctual directional */
+#define LIGHT_SPHERE 5      /* point light with extras.radius: uniform outward radiance */
 
 /* A light, with its entry of the power-proportional alias table used to pick lights.
  * 80 bytes. Fields by type:
@@ -82,6 +83,9 @@ typedef struct {
  *   RECT_SPOT:   p0 = position; p1 = axis, p1.w = tan(vfov / 2);
  *                p2 = right (unit, node +X), p2.w = tan(hfov / 2); radiance = intensity
  *   DIRECTIONAL: p1 = direction light travels (unit); radiance = irradiance (W/m^2)
+ *   SPHERE:      p0 = centre, p0.w = radius; radiance = emitted radiance I / (pi r^2)
+ * Sphere lights come first in the light array (frame.sphere_count of them): rays test
+ * them directly, outside the BVH.
  * radiance.w is the light's selection probability (pmf) for every type. */
 typedef struct {
     pcl_float4 p0, p1, p2;
@@ -120,7 +124,7 @@ typedef struct {
     pcl_uint max_bounces;
     pcl_uint light_count;
     pcl_uint strategy;
-    pcl_uint pad0;
+    pcl_uint sphere_count; /* lights[0 .. sphere_count) are spheres */
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

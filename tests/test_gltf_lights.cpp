@@ -52,6 +52,20 @@ TEST(GltfLights, SpotWithHfovVfovExtrasIsRectangular)
     EXPECT_NEAR(glm::length(s.lights[0].right - glm::dvec3(1, 0, 0)), 0.0, 1e-12);
 }
 
+TEST(GltfLights, PointWithRadiusIsASphereScaledWithItsNode)
+{
+    test::GltfBuilder b;
+    tinygltf::Value::Object extras;
+    extras["radius"] = tinygltf::Value(0.5);
+    int light = b.add_light("point", glm::vec3(1.0f), 2.0, 0.0, 0.5, tinygltf::Value(extras));
+    int node = b.add_light_node(light, {0, 0, 0});
+    b.model.nodes[static_cast<std::size_t>(node)].scale = {3.0, 3.0, 3.0};
+    Scene s = import_gltf(b.model, "sphere.gltf");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, SceneLight::Type::Sphere);
+    EXPECT_NEAR(s.lights[0].radius, 1.5, 1e-12);
+}
+
 TEST(GltfLights, BadLightDataIsAnErrorNamingTheFile)
 {
     auto error_of = [](test::GltfBuilder b) {
@@ -76,6 +90,13 @@ TEST(GltfLights, BadLightDataIsAnErrorNamingTheFile)
         test::GltfBuilder b;
         b.add_light_node(b.add_light("point", glm::vec3(1.0f), -2.0), {0, 0, 0});
         EXPECT_NE(error_of(b).find("non-negative"), std::string::npos) << error_of(b);
+    }
+    {
+        test::GltfBuilder b;
+        tinygltf::Value::Object extras;
+        extras["radius"] = tinygltf::Value(-1.0);
+        b.add_light_node(b.add_light("point", glm::vec3(1.0f), 1.0, 0.0, 0.5, tinygltf::Value(extras)), {0, 0, 0});
+        EXPECT_NE(error_of(b).find("radius must be a positive number"), std::string::npos) << error_of(b);
     }
     {
         test::GltfBuilder b;

@@ -149,6 +149,68 @@ TEST(SpotLight, RectangularFrustumHasHardEdges)
     }
 }
 
+// A point light with extras.radius: a sphere of radius r.
+int add_sphere_light(test::GltfBuilder& b, double intensity, double radius, const std::vector<double>& at)
+{
+    tinygltf::Value::Object extras;
+    extras["radius"] = tinygltf::Value(radius);
+    return b.add_light_node(b.add_light("point", glm::vec3(1.0f), intensity, 0.0, 0.5, tinygltf::Value(extras)), at);
+}
+
+TEST(SphereLight, IrradianceEqualsThePointLightsForEveryStrategy)
+{
+    // A uniformly radiant sphere wholly above the horizon gives E = I cos(theta) / d^2,
+    // exactly a point light's, whatever its radius. It hangs beside the camera's view.
+    // bsdf finds it by chance: more samples.
+    const double d2 = 0.6 * 0.6 + 1.0, expected = kRho / kPi * 2.0 / d2 / std::sqrt(d2);
+    for (std::uint32_t strategy : {STRATEGY_BSDF, STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS}) {
+        test::GltfBuilder b;
+        add_sphere_light(b, 2.0, 0.2, {0.6, 1.0, 0.0});
+        Measurement m = radiance_at(b, 0.0, 0.0, 1.0, strategy, strategy == STRATEGY_BSDF ? 4096 : 256);
+        EXPECT_GT(m.stderr_, 0.0);
+        EXPECT_LT(m.stderr_, 0.02 * expected) << "too noisy to test, strategy " << strategy;
+        expect_radiance(m, expected, "strategy " + std::to_string(strategy));
+    }
+}
+
+TEST(SphereLight, SeenDirectlyItHasRadianceIntensityOverPiRSquared)
+{
+    test::GltfBuilder b;
+    add_sphere_light(b, 3.0, 0.5, {0.0, 0.0, -4.0});
+    b.add_camera_node(b.add_perspective_camera(0.05), {0.0, 0.0, 0.0});
+    RenderOptions o;
+    o.width = o.height = 4;
+    o.spp = 4;
+    RenderResult r = render(import_gltf(b.model, "sphere-view"), o);
+    for (float v : r.image.rgb)
+        EXPECT_NEAR(v, 3.0 / (kPi * 0.25), 1e-5);
+}
+
+TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
+{
+    {   // the camera inside the sphere sees its back side: black, finite
+        test::GltfBuilder b;
+        add_sphere_light(b, 1.0, 2.0, {0.0, 0.0, 0.0});
+        b.add_camera_node(b.add_perspective_camera(1.0), {0.0, 0.0, 0.0});
+        RenderOptions o;
+        o.width = o.height = 8;
+        o.spp = 4;
+        RenderResult r = render(import_gltf(b.model, "inside-sphere"), o);
+        EXPECT_EQ(r.stats.bad_samples, 0u);
+        for (float v : r.image.rgb)
+            EXPECT_EQ(v, 0.0f);
+    }
+    {   // a sphere resting on the plane: the contact point and its surroundings
+        test::GltfBuilder b;
+        add_sphere_light(b, 1.0, 0.25, {0.0, 0.25, 0.0});
+        for (double x : {0.0, 1e-4, 0.3}) {
+            Measurement m = radiance_at(b, x, 0.0, 1.0, STRATEGY_MIS, 16);
+            EXPECT_EQ(m.bad, 0u) << "x " << x;
+            EXPECT_TRUE(std::isfinite(m.mean)) << "x " << x;
+        }
+    }
+}
+
 // Node rotation that makes -Z point along (sin a, -cos a, 0): down and towards +X.
 std::vector<double> slanted_down(double a)
 {

@@ -11,7 +11,7 @@ specularFactor 0). The camera is the measured pinhole: 35 mm focal length, 25 mm
 film, at (278, 273, -800) looking along +z.
 
 With --light KIND the ceiling light is replaced by a KHR_lights_punctual light of that
-kind (point, spot, rect-spot, directional) and the ceiling is closed: one test scene per
+kind (point, sphere, spot, rect-spot, directional) and the ceiling is closed: one test scene per
 light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh).
 
 Usage: python3 tools/make_cornell_box.py [--light KIND] [OUT.gltf]   (Python 3 only)
@@ -114,6 +114,8 @@ def lambertian(name, rgb):
 # directional light, which shines in through the open front at an angle.
 PUNCTUAL_LIGHTS = {
     "point": {"type": "point", "color": [1.0, 0.85, 0.6], "intensity": 0.15},
+    # A point light with extras.radius is a sphere light (uniform radiance I / (pi r^2)).
+    "sphere": {"type": "point", "color": [1.0, 0.85, 0.6], "intensity": 0.15, "extras": {"radius": 0.06}},
     "spot": {"type": "spot", "color": [1.0, 0.85, 0.6], "intensity": 1.5,
              "spot": {"innerConeAngle": math.radians(25.0), "outerConeAngle": math.radians(40.0)}},
     # KHR_lights_punctual requires "spot" for spot lights; pathcl ignores its angles when

@@ -3,6 +3,6 @@
 set -eu
 cd "$(dirname "$0")/.."
 python3 tools/make_cornell_box.py scenes/cornell-box.gltf
-for light in point spot rect-spot directional; do
+for light in point sphere spot rect-spot directional; do
     python3 tools/make_cornell_box.py --light "$light"
 done

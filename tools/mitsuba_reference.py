@@ -18,7 +18,7 @@ The glTF reader is our own (numpy only, no pathcl code) and covers what
 scenes/cornell-box.gltf uses: node TRS/matrix hierarchy, triangle primitives (mode 4)
 with float VEC3 POSITION and u8/u16/u32 indices, base64 data-URI or external buffers,
 baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual
-point and directional lights, and the first perspective camera. Textures, normals,
+point (and sphere) and directional lights, and the first perspective camera. Textures, normals,
 metallic/roughness and other extensions are ignored: every surface is a flat-shaded
 Lambertian `diffuse` BSDF.
 
@@ -210,7 +210,11 @@ def load_scene(path):
                 # Mitsuba's spot falloff is not glTF's t^2 one: no like-for-like reference.
                 raise ValueError(f"{path}: {ld['type']} lights have no Mitsuba equivalent here")
             rgb = np.array(ld.get("color", [1.0, 1.0, 1.0]), np.float64) * ld.get("intensity", 1.0)
-            lights.append({"type": ld["type"], "rgb": rgb, "position": world[:3, 3].copy(),
+            radius = ld.get("extras", {}).get("radius")
+            kind = "sphere" if ld["type"] == "point" and radius else ld["type"]
+            if radius:  # the radius scales with the node, like pathcl's
+                radius *= abs(np.linalg.det(world[:3, :3])) ** (1.0 / 3.0)
+            lights.append({"type": kind, "rgb": rgb, "position": world[:3, 3].copy(), "radius": radius,
                            "direction": world[:3, :3] @ np.array([0.0, 0.0, -1.0])})
         if "camera" in node and camera is None:
             cam = doc["cameras"][node["camera"]]
@@ -282,8 +286,16 @@ def camera_to_world(mi, camera):
 
 def make_light(mi, light):
     """KHR_lights_punctual point (intensity, W/sr) and directional (irradiance, W/m^2):
-    Mitsuba's point and directional emitters take exactly these quantities."""
+    Mitsuba's point and directional emitters take exactly these quantities. A point light
+    with extras.radius is pathcl's sphere light."""
     rgb = {"type": "rgb", "value": [float(c) for c in light["rgb"]]}
+    if light["type"] == "sphere":
+        # pathcl: a sphere of uniform outward radiance I / (pi r^2) that does not reflect.
+        r = float(light["radius"])
+        radiance = [float(c) / (math.pi * r * r) for c in light["rgb"]]
+        return {"type": "sphere", "center": [float(c) for c in light["position"]], "radius": r,
+                "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [0.0, 0.0, 0.0]}},
+                "emitter": {"type": "area", "radiance": {"type": "rgb", "value": radiance}}}
     if light["type"] == "point":
         return {"type": "point", "position": [float(c) for c in light["position"]], "intensity": rgb}
     d = light["direction"] / np.linalg.norm(light["direction"])

@@ -113,6 +113,8 @@ void add_punctual_lights(const Scene& scene, std::vector<Light>& lights, std::ve
             // Power through the scene's bounding disk (pbrt's convention).
             power.push_back(lum * std::numbers::pi * radius * radius);
             break;
+        case SceneLight::Type::Sphere:
+            continue; // added first, by make_device_scene
         }
         lights.push_back(l);
     }
@@ -152,6 +154,19 @@ DeviceScene make_device_scene(const Scene& scene)
     ds.triangles.resize(n);
     ds.shading.resize(n);
     std::vector<double> power;
+    // Sphere lights first: the kernels test lights[0 .. sphere_count) against every ray.
+    for (const SceneLight& sl : scene.lights) {
+        if (sl.type != SceneLight::Type::Sphere)
+            continue;
+        Light l{};
+        l.type = LIGHT_SPHERE;
+        l.p0 = f4(sl.position, static_cast<float>(sl.radius));
+        // Uniform outward radiance with the point light's total power 4 pi I.
+        l.radiance = f4(sl.intensity / static_cast<float>(std::numbers::pi * sl.radius * sl.radius));
+        ds.lights.push_back(l);
+        power.push_back(4.0 * std::numbers::pi * std::max(luminance(sl.intensity), 1e-12));
+    }
+    ds.sphere_count = ds.lights.size();
     for (std::size_t i = 0; i < n; ++i) {
         const SceneTriangle& t = scene.triangles[bvh.triangle_order[i]];
         ds.triangles[i] = Triangle{f4(t.v[0]), f4(t.v[1]), f4(t.v[2])};

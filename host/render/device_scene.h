@@ -16,7 +16,8 @@ struct DeviceScene {
     std::vector<Triangle> triangles;
     std::vector<TriangleShading> shading;
     std::vector<Material> materials;
-    std::vector<Light> lights; // emissive triangles, selection by power
+    std::vector<Light> lights; // spheres, emissive triangles, punctual; selection by power
+    std::size_t sphere_count = 0; // lights[0 .. sphere_count) are sphere lights
     SceneFeatures features;
     Bvh bvh_stats; // depth and leaf figures (nodes moved into `nodes`)
     double bvh_build_seconds = 0.0;

@@ -129,6 +129,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             frame.max_bounces = opt.max_bounces;
             frame.light_count = static_cast<pcl_uint>(ds.lights.size());
             frame.strategy = opt.strategy;
+            frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
             dr.camera_kernel.setArg(2, frame);
             dr.path_kernel.setArg(8, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);

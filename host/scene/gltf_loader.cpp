@@ -462,9 +462,15 @@ struct Importer {
         out.position = glm::dvec3(world[3]);
         if (l.type == "point") {
             out.type = SceneLight::Type::Point;
-            if (l.extras.IsObject() && l.extras.Has("radius"))
-                warn(source + ": " + name + ": sphere lights (extras.radius) are not implemented yet; rendered as a "
-                                            "point light");
+            double radius = number_or(l.extras, "radius", 0.0);
+            if (l.extras.IsObject() && l.extras.Has("radius")) {
+                // The radius is in the node's units: scaled like the geometry around it.
+                double scale = std::cbrt(std::fabs(glm::determinant(m3)));
+                if (!(radius > 0.0) || !std::isfinite(radius * scale))
+                    throw Error(source + ": " + name + ": extras.radius must be a positive number");
+                out.type = SceneLight::Type::Sphere;
+                out.radius = radius * scale;
+            }
         } else if (l.type == "spot") {
             double h = number_or(l.extras, "hfov", -1.0), v = number_or(l.extras, "vfov", -1.0);
             if (h >= 0.0 || v >= 0.0) {

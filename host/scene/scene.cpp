@@ -16,6 +16,8 @@ std::string SceneFeatures::build_defines() const
         d += " -DPATHCL_HAS_SPOT_LIGHTS";
     if (directional_lights)
         d += " -DPATHCL_HAS_DIRECTIONAL_LIGHTS";
+    if (sphere_lights)
+        d += " -DPATHCL_HAS_SPHERE_LIGHTS";
     if (lambertian)
         d += " -DPATHCL_HAS_LAMBERTIAN";
     return d;
@@ -33,6 +35,7 @@ SceneFeatures scene_features(const Scene& scene)
         f.point_lights = f.point_lights || l.type == SceneLight::Type::Point;
         f.spot_lights = f.spot_lights || l.type == SceneLight::Type::Spot || l.type == SceneLight::Type::RectSpot;
         f.directional_lights = f.directional_lights || l.type == SceneLight::Type::Directional;
+        f.sphere_lights = f.sphere_lights || l.type == SceneLight::Type::Sphere;
     }
     return f;
 }

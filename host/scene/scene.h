@@ -33,7 +33,7 @@ struct SceneTriangle {
 
 // A KHR_lights_punctual light (see ../shared/CONVENTIONS.md for units).
 struct SceneLight {
-    enum class Type { Point, Spot, RectSpot, Directional };
+    enum class Type { Point, Spot, RectSpot, Directional, Sphere };
     Type type = Type::Point;
     glm::dvec3 position{0.0};          // render space (not used by Directional)
     glm::dvec3 direction{0.0, 0.0, -1.0}; // unit, the way light travels (node -Z)
@@ -41,6 +41,7 @@ struct SceneLight {
     glm::vec3 intensity{1.0f};         // color x intensity: W/sr, or W/m^2 (Directional)
     double cos_inner = 1.0, cos_outer = 0.0; // Spot
     double tan_half_h = 1.0, tan_half_v = 1.0; // RectSpot
+    double radius = 0.0;                       // Sphere
     std::string name;
 };
 
@@ -70,6 +71,7 @@ struct SceneFeatures {
     bool point_lights = false; // point
     bool spot_lights = false;  // cone and rectangular spots
     bool directional_lights = false;
+    bool sphere_lights = false;
     bool lambertian = false;
 
     std::string build_defines() const;

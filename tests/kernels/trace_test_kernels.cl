@@ -64,3 +64,15 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
     hit_triangle[i] = bvh_trace(nodes, triangles, o, d, INFINITY, false).triangle;
     source_triangle[i] = (int)t;
 }
+
+/* Light sampling through the real light_sample (kernels/lights.cl): one sample per
+ * work-item from `ref`; writes the direction, or a zero vector when there is no sample
+ * (the chi-square harness counts those as failures of the sampler), and the pdf. */
+__kernel void test_light_sample(__global const Light* lights, uint count, float4 ref, uint seed,
+                                __global float4* out)
+{
+    uint i = get_global_id(0);
+    SamplerState s = sampler_start(i, 0u, seed, 0u);
+    LightSample ls = light_sample(lights, count, ref.xyz, &s);
+    out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
+}

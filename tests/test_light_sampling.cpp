@@ -1,0 +1,146 @@
+// Light sampling against its pdf, through the kernels' own light_sample: chi-square tests
+// of the sampled directions (tests/support/chi_square.h) against an independent host pdf,
+// and the kernel's reported pdf against the same host pdf at the sampled directions.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "render/device_scene.h"
+#include "support/chi_square.h"
+#include "support/device_fixture.h"
+
+namespace pathcl {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kTests = 4; // chi-square tests in this file (Šidák correction)
+
+std::vector<pcl_float4> sample_lights(std::vector<Light> lights, glm::vec3 ref, std::size_t n)
+{
+    static cl::Program program = test::build_test_program(
+        "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
+    ClDevice& dev = test::test_device();
+    std::vector<double> power(lights.size(), 1.0);
+    build_light_alias_table(lights, power);
+    cl::Buffer lb(dev.context, CL_MEM_COPY_HOST_PTR, lights.size() * sizeof(Light), lights.data());
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Kernel k(program, "test_light_sample");
+    k.setArg(0, lb);
+    k.setArg(1, static_cast<cl_uint>(lights.size()));
+    k.setArg(2, pcl_float4{ref.x, ref.y, ref.z, 0.0f});
+    k.setArg(3, 1234u);
+    k.setArg(4, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<pcl_float4> result(n);
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), result.data());
+    return result;
+}
+
+// Checks the kernel's pdf against the host pdf at each sampled direction.
+void expect_kernel_pdf_matches(const std::vector<pcl_float4>& s, const std::function<double(const glm::dvec3&)>& pdf)
+{
+    std::size_t bad = 0;
+    for (const pcl_float4& v : s) {
+        if (v.w == 0.0f)
+            continue;
+        double host = pdf(glm::normalize(glm::dvec3(v.x, v.y, v.z)));
+        if (!(std::fabs(v.w - host) <= 1e-3 * host))
+            ++bad;
+    }
+    EXPECT_EQ(bad, 0u) << "samples whose kernel pdf differs from the host pdf by > 0.1%";
+}
+
+Light sphere_light(glm::vec3 centre, float radius)
+{
+    Light l{};
+    l.type = LIGHT_SPHERE;
+    l.p0 = {centre.x, centre.y, centre.z, radius};
+    l.radiance = {1, 1, 1, 1};
+    return l;
+}
+
+// Uniform over the cone the sphere subtends from ref.
+std::function<double(const glm::dvec3&)> sphere_cone_pdf(glm::dvec3 centre, double r, glm::dvec3 ref)
+{
+    glm::dvec3 axis = centre - ref;
+    double dc = glm::length(axis);
+    double cos_max = std::sqrt(1.0 - r * r / (dc * dc));
+    axis /= dc;
+    return [=](const glm::dvec3& w) {
+        return glm::dot(w, axis) >= cos_max ? 1.0 / (2.0 * kPi * (1.0 - cos_max)) : 0.0;
+    };
+}
+
+TEST(LightSampling, SphereFromOutsideIsUniformOverItsCone)
+{
+    glm::vec3 c(0.3f, 0.2f, 1.5f);
+    auto pdf = sphere_cone_pdf(c, 0.8, glm::dvec3(0.0));
+    auto s = sample_lights({sphere_light(c, 0.8f)}, glm::vec3(0.0f), 1000000);
+    test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
+    EXPECT_TRUE(r.passed) << r.summary();
+    expect_kernel_pdf_matches(s, pdf);
+}
+
+TEST(LightSampling, SphereFromJustOutsideItsSurface)
+{
+    // 1% above the surface the cone is almost a hemisphere.
+    glm::vec3 c(0.0f, 0.0f, 1.01f);
+    auto pdf = sphere_cone_pdf(c, 1.0, glm::dvec3(0.0));
+    auto s = sample_lights({sphere_light(c, 1.0f)}, glm::vec3(0.0f), 1000000);
+    test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
+    EXPECT_TRUE(r.passed) << r.summary();
+    expect_kernel_pdf_matches(s, pdf);
+}
+
+TEST(LightSampling, FromInsideASphereThereIsNoSample)
+{
+    auto s = sample_lights({sphere_light(glm::vec3(0.0f), 1.0f)}, glm::vec3(0.1f, 0.2f, 0.0f), 1000);
+    for (const pcl_float4& v : s)
+        ASSERT_EQ(v.w, 0.0f);
+}
+
+TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
+{
+    // Selection (equal power: pmf 1/3 each) times each light's own solid-angle pdf. A
+    // triangle facing away from ref contributes nothing and must never be sampled.
+    glm::vec3 a0(-1, -1, 2), a1(1, -1, 2), a2(0, 1, 2.5f);  // faces -z... towards ref? see below
+    glm::vec3 b0(1, 2, -1), b1(2, 2, 1), b2(1, 3, 0);
+    glm::vec3 sc(-1.5f, 0.0f, -1.0f);
+    auto tri = [](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
+        Light l{};
+        l.type = LIGHT_TRIANGLE;
+        l.p0 = {p0.x, p0.y, p0.z, 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0))};
+        l.p1 = {p1.x, p1.y, p1.z, 0};
+        l.p2 = {p2.x, p2.y, p2.z, 0};
+        l.radiance = {1, 1, 1, 1};
+        return l;
+    };
+    auto triangle_pdf = [](glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, const glm::dvec3& w) {
+        // Solid-angle pdf of uniform area sampling: t^2 / (A cos), front side only.
+        glm::dvec3 e1 = p1 - p0, e2 = p2 - p0, n = glm::cross(e1, e2);
+        double area = 0.5 * glm::length(n);
+        n = glm::normalize(n);
+        double denom = glm::dot(w, n);
+        if (!(denom < 0.0))
+            return 0.0; // facing away (emission leaves the front only)
+        double t = glm::dot(p0, n) / denom;
+        glm::dvec3 p = t * w;
+        glm::dvec3 c0 = glm::cross(p1 - p0, p - p0), c1 = glm::cross(p2 - p1, p - p1), c2 = glm::cross(p0 - p2, p - p2);
+        glm::dvec3 nn = glm::cross(e1, e2);
+        if (t <= 0.0 || glm::dot(c0, nn) < 0.0 || glm::dot(c1, nn) < 0.0 || glm::dot(c2, nn) < 0.0)
+            return 0.0;
+        return t * t / (area * -denom);
+    };
+    auto sphere = sphere_cone_pdf(sc, 0.5, glm::dvec3(0.0));
+    auto pdf = [&](const glm::dvec3& w) {
+        return (triangle_pdf(a0, a1, a2, w) + triangle_pdf(b0, b1, b2, w) + sphere(w)) / 3.0;
+    };
+    auto s = sample_lights({sphere_light(sc, 0.5f), tri(a0, a1, a2), tri(b0, b1, b2)}, glm::vec3(0.0f), 1000000);
+    test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
+    EXPECT_TRUE(r.passed) << r.summary();
+    EXPECT_LT(r.pdf_integral, 1.0) << "one triangle faces away, so some samples must fail";
+}
+
+} // namespace
+} // namespace pathcl
