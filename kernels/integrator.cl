@@ -74,9 +74,14 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                           __global const Triangle* triangles,
                           __global const TriangleShading* shading,
                           __global const Material* materials, __global const Light* lights,
-                          __global FilmPixel* film, __global uint* bad_samples,
-                          FrameParams frame)
+                          __global const float4* env_texels, __global const float* env_marginal,
+                          __global const float* env_conditional, __global FilmPixel* film,
+                          __global uint* bad_samples, FrameParams frame)
 {
+    EnvironmentBuffers env;
+    env.texels = env_texels;
+    env.marginal = env_marginal;
+    env.conditional = env_conditional;
     uint x = get_global_id(0);
     uint y = get_global_id(1);
     if (x >= frame.width || y >= frame.height)
@@ -112,8 +117,19 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
             break;
         }
 #endif
-        if (hit.triangle < 0)
-            break; /* escaped: no environment yet */
+        if (hit.triangle < 0) {
+#ifdef PATHCL_HAS_ENVIRONMENT
+            /* Escaped: the environment, weighted against light sampling of it. */
+            if (frame.environment >= 0) {
+                Light e = lights[frame.environment];
+                float w = prev_delta ? 1.0f
+                                     : bsdf_hit_weight(frame.strategy, prev_technique_bsdf, prev_bsdf_pdf,
+                                                       environment_pdf(&e, &env, dir));
+                radiance += beta * environment_radiance(&e, &env, dir) * w;
+            }
+#endif
+            break;
+        }
         float3 wo = -dir;
         SurfacePoint sp = surface_point(triangles, shading, hit, wo);
         Material m = materials[sp.material];
@@ -148,7 +164,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                             (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light);
         if (sample_light) {
             sampler.dimension = dims + DIM_LIGHT;
-            LightSample ls = light_sample(lights, frame.light_count, sp.p, &sampler);
+            LightSample ls = light_sample(lights, frame.light_count, &env, sp.p, &sampler);
             if (ls.pdf > 0.0f) {
                 BsdfEval e = bsdf_eval(&m, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {

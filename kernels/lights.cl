@@ -6,7 +6,7 @@
 
 #if defined(PATHCL_HAS_AREA_LIGHTS) || defined(PATHCL_HAS_POINT_LIGHTS) || \
     defined(PATHCL_HAS_SPOT_LIGHTS) || defined(PATHCL_HAS_DIRECTIONAL_LIGHTS) || \
-    defined(PATHCL_HAS_SPHERE_LIGHTS)
+    defined(PATHCL_HAS_SPHERE_LIGHTS) || defined(PATHCL_HAS_ENVIRONMENT)
 #define PATHCL_HAS_LIGHTS
 #endif
 
@@ -124,8 +124,8 @@ inline float spot_falloff(const Light* light, float3 out)
     return 1.0f;
 }
 
-inline LightSample light_sample(__global const Light* lights, uint count, float3 ref,
-                                SamplerState* sampler)
+inline LightSample light_sample(__global const Light* lights, uint count, const EnvironmentBuffers* env,
+                                float3 ref, SamplerState* sampler)
 {
     LightSample ls;
     ls.pdf = 0.0f;
@@ -138,6 +138,15 @@ inline LightSample light_sample(__global const Light* lights, uint count, float3
     float2 u = sampler_get_2d(sampler);
     Light light = lights[light_pick(lights, count, u_index, u_alias)];
 
+#ifdef PATHCL_HAS_ENVIRONMENT
+    if (light.type == LIGHT_ENVIRONMENT) {
+        ls.at_infinity = true;
+        ls.radiance = environment_sample(&light, env, u, &ls.wi, &ls.pdf);
+        ls.p = ref; /* unused */
+        ls.n = -ls.wi;
+        return ls;
+    }
+#endif
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
     if (light.type == LIGHT_SPHERE) {
         /* Uniform direction in the cone the sphere subtends (pbrt's sphere sampling). */

@@ -73,6 +73,7 @@ typedef struct {
 #define LIGHT_RECT_SPOT 3   /* spot with extras hfov/vfov: rectangular frustum, hard edges */
 #define LIGHT_DIRECTIONAL 4 /* KHR_lights_punctual directional */
 #define LIGHT_SPHERE 5      /* point light with extras.radius: uniform outward radiance */
+#define LIGHT_ENVIRONMENT 6 /* equirectangular map at infinity (at most one) */
 
 /* A light, with its entry of the power-proportional alias table used to pick lights.
  * 80 bytes. Fields by type:
@@ -84,6 +85,8 @@ typedef struct {
  *                p2 = right (unit, node +X), p2.w = tan(hfov / 2); radiance = intensity
  *   DIRECTIONAL: p1 = direction light travels (unit); radiance = irradiance (W/m^2)
  *   SPHERE:      p0 = centre, p0.w = radius; radiance = emitted radiance I / (pi r^2)
+ *   ENVIRONMENT: p0 = (width, height, cos(rotation), sin(rotation)); texels and the
+ *                sampling distribution are in the env_* buffers (environment.cl)
  * Sphere lights come first in the light array (frame.sphere_count of them): rays test
  * them directly, outside the BVH.
  * radiance.w is the light's selection probability (pmf) for every type. */
@@ -116,7 +119,7 @@ typedef struct {
 #define STRATEGY_ONE_SAMPLE 2 /* one of {light, BSDF} per bounce, mixture-pdf weight */
 #define STRATEGY_MIS 3        /* both, power heuristic */
 
-/* Per-pass constants: 32 bytes. */
+/* Per-pass constants: 48 bytes. */
 typedef struct {
     pcl_uint width, height;
     pcl_uint sample_index; /* index of this pass's sample within the pixel */
@@ -125,6 +128,8 @@ typedef struct {
     pcl_uint light_count;
     pcl_uint strategy;
     pcl_uint sphere_count; /* lights[0 .. sphere_count) are spheres */
+    pcl_int environment;   /* index of the environment light, -1 if none */
+    pcl_uint pad0, pad1, pad2;
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

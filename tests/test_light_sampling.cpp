@@ -30,7 +30,12 @@ std::vector<pcl_float4> sample_lights(std::vector<Light> lights, glm::vec3 ref, 
     k.setArg(1, static_cast<cl_uint>(lights.size()));
     k.setArg(2, pcl_float4{ref.x, ref.y, ref.z, 0.0f});
     k.setArg(3, 1234u);
-    k.setArg(4, out);
+    float dummy[4] = {0, 0, 0, 0};
+    cl::Buffer d1(dev.context, CL_MEM_COPY_HOST_PTR, sizeof dummy, dummy), d2(dev.context, CL_MEM_COPY_HOST_PTR, sizeof dummy, dummy);
+    k.setArg(4, d1);
+    k.setArg(5, d2);
+    k.setArg(6, d2);
+    k.setArg(7, out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<pcl_float4> result(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), result.data());

@@ -85,7 +85,9 @@ class Builder:
         for q in quads:
             base = len(positions)
             positions += [tuple(c * MM for c in v) for v in q]
-            indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+            for tri in ((0, 1, 2), (0, 2, 3)):
+                if len({q[k] for k in tri}) == 3:  # a quad collapsed to a triangle (a pole)
+                    indices += [base + k for k in tri]
         pos_bytes = b"".join(struct.pack("<3f", *p) for p in positions)
         idx_bytes = b"".join(struct.pack("<H", i) for i in indices)
         lo = [min(p[i] for p in positions) for i in range(3)]

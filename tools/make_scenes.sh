@@ -6,3 +6,4 @@ python3 tools/make_cornell_box.py scenes/cornell-box.gltf
 for light in point sphere spot rect-spot directional; do
     python3 tools/make_cornell_box.py --light "$light"
 done
+python3 tools/make_sky_scene.py scenes

@@ -14,7 +14,7 @@ static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, materia
 static_assert(sizeof(Material) == 48 && offsetof(Material, metallic) == 32);
 static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
-static_assert(sizeof(FrameParams) == 32);
+static_assert(sizeof(FrameParams) == 48);
 static_assert(sizeof(FilmPixel) == 64);
 
 } // namespace pathcl

@@ -1,6 +1,7 @@
 // pathcl command line: `render`, `devices`, `compare`. Every error is one line on stderr
 // ("pathcl: error: ...") and exit code 2; nothing is written unless the render succeeded.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -34,12 +35,41 @@ int run_devices()
     return 0;
 }
 
+struct EnvironmentOverride {
+    std::string file;
+    float strength; // < 0: keep the scene's
+    double rotation_degrees;
+    std::vector<float> background; // empty or R, G, B
+};
+
+void apply_environment_flags(pathcl::Scene& scene, const EnvironmentOverride& o)
+{
+    pathcl::SceneEnvironment& env = scene.environment;
+    if (!o.background.empty()) {
+        for (float c : o.background)
+            if (!(c >= 0.0f) || !std::isfinite(c))
+                throw pathcl::Error("--background: components must be finite and non-negative");
+        env = pathcl::SceneEnvironment{};
+        env.present = true;
+        env.constant = glm::vec3(o.background[0], o.background[1], o.background[2]);
+    }
+    if (!o.file.empty()) {
+        env.present = true;
+        env.path = o.file;
+        env.strength = 1.0f;
+    }
+    if (o.strength >= 0.0f)
+        env.strength = o.strength;
+    env.rotation_degrees = o.rotation_degrees;
+}
+
 int run_render(const std::string& scene_path, const std::vector<std::string>& outputs,
-               const pathcl::RenderOptions& opt)
+               const pathcl::RenderOptions& opt, const EnvironmentOverride& env)
 {
     for (const std::string& output : outputs)
         pathcl::check_output_path(output); // fail before spending time on the render
     pathcl::Scene scene = pathcl::load_gltf(scene_path);
+    apply_environment_flags(scene, env);
     pathcl::RenderResult r = pathcl::render(scene, opt);
     for (const std::string& output : outputs)
         pathcl::write_image(output, r.image);
@@ -116,6 +146,17 @@ int main(int argc, char** argv)
         ->check(CLI::Range(0u, 1u << 16));
     render->add_option("--seed", opt.seed, "random seed (same seed, scene, options: same image)")->capture_default_str();
     render->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
+    std::string env_file;
+    float env_strength = -1.0f;
+    double env_rotation = 0.0;
+    std::vector<float> background;
+    render->add_option("--env", env_file, "equirectangular environment map (EXR/HDR), overrides the scene's")
+        ->check(CLI::ExistingFile);
+    render->add_option("--env-strength", env_strength, "environment radiance scale (default: the scene's, else 1)");
+    render->add_option("--env-rotation", env_rotation, "rotate the environment about +Y, degrees");
+    render->add_option("--background", background, "constant environment radiance R,G,B")
+        ->delimiter(',')
+        ->expected(3);
     const std::map<std::string, std::uint32_t> strategies = {{"bsdf", STRATEGY_BSDF},
                                                              {"nee", STRATEGY_NEE},
                                                              {"one-sample", STRATEGY_ONE_SAMPLE},
@@ -167,7 +208,8 @@ int main(int argc, char** argv)
     try {
         if (render->parsed()) {
             opt.devices = {device};
-            return run_render(scene_path, outputs, opt);
+            EnvironmentOverride env{env_file, env_strength, env_rotation, background};
+            return run_render(scene_path, outputs, opt, env);
         }
         if (bench->parsed()) {
             bench_opt.devices = {bench_device};

@@ -189,6 +189,22 @@ DeviceScene make_device_scene(const Scene& scene)
         power.push_back(std::numbers::pi * area * std::max(luminance(m.emission), 1e-12));
     }
     add_punctual_lights(scene, ds.lights, power);
+    if (scene.environment.present) {
+        ds.environment = load_environment(scene.environment);
+        double rot = scene.environment.rotation_degrees * std::numbers::pi / 180.0;
+        Light l{};
+        l.type = LIGHT_ENVIRONMENT;
+        l.p0 = {static_cast<float>(ds.environment.width), static_cast<float>(ds.environment.height),
+                static_cast<float>(std::cos(rot)), static_cast<float>(std::sin(rot))};
+        ds.environment_light = static_cast<int>(ds.lights.size());
+        ds.lights.push_back(l);
+        // Power through the scene's bounding disk: pi r^2 times the radiance integrated
+        // over the sphere (4 pi times its mean); an all-black map is never picked.
+        glm::vec3 lo, hi;
+        scene_bounds(scene, lo, hi);
+        double r = scene.triangles.empty() ? 1.0 : 0.5 * glm::length(glm::dvec3(hi) - glm::dvec3(lo));
+        power.push_back(std::numbers::pi * r * r * 4.0 * std::numbers::pi * ds.environment.average_radiance);
+    }
     build_light_alias_table(ds.lights, power);
     return ds;
 }

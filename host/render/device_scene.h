@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bvh/bvh_builder.h"
+#include "render/environment.h"
 #include "scene/scene.h"
 #include "shared_types.h"
 
@@ -18,6 +19,8 @@ struct DeviceScene {
     std::vector<Material> materials;
     std::vector<Light> lights; // spheres, emissive triangles, punctual; selection by power
     std::size_t sphere_count = 0; // lights[0 .. sphere_count) are sphere lights
+    EnvironmentMap environment;   // empty unless the scene has one
+    int environment_light = -1;   // its index in `lights`
     SceneFeatures features;
     Bvh bvh_stats; // depth and leaf figures (nodes moved into `nodes`)
     double bvh_build_seconds = 0.0;

@@ -13,6 +13,7 @@ namespace {
 
 // Fixed work-group shape for the 2D image kernels (a multiple of every SIMD width).
 constexpr std::uint32_t kTile = 8;
+constexpr cl_uint kPathFrameArg = 11; // trace_paths' FrameParams argument
 
 std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
 {
@@ -24,7 +25,8 @@ struct DeviceRender {
     ClDevice dev;
     cl::Program program;
     cl::Kernel camera_kernel, path_kernel, clear_kernel;
-    cl::Buffer nodes, triangles, shading, materials, lights, rays, film, bad;
+    cl::Buffer nodes, triangles, shading, materials, lights, env_texels, env_marginal, env_conditional, rays, film,
+        bad;
     std::size_t pixels = 0;
 
     template <typename T>
@@ -86,6 +88,9 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->shading = dr->make(ds.shading);
             dr->materials = dr->make(ds.materials);
             dr->lights = dr->make(ds.lights);
+            dr->env_texels = dr->make(ds.environment.texels);
+            dr->env_marginal = dr->make(ds.environment.marginal_cdf);
+            dr->env_conditional = dr->make(ds.environment.conditional_cdf);
             dr->pixels = pixels;
             dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
             dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
@@ -105,6 +110,9 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->path_kernel.setArg(a++, dr->shading);
             dr->path_kernel.setArg(a++, dr->materials);
             dr->path_kernel.setArg(a++, dr->lights);
+            dr->path_kernel.setArg(a++, dr->env_texels);
+            dr->path_kernel.setArg(a++, dr->env_marginal);
+            dr->path_kernel.setArg(a++, dr->env_conditional);
             dr->path_kernel.setArg(a++, dr->film);
             dr->path_kernel.setArg(a++, dr->bad);
             dr->dev.queue.finish();
@@ -130,8 +138,9 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             frame.light_count = static_cast<pcl_uint>(ds.lights.size());
             frame.strategy = opt.strategy;
             frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
+            frame.environment = ds.environment_light;
             dr.camera_kernel.setArg(2, frame);
-            dr.path_kernel.setArg(8, frame);
+            dr.path_kernel.setArg(kPathFrameArg, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
             dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
             if (s % 16 == 15)

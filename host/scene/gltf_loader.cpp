@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <set>
+#include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -180,6 +181,7 @@ SceneMaterial import_material(const tinygltf::Material& m)
 struct Importer {
     const tinygltf::Model& model;
     const std::string& source;
+    std::string base_dir;
     Scene scene;
     int default_material = -1;
     std::size_t skipped_points_lines = 0;
@@ -353,6 +355,8 @@ struct Importer {
         if (scene_index >= static_cast<int>(model.scenes.size()))
             throw Error(source + ": default scene " + std::to_string(scene_index) + " does not exist");
 
+        import_environment(model.scenes[static_cast<std::size_t>(scene_index)].extras);
+
         bool have_camera = false;
         struct Item {
             int node;
@@ -433,6 +437,29 @@ struct Importer {
         if (repaired_normals)
             warn(source + ": replaced " + std::to_string(repaired_normals) +
                  " zero-length or NaN normals by the geometric normal");
+    }
+
+    // Scene extras {"environment": {"uri": "sky.exr", "strength": s}}: the uri is relative
+    // to the glTF file and must stay inside its directory.
+    void import_environment(const tinygltf::Value& extras)
+    {
+        if (!extras.IsObject() || !extras.Has("environment"))
+            return;
+        const tinygltf::Value& env = extras.Get("environment");
+        if (!env.IsObject() || !env.Has("uri") || !env.Get("uri").IsString())
+            throw Error(source + ": scene extras.environment needs a string \"uri\"");
+        namespace fs = std::filesystem;
+        std::string uri = env.Get("uri").Get<std::string>();
+        fs::path dir = fs::weakly_canonical(fs::path(base_dir.empty() ? "." : base_dir));
+        fs::path file = fs::weakly_canonical(dir / uri);
+        auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
+        if (d != dir.end() || fs::path(uri).is_absolute())
+            throw Error(source + ": environment uri '" + uri + "' leaves the scene's directory");
+        scene.environment.present = true;
+        scene.environment.path = file.string();
+        scene.environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
+        if (!(scene.environment.strength >= 0.0f))
+            throw Error(source + ": environment strength must be non-negative");
     }
 
     void import_light(const tinygltf::Value& index_value, const glm::dmat4& world, const std::string& what)
@@ -519,9 +546,9 @@ struct Importer {
 
 } // namespace
 
-Scene import_gltf(const tinygltf::Model& model, const std::string& source)
+Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir)
 {
-    Importer importer{model, source, {}, -1, 0, 0, {}};
+    Importer importer{model, source, base_dir, {}, -1, 0, 0, {}};
     importer.run();
     return std::move(importer.scene);
 }
@@ -539,7 +566,7 @@ Scene load_gltf(const std::string& path)
                      : loader.LoadASCIIFromFile(&model, &err, &warning, path);
     if (!ok)
         throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
-    return import_gltf(model, path);
+    return import_gltf(model, path, std::filesystem::path(path).parent_path().string());
 }
 
 } // namespace pathcl

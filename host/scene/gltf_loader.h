@@ -17,7 +17,8 @@ namespace pathcl {
 // Loads a file; throws pathcl::Error("FILE: what is wrong") on any problem.
 Scene load_gltf(const std::string& path);
 
-// Imports an already parsed model; `source` names it in error messages.
-Scene import_gltf(const tinygltf::Model& model, const std::string& source);
+// Imports an already parsed model; `source` names it in error messages; `base_dir` is
+// where relative URIs (the environment map in scene extras) resolve, if anywhere.
+Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir = "");
 
 } // namespace pathcl

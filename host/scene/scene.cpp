@@ -18,6 +18,8 @@ std::string SceneFeatures::build_defines() const
         d += " -DPATHCL_HAS_DIRECTIONAL_LIGHTS";
     if (sphere_lights)
         d += " -DPATHCL_HAS_SPHERE_LIGHTS";
+    if (environment)
+        d += " -DPATHCL_HAS_ENVIRONMENT";
     if (lambertian)
         d += " -DPATHCL_HAS_LAMBERTIAN";
     return d;
@@ -37,6 +39,7 @@ SceneFeatures scene_features(const Scene& scene)
         f.directional_lights = f.directional_lights || l.type == SceneLight::Type::Directional;
         f.sphere_lights = f.sphere_lights || l.type == SceneLight::Type::Sphere;
     }
+    f.environment = scene.environment.present;
     return f;
 }
 

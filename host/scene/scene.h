@@ -45,6 +45,16 @@ struct SceneLight {
     std::string name;
 };
 
+// The environment seen by escaping rays: an equirectangular image (path) or a constant
+// colour; radiance = texel x strength; rotated about +Y by rotation_degrees.
+struct SceneEnvironment {
+    bool present = false;
+    std::string path;               // empty: constant
+    glm::vec3 constant{0.0f};
+    float strength = 1.0f;
+    double rotation_degrees = 0.0;
+};
+
 struct SceneCamera {
     // Render-space position and world-space frame (unit vectors): looks along forward.
     glm::dvec3 position{0.0};
@@ -59,6 +69,7 @@ struct Scene {
     std::vector<SceneTriangle> triangles;
     std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
     std::vector<SceneLight> lights; // punctual lights; emissive triangles are area lights
+    SceneEnvironment environment;
     SceneCamera camera;
     std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
     glm::dvec3 render_origin{0.0};      // world position of the render-space origin
@@ -72,6 +83,7 @@ struct SceneFeatures {
     bool spot_lights = false;  // cone and rectangular spots
     bool directional_lights = false;
     bool sphere_lights = false;
+    bool environment = false;
     bool lambertian = false;
 
     std::string build_defines() const;

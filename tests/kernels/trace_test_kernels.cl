@@ -69,10 +69,15 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
  * work-item from `ref`; writes the direction, or a zero vector when there is no sample
  * (the chi-square harness counts those as failures of the sampler), and the pdf. */
 __kernel void test_light_sample(__global const Light* lights, uint count, float4 ref, uint seed,
-                                __global float4* out)
+                                __global const float4* env_texels, __global const float* env_marginal,
+                                __global const float* env_conditional, __global float4* out)
 {
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
-    LightSample ls = light_sample(lights, count, ref.xyz, &s);
+    EnvironmentBuffers env;
+    env.texels = env_texels;
+    env.marginal = env_marginal;
+    env.conditional = env_conditional;
+    LightSample ls = light_sample(lights, count, &env, ref.xyz, &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
 }

@@ -1,0 +1,29 @@
+// Environment maps: the equirectangular texels (radiance x strength) and the 2D
+// piecewise-constant distribution that importance-samples them in proportion to
+// luminance x sin(theta), as ../shared/CONVENTIONS.md defines the mapping. Layout for the
+// device (kernels/environment.cl): texels row-major from the top row; the marginal CDF
+// over rows (height + 1 floats); one conditional CDF per row (height x (width + 1)).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shared_types.h"
+
+namespace pathcl {
+
+struct EnvironmentMap {
+    std::uint32_t width = 0, height = 0;
+    std::vector<pcl_float4> texels;
+    std::vector<float> marginal_cdf, conditional_cdf;
+    double average_radiance = 0.0; // luminance, solid-angle weighted
+};
+
+// Loads the image (OpenImageIO) or makes the constant 1x1 map; throws pathcl::Error.
+EnvironmentMap load_environment(const SceneEnvironment& env);
+
+// Builds the sampling distribution of an already filled map.
+void build_environment_distribution(EnvironmentMap& map);
+
+} // namespace pathcl

@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Writes scenes/sky.hdr (a 64x32 equirectangular sky: a blue gradient, a darker ground
+half and a small bright sun) and scenes/sky-spheres.gltf (a diffuse ground, two spheres
+and a block lit only by that sky through scene extras.environment). The environment
+test scene; no dependencies beyond Python 3 (Radiance RGBE is written by hand).
+
+Usage: python3 tools/make_sky_scene.py [OUT_DIR]
+"""
+import math
+import os
+import struct
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_cornell_box as cb  # noqa: E402  (its glTF Builder and material helper)
+
+W, H = 64, 32
+SUN_U, SUN_V = 0.30, 0.25  # sun direction in map coordinates (u from -Z towards +X)
+
+
+def sky(u, v):
+    """Radiance of texel centre (u, v): CONVENTIONS.md mapping, v = 0 is straight up."""
+    if v > 0.5:  # below the horizon: a dim, warm ground colour
+        return (0.12, 0.10, 0.08)
+    t = v / 0.5
+    rgb = (0.25 + 0.5 * t, 0.45 + 0.4 * t, 1.0)
+    du = min(abs(u - SUN_U), 1.0 - abs(u - SUN_U))
+    if du < 1.5 / W and abs(v - SUN_V) < 1.5 / H:
+        rgb = (400.0, 360.0, 300.0)  # the sun: a few texels, far brighter than the sky
+    return rgb
+
+
+def rgbe(r, g, b):
+    v = max(r, g, b)
+    if v < 1e-32:
+        return bytes((0, 0, 0, 0))
+    m, e = math.frexp(v)
+    scale = m * 256.0 / v
+    return bytes((int(r * scale), int(g * scale), int(b * scale), e + 128))
+
+
+def write_hdr(path):
+    with open(path, "wb") as f:
+        f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n")
+        f.write(f"-Y {H} +X {W}\n".encode())
+        for j in range(H):
+            f.write(b"".join(rgbe(*sky((i + 0.5) / W, (j + 0.5) / H)) for i in range(W)))
+
+
+def sphere_quads(cx, cy, cz, r, stacks=12, slices=24):
+    """Quads (4 points, counter-clockwise seen from outside) of a UV sphere, in the
+    millimetres the Builder converts; the pole rows collapse to triangles."""
+    def p(i, j):
+        th, ph = math.pi * i / stacks, 2 * math.pi * j / slices
+        sin_th = 0.0 if i in (0, stacks) else math.sin(th)  # exact poles: one shared point
+        return (cx + r * sin_th * math.cos(ph), cy + r * math.cos(th), cz + r * sin_th * math.sin(ph))
+    quads = []
+    for i in range(stacks):
+        for j in range(slices):
+            quads.append([p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j)])
+    return quads
+
+
+def main():
+    out_dir = sys.argv[1] if len(sys.argv) > 1 else "scenes"
+    write_hdr(os.path.join(out_dir, "sky.hdr"))
+    b = cb.Builder()
+    mats = [cb.lambertian("ground", (0.6, 0.6, 0.6)), cb.lambertian("red", (0.7, 0.2, 0.15)),
+            cb.lambertian("white", (0.8, 0.8, 0.8))]
+    size = 4000.0
+    b.add_mesh("ground", [[(-size, 0, -size), (-size, 0, size), (size, 0, size), (size, 0, -size)]], 0)
+    b.add_mesh("sphere_red", sphere_quads(-400, 400, 0, 400), 1)
+    b.add_mesh("sphere_white", sphere_quads(500, 300, 300, 300), 2)
+    block = [(200, 0, -700), (700, 0, -700), (700, 600, -700), (200, 600, -700)]
+    b.add_mesh("block_front", [cb.oriented(block, (450, 300, 0))], 2)
+    b.nodes.append({"name": "camera", "camera": 0, "translation": [0.0, 0.9, 3.2],
+                    "rotation": [-math.sin(math.radians(6)), 0.0, 0.0, math.cos(math.radians(6))]})
+    gltf = {
+        "asset": {"version": "2.0", "generator": "pathcl tools/make_sky_scene.py"},
+        "extensionsUsed": ["KHR_materials_specular"],
+        "scene": 0,
+        "scenes": [{"name": "sky-spheres", "nodes": list(range(len(b.nodes))),
+                    "extras": {"environment": {"uri": "sky.hdr", "strength": 1.0}}}],
+        "nodes": b.nodes, "meshes": b.meshes, "materials": mats,
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "aspectRatio": 1.0, "znear": 0.01}}],
+        "accessors": b.accessors, "bufferViews": b.views,
+        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
+                     + cb.base64.b64encode(bytes(b.blob)).decode("ascii")}],
+    }
+    import json
+    with open(os.path.join(out_dir, "sky-spheres.gltf"), "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
