@@ -105,33 +105,13 @@ std::function<double(const glm::dvec3&)> host_environment_pdf(const EnvironmentM
 std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotation, std::size_t n)
 {
     static cl::Program program = test::build_test_program("trace_test_kernels.cl", "-DPATHCL_HAS_ENVIRONMENT");
-    ClDevice& dev = test::test_device();
     Light l{};
     l.type = LIGHT_ENVIRONMENT;
     l.p0 = {static_cast<float>(m.width), static_cast<float>(m.height), static_cast<float>(std::cos(rotation)),
             static_cast<float>(std::sin(rotation))};
     l.radiance.w = 1.0f;
     l.alias_threshold = 2.0f;
-    auto buffer = [&](const auto& v) {
-        return cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(v[0]),
-                          const_cast<void*>(static_cast<const void*>(v.data())));
-    };
-    std::vector<Light> lights = {l};
-    cl::Buffer lb = buffer(lights), t = buffer(m.texels), mg = buffer(m.marginal_cdf), cd = buffer(m.conditional_cdf);
-    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl::Kernel k(program, "test_light_sample");
-    k.setArg(0, lb);
-    k.setArg(1, 1u);
-    k.setArg(2, pcl_float4{0, 0, 0, 0});
-    k.setArg(3, 77u);
-    k.setArg(4, t);
-    k.setArg(5, mg);
-    k.setArg(6, cd);
-    k.setArg(7, out);
-    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    std::vector<pcl_float4> r(n);
-    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), r.data());
-    return r;
+    return test::sample_lights_on_device(program, {l}, &m, glm::vec3(0.0f), 77u, n);
 }
 
 void expect_sampling_matches(const EnvironmentMap& m, double rotation, int tests)

@@ -20,26 +20,9 @@ std::vector<pcl_float4> sample_lights(std::vector<Light> lights, glm::vec3 ref, 
 {
     static cl::Program program = test::build_test_program(
         "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
-    ClDevice& dev = test::test_device();
     std::vector<double> power(lights.size(), 1.0);
     build_light_alias_table(lights, power);
-    cl::Buffer lb(dev.context, CL_MEM_COPY_HOST_PTR, lights.size() * sizeof(Light), lights.data());
-    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl::Kernel k(program, "test_light_sample");
-    k.setArg(0, lb);
-    k.setArg(1, static_cast<cl_uint>(lights.size()));
-    k.setArg(2, pcl_float4{ref.x, ref.y, ref.z, 0.0f});
-    k.setArg(3, 1234u);
-    float dummy[4] = {0, 0, 0, 0};
-    cl::Buffer d1(dev.context, CL_MEM_COPY_HOST_PTR, sizeof dummy, dummy), d2(dev.context, CL_MEM_COPY_HOST_PTR, sizeof dummy, dummy);
-    k.setArg(4, d1);
-    k.setArg(5, d2);
-    k.setArg(6, d2);
-    k.setArg(7, out);
-    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    std::vector<pcl_float4> result(n);
-    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), result.data());
-    return result;
+    return test::sample_lights_on_device(program, lights, nullptr, ref, 1234u, n);
 }
 
 // Checks the kernel's pdf against the host pdf at each sampled direction.

@@ -29,4 +29,36 @@ cl::Program build_test_program(const std::string& file, const std::string& defin
     return build_program(test_device(), defines, {src}).program;
 }
 
+std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const std::vector<Light>& lights,
+                                                const EnvironmentMap* env, glm::vec3 ref, std::uint32_t seed,
+                                                std::size_t n)
+{
+    ClDevice& dev = test_device();
+    auto buffer = [&](const void* data, std::size_t bytes) {
+        static const float zero[4] = {0, 0, 0, 0}; // kernels need a valid buffer even when unused
+        return bytes ? cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes, const_cast<void*>(data))
+                     : cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof zero,
+                                  const_cast<float*>(zero));
+    };
+    cl::Buffer lb = buffer(lights.data(), lights.size() * sizeof(Light));
+    cl::Buffer texels = buffer(env ? env->texels.data() : nullptr, env ? env->texels.size() * sizeof(pcl_float4) : 0);
+    cl::Buffer marginal = buffer(env ? env->marginal_cdf.data() : nullptr, env ? env->marginal_cdf.size() * sizeof(float) : 0);
+    cl::Buffer conditional =
+        buffer(env ? env->conditional_cdf.data() : nullptr, env ? env->conditional_cdf.size() * sizeof(float) : 0);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Kernel k(program, "test_light_sample");
+    k.setArg(0, lb);
+    k.setArg(1, static_cast<cl_uint>(lights.size()));
+    k.setArg(2, pcl_float4{ref.x, ref.y, ref.z, 0.0f});
+    k.setArg(3, seed);
+    k.setArg(4, texels);
+    k.setArg(5, marginal);
+    k.setArg(6, conditional);
+    k.setArg(7, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<pcl_float4> result(n);
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), result.data());
+    return result;
+}
+
 } // namespace pathcl::test

@@ -4,7 +4,11 @@
 
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "cl/cl_runtime.h"
+#include "render/environment.h"
+#include "shared_types.h"
 
 namespace pathcl::test {
 
@@ -15,5 +19,12 @@ ClDevice& test_device();
 cl::Program build_test_program(const std::string& file, const std::string& defines = "");
 
 std::string read_text_file(const std::string& path);
+
+// Runs test_light_sample (tests/kernels/trace_test_kernels.cl, built into `program`) once
+// per sample: light_sample from `ref` over `lights` (environment buffers from `env`, if
+// any). Each result is (direction, pdf), or zero when there was no sample.
+std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const std::vector<Light>& lights,
+                                                const EnvironmentMap* env, glm::vec3 ref, std::uint32_t seed,
+                                                std::size_t n);
 
 } // namespace pathcl::test
