@@ -164,6 +164,33 @@ TEST(Render, CornellBoxIsInvariantUnderTranslationAndScale)
     }
 }
 
+TEST(Render, WhiteFurnaceOfAlbedoOneGainsExactlyLePerBounce)
+{
+    // A closed sphere of white Lambertian (albedo 1) emitting Le = 0.25 inside: every
+    // bounce adds exactly Le, so L = Le (B + 1). Russian roulette never fires (the
+    // throughput stays 1) and nothing may be lost or gained. Naive variant that fails: a
+    // BSDF sample weight 1% too high (energy gain; verified). Roulette that does not
+    // divide by its survival probability is caught by the albedo-0.5 furnace above.
+    test::GltfBuilder b;
+    int mat = b.add_material(glm::vec3(1.0f), glm::vec3(0.25f));
+    b.add_root(b.add_node(b.add_sphere_mesh(1.0, 12, 24, mat, /*inward=*/true)));
+    b.add_camera_node(b.add_perspective_camera(1.0), {0.2, 0.1, -0.3});
+    Scene scene = import_gltf(b.model, "white-furnace");
+    for (std::uint32_t bounces : {3u, 6u}) {
+        RenderOptions o;
+        o.width = o.height = 16;
+        o.spp = 32;
+        o.max_bounces = bounces;
+        RenderResult r = render(scene, o);
+        EXPECT_EQ(r.stats.bad_samples, 0u);
+        ImageMean m = image_mean(r.image);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_LT(m.stderr_[c], 0.01) << "bounces " << bounces;
+            EXPECT_NEAR(m.mean[c], 0.25 * (bounces + 1), 1e-5 + 5.0 * m.stderr_[c]) << "bounces " << bounces;
+        }
+    }
+}
+
 TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
 {
     // Different estimators share the mean, not the variance: separate (Welch) variances.
