@@ -21,7 +21,7 @@ typedef struct {
 
 /* Lambertian with albedo = base colour (metallic and roughness enter with the glTF
  * metallic-roughness BSDF). */
-inline BsdfEval bsdf_eval(const Material* m, const SurfacePoint* sp, float3 wo, float3 wi)
+static inline BsdfEval bsdf_eval(const Material* m, const SurfacePoint* sp, float3 wo, float3 wi)
 {
     BsdfEval e;
     float cos_i = dot(wi, sp->ns);
@@ -40,7 +40,7 @@ inline BsdfEval bsdf_eval(const Material* m, const SurfacePoint* sp, float3 wo, 
 }
 
 /* Cosine-weighted hemisphere sampling via the concentric disk map (Shirley-Chiu). */
-inline float2 sample_concentric_disk(float2 u)
+static inline float2 sample_concentric_disk(float2 u)
 {
     float2 o = 2.0f * u - 1.0f;
     if (o.x == 0.0f && o.y == 0.0f)
@@ -56,7 +56,7 @@ inline float2 sample_concentric_disk(float2 u)
     return r * (float2)(cos(theta), sin(theta));
 }
 
-inline BsdfSample bsdf_sample(const Material* m, const SurfacePoint* sp, float3 wo, float2 u)
+static inline BsdfSample bsdf_sample(const Material* m, const SurfacePoint* sp, float3 wo, float2 u)
 {
     BsdfSample s;
     float2 d = sample_concentric_disk(u);

@@ -30,7 +30,7 @@ typedef struct {
     int triangle; /* -1: no hit */
 } Hit;
 
-inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
+static inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
 {
     RayTraversal r;
     r.origin = origin;
@@ -55,7 +55,7 @@ inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
 /* Slab test against an AABB, with the far distance enlarged by 1 + 2 gamma(3) so that
  * rounding never culls a box the ray touches (Ize 2013). Returns the entry distance or
  * INFINITY on a miss. */
-inline float ray_box_entry(const RayTraversal* r, float3 bmin, float3 bmax, float tmax)
+static inline float ray_box_entry(const RayTraversal* r, float3 bmin, float3 bmax, float tmax)
 {
     float3 t0 = (bmin - r->origin) * r->inv_dir;
     float3 t1 = (bmax - r->origin) * r->inv_dir;
@@ -67,7 +67,7 @@ inline float ray_box_entry(const RayTraversal* r, float3 bmin, float3 bmax, floa
 }
 
 /* Watertight ray/triangle test. On a hit closer than *t_max, updates hit and *t_max. */
-inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max,
+static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max,
                          float* t_out, float* b1_out, float* b2_out)
 {
     float4 o = (float4)(r->origin, 0.0f);
@@ -127,7 +127,7 @@ inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, fl
 
 /* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
  * (shadow rays). */
-inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
+static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
                      float3 origin, float3 dir, float t_max, bool any_hit)
 {
     RayTraversal r = ray_traversal_setup(origin, dir);

@@ -1,7 +1,7 @@
 /* Camera rays: one per pixel per pass. Camera samples fall uniformly inside their own
  * pixel (box filter). Needs: shared_types.h, samplers.cl. */
 
-inline Ray camera_generate_ray(const Camera* cam, float2 film_uv)
+static inline Ray camera_generate_ray(const Camera* cam, float2 film_uv)
 {
     /* film_uv in [0, 1)^2 with v down the image; the sensor maps to [-1, 1]^2, y up. */
     float sx = 2.0f * film_uv.x - 1.0f;

@@ -12,7 +12,7 @@ typedef struct {
 
 /* Continuous sample of a piecewise-constant 1D distribution from its n + 1 CDF values:
  * returns x in [0, 1), its cell index and the density p(x) = n (cdf[i+1] - cdf[i]). */
-inline float sample_cdf(__global const float* cdf, uint n, float u, uint* index, float* pdf)
+static inline float sample_cdf(__global const float* cdf, uint n, float u, uint* index, float* pdf)
 {
     uint lo = 0u, hi = n; /* invariant: cdf[lo] <= u < cdf[hi] */
     while (lo + 1u < hi) {
@@ -30,20 +30,20 @@ inline float sample_cdf(__global const float* cdf, uint n, float u, uint* index,
 }
 
 /* World direction <-> map direction: the map is turned by the light's rotation about +Y. */
-inline float3 environment_to_world(const Light* env, float3 d)
+static inline float3 environment_to_world(const Light* env, float3 d)
 {
     float c = env->p0.z, s = env->p0.w;
     return (float3)(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
 }
 
-inline float3 environment_from_world(const Light* env, float3 d)
+static inline float3 environment_from_world(const Light* env, float3 d)
 {
     float c = env->p0.z, s = env->p0.w;
     return (float3)(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
 }
 
 /* The texel a world direction falls in. */
-inline uint2 environment_texel(const Light* env, float3 world_dir)
+static inline uint2 environment_texel(const Light* env, float3 world_dir)
 {
     float3 d = environment_from_world(env, world_dir);
     uint w = (uint)env->p0.x, h = (uint)env->p0.y;
@@ -54,7 +54,7 @@ inline uint2 environment_texel(const Light* env, float3 world_dir)
     return (uint2)(min((uint)(u * (float)w), w - 1u), min((uint)(v * (float)h), h - 1u));
 }
 
-inline float3 environment_radiance(const Light* env, const EnvironmentBuffers* buf, float3 world_dir)
+static inline float3 environment_radiance(const Light* env, const EnvironmentBuffers* buf, float3 world_dir)
 {
     uint2 t = environment_texel(env, world_dir);
     return buf->texels[t.y * (uint)env->p0.x + t.x].xyz;
@@ -62,7 +62,7 @@ inline float3 environment_radiance(const Light* env, const EnvironmentBuffers* b
 
 /* Solid-angle pdf of light_sample choosing world_dir on the environment, selection pmf
  * included: p(u, v) / (2 pi^2 sin theta). */
-inline float environment_pdf(const Light* env, const EnvironmentBuffers* buf, float3 world_dir)
+static inline float environment_pdf(const Light* env, const EnvironmentBuffers* buf, float3 world_dir)
 {
     uint w = (uint)env->p0.x, h = (uint)env->p0.y;
     uint2 t = environment_texel(env, world_dir);
@@ -75,7 +75,7 @@ inline float environment_pdf(const Light* env, const EnvironmentBuffers* buf, fl
 }
 
 /* Samples a world direction; returns its radiance, *pdf as environment_pdf (0: none). */
-inline float3 environment_sample(const Light* env, const EnvironmentBuffers* buf, float2 u, float3* world_dir,
+static inline float3 environment_sample(const Light* env, const EnvironmentBuffers* buf, float2 u, float3* world_dir,
                                  float* pdf)
 {
     uint w = (uint)env->p0.x, h = (uint)env->p0.y;

@@ -6,7 +6,7 @@
 
 #pragma OPENCL FP_CONTRACT OFF
 
-inline void neumaier_add(float4* sum, float4* compensation, float4 x)
+static inline void neumaier_add(float4* sum, float4* compensation, float4 x)
 {
     float4 s = *sum;
     float4 t = s + x;
@@ -15,7 +15,7 @@ inline void neumaier_add(float4* sum, float4* compensation, float4 x)
     *sum = t;
 }
 
-inline void film_add_sample(__global FilmPixel* film, __global uint* bad_samples, uint pixel,
+static inline void film_add_sample(__global FilmPixel* film, __global uint* bad_samples, uint pixel,
                             float3 radiance)
 {
     if (!all(isfinite(radiance))) {

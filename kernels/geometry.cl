@@ -17,7 +17,7 @@ typedef struct {
 } SurfacePoint;
 
 /* Orthonormal basis around a unit vector (Duff et al. 2017, branchless). */
-inline void make_basis(float3 n, float3* t, float3* b)
+static inline void make_basis(float3 n, float3* t, float3* b)
 {
     float sign = copysign(1.0f, n.z);
     float a = -1.0f / (sign + n.z);
@@ -26,7 +26,7 @@ inline void make_basis(float3 n, float3* t, float3* b)
     *b = (float3)(c, sign + n.y * n.y * a, -n.y);
 }
 
-inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float b2,
+static inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float b2,
                                 float3* error)
 {
     float b0 = 1.0f - b1 - b2;
@@ -35,7 +35,7 @@ inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float
     return p0 + p1 + p2;
 }
 
-inline SurfacePoint surface_point(__global const Triangle* triangles,
+static inline SurfacePoint surface_point(__global const Triangle* triangles,
                                   __global const TriangleShading* shading, Hit hit, float3 wo)
 {
     SurfacePoint sp;
@@ -66,7 +66,7 @@ inline SurfacePoint surface_point(__global const Triangle* triangles,
 }
 
 /* Origin for a ray leaving p in direction w (on either side of the surface n). */
-inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float3 w)
+static inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float3 w)
 {
     float d = dot(fabs(n), p_error);
     float3 offset = d * n;

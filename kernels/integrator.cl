@@ -24,7 +24,7 @@
 #define DIM_BSDF 5  /* 2 */
 #define DIM_RR 7
 
-inline float power_heuristic(float pdf_a, float pdf_b)
+static inline float power_heuristic(float pdf_a, float pdf_b)
 {
     float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
     if (isinf(a))
@@ -32,14 +32,14 @@ inline float power_heuristic(float pdf_a, float pdf_b)
     return (a + b > 0.0f) ? a / (a + b) : 0.0f;
 }
 
-inline float max_component(float3 v)
+static inline float max_component(float3 v)
 {
     return fmax(v.x, fmax(v.y, v.z));
 }
 
 /* Weight of emission found by a BSDF-sampled ray whose pdf was bsdf_pdf, where light
  * sampling would have produced the same direction with light_pdf. */
-inline float bsdf_hit_weight(uint strategy, bool technique_was_bsdf, float bsdf_pdf, float light_pdf)
+static inline float bsdf_hit_weight(uint strategy, bool technique_was_bsdf, float bsdf_pdf, float light_pdf)
 {
     switch (strategy) {
     case STRATEGY_BSDF:
@@ -56,7 +56,7 @@ inline float bsdf_hit_weight(uint strategy, bool technique_was_bsdf, float bsdf_
 
 /* Factor applied to f cos Le of a light sample with pdfs light_pdf and bsdf_pdf
  * (0 when the strategy does not sample lights at this vertex). */
-inline float light_sample_factor(uint strategy, bool technique_is_light, float light_pdf, float bsdf_pdf)
+static inline float light_sample_factor(uint strategy, bool technique_is_light, float light_pdf, float bsdf_pdf)
 {
     switch (strategy) {
     case STRATEGY_BSDF:

@@ -13,7 +13,7 @@
 /* Nearest t in (0, t_max) where origin + t dir meets the sphere, INFINITY if none. The
  * discriminant is computed from the ray's closest approach, r^2 - |l|^2, which does not
  * cancel catastrophically when the sphere is small or far (Ray Tracing Gems, ch. 7). */
-inline float ray_sphere(float3 centre, float radius, float3 origin, float3 dir, float t_max, bool* from_outside)
+static inline float ray_sphere(float3 centre, float radius, float3 origin, float3 dir, float t_max, bool* from_outside)
 {
     float3 f = origin - centre;
     float a = dot(dir, dir);
@@ -35,7 +35,7 @@ inline float ray_sphere(float3 centre, float radius, float3 origin, float3 dir, 
 }
 
 /* Nearest sphere light along the ray before t_max: its index, or -1 (t in *t_hit). */
-inline int closest_sphere_light(__global const Light* lights, uint sphere_count, float3 origin, float3 dir,
+static inline int closest_sphere_light(__global const Light* lights, uint sphere_count, float3 origin, float3 dir,
                                 float t_max, float* t_hit, bool* from_outside)
 {
     int best = -1;
@@ -54,7 +54,7 @@ inline int closest_sphere_light(__global const Light* lights, uint sphere_count,
 
 /* 1 - cos(theta_max) of the cone a sphere of radius r subtends from distance^2 dc2,
  * without cancellation: sin^2 / (1 + cos). */
-inline float sphere_cone_one_minus_cos(float r, float dc2)
+static inline float sphere_cone_one_minus_cos(float r, float dc2)
 {
     float sin2 = r * r / dc2;
     return sin2 / (1.0f + sqrt(fmax(0.0f, 1.0f - sin2)));
@@ -62,7 +62,7 @@ inline float sphere_cone_one_minus_cos(float r, float dc2)
 
 /* Solid-angle pdf with which light_sample picks a direction towards sphere light `light`
  * from `ref`: uniform over the subtended cone, times the selection pmf; 0 from inside. */
-inline float sphere_light_pdf(const Light* light, float3 ref)
+static inline float sphere_light_pdf(const Light* light, float3 ref)
 {
     float3 d = light->p0.xyz - ref;
     float dc2 = dot(d, d);
@@ -85,7 +85,7 @@ typedef struct {
     bool at_infinity; /* directional: the shadow ray is unbounded */
 } LightSample;
 
-inline int light_pick(__global const Light* lights, uint count, float u_index, float u_alias)
+static inline int light_pick(__global const Light* lights, uint count, float u_index, float u_alias)
 {
     int i = min((int)(u_index * (float)count), (int)count - 1);
     return (u_alias < lights[i].alias_threshold) ? i : lights[i].alias;
@@ -93,7 +93,7 @@ inline int light_pick(__global const Light* lights, uint count, float u_index, f
 
 /* Solid-angle pdf of reaching a point on triangle light `light` from a point dist away,
  * where cos_light is the cosine at the light: selection pmf / (area * cos / d^2). */
-inline float triangle_light_pdf(const Light* light, float dist, float cos_light)
+static inline float triangle_light_pdf(const Light* light, float dist, float cos_light)
 {
     if (cos_light <= 0.0f)
         return 0.0f;
@@ -101,7 +101,7 @@ inline float triangle_light_pdf(const Light* light, float dist, float cos_light)
 }
 
 /* Angular factor of a spot light for light leaving along unit direction `out`. */
-inline float spot_falloff(const Light* light, float3 out)
+static inline float spot_falloff(const Light* light, float3 out)
 {
 #ifdef PATHCL_HAS_SPOT_LIGHTS
     float3 axis = light->p1.xyz;
@@ -124,7 +124,7 @@ inline float spot_falloff(const Light* light, float3 out)
     return 1.0f;
 }
 
-inline LightSample light_sample(__global const Light* lights, uint count, const EnvironmentBuffers* env,
+static inline LightSample light_sample(__global const Light* lights, uint count, const EnvironmentBuffers* env,
                                 float3 ref, SamplerState* sampler)
 {
     LightSample ls;

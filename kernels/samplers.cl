@@ -11,7 +11,7 @@ typedef struct {
 } SamplerState;
 
 /* A full-avalanche 32-bit mix (the "lowbias32" hash by Chris Wellons). */
-inline uint hash_u32(uint x)
+static inline uint hash_u32(uint x)
 {
     x ^= x >> 16;
     x *= 0x7feb352du;
@@ -21,18 +21,18 @@ inline uint hash_u32(uint x)
     return x;
 }
 
-inline uint hash_combine(uint h, uint v)
+static inline uint hash_combine(uint h, uint v)
 {
     return hash_u32(h ^ (v + 0x9e3779b9u + (h << 6) + (h >> 2)));
 }
 
 /* 24 random bits to a float in [0, 1): exactly representable, never 1. */
-inline float u32_to_unit_float(uint x)
+static inline float u32_to_unit_float(uint x)
 {
     return (float)(x >> 8) * 0x1.0p-24f;
 }
 
-inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uint dimension)
+static inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uint dimension)
 {
     SamplerState s;
     s.pixel = pixel;
@@ -42,7 +42,7 @@ inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uint dimen
     return s;
 }
 
-inline float sampler_get_1d(SamplerState* s)
+static inline float sampler_get_1d(SamplerState* s)
 {
     uint h = hash_combine(hash_combine(hash_combine(hash_u32(s->seed), s->pixel), s->sample),
                           s->dimension);
@@ -50,7 +50,7 @@ inline float sampler_get_1d(SamplerState* s)
     return u32_to_unit_float(h);
 }
 
-inline float2 sampler_get_2d(SamplerState* s)
+static inline float2 sampler_get_2d(SamplerState* s)
 {
     float a = sampler_get_1d(s);
     float b = sampler_get_1d(s);

@@ -1,4 +1,7 @@
 /* Every struct that crosses the host/device boundary, defined once for both sides.
+ * (Kernel helper functions are `static inline`: plain `inline` has C99 semantics in
+ * OpenCL C and emits no definition, so a call the compiler does not inline fails to link
+ * on some drivers; PoCL happens to accept it.)
  *
  * Rules that keep the two compilers in agreement: members are 4-byte scalars or 16-byte
  * vectors, vectors come first, padding is explicit, and every size is a multiple of 16.

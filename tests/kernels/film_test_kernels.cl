@@ -2,7 +2,7 @@
  * through the real film code (kernels/film.cl), and the same with a naive float sum for
  * contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
 
-inline float film_test_sample(uint i)
+static inline float film_test_sample(uint i)
 {
     return 0.1f + (u32_to_unit_float(hash_u32(i * 2654435761u + 1u)) - 0.5f) * 0.1f;
 }
