@@ -102,7 +102,8 @@ std::function<double(const glm::dvec3&)> host_environment_pdf(const EnvironmentM
     };
 }
 
-std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotation, std::size_t n)
+std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotation, std::size_t n,
+                                           std::vector<pcl_float4>* radiance = nullptr)
 {
     static cl::Program program = test::build_test_program("trace_test_kernels.cl", "-DPATHCL_HAS_ENVIRONMENT");
     Light l{};
@@ -111,13 +112,34 @@ std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotat
             static_cast<float>(std::sin(rotation))};
     l.radiance.w = 1.0f;
     l.alias_threshold = 2.0f;
-    return test::sample_lights_on_device(program, {l}, &m, glm::vec3(0.0f), 77u, n);
+    return test::sample_lights_on_device(program, {l}, &m, glm::vec3(0.0f), 77u, n, radiance);
+}
+
+// The texel value a world direction sees (independent of the kernel's lookup).
+float host_texel(const EnvironmentMap& m, double rotation, const glm::dvec3& world)
+{
+    double c = std::cos(rotation), s = std::sin(rotation);
+    glm::dvec3 d(c * world.x - s * world.z, world.y, s * world.x + c * world.z);
+    double u = std::atan2(d.x, -d.z) / (2.0 * kPi);
+    if (u < 0.0)
+        u += 1.0;
+    double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+    auto i = std::min<std::uint32_t>(static_cast<std::uint32_t>(u * m.width), m.width - 1);
+    auto j = std::min<std::uint32_t>(static_cast<std::uint32_t>(v * m.height), m.height - 1);
+    return m.texels[static_cast<std::size_t>(j) * m.width + i].y;
 }
 
 void expect_sampling_matches(const EnvironmentMap& m, double rotation, int tests)
 {
     auto pdf = host_environment_pdf(m, rotation);
-    auto s = sample_environment(m, rotation, 1000000);
+    std::vector<pcl_float4> radiance;
+    auto s = sample_environment(m, rotation, 1000000, &radiance);
+    // Weight = radiance / pdf: the radiance a sample carries is the map's value there.
+    std::size_t wrong_radiance = 0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s[i].w > 0.0f)
+            wrong_radiance += radiance[i].y != host_texel(m, rotation, glm::normalize(glm::dvec3(s[i].x, s[i].y, s[i].z)));
+    EXPECT_LE(wrong_radiance, s.size() / 100000) << "samples whose radiance is not the map's value in their direction";
     test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, tests);
     EXPECT_TRUE(r.passed) << r.summary();
     std::size_t bad = 0;

@@ -81,6 +81,24 @@ TEST(LightSampling, SphereFromJustOutsideItsSurface)
     expect_kernel_pdf_matches(s, pdf);
 }
 
+TEST(LightSampling, SphereSamplesCarryItsRadiance)
+{
+    // Weight = radiance / pdf: every sample of a sphere carries exactly its radiance.
+    static cl::Program program = test::build_test_program(
+        "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
+    Light l = sphere_light(glm::vec3(0.0f, 0.0f, 3.0f), 1.0f);
+    l.radiance = {2.5f, 1.5f, 0.5f, 1.0f};
+    l.alias_threshold = 2.0f;
+    std::vector<pcl_float4> radiance;
+    auto s = test::sample_lights_on_device(program, {l}, nullptr, glm::vec3(0.0f), 5u, 10000, &radiance);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        ASSERT_GT(s[i].w, 0.0f);
+        ASSERT_EQ(radiance[i].x, 2.5f);
+        ASSERT_EQ(radiance[i].y, 1.5f);
+        ASSERT_EQ(radiance[i].z, 0.5f);
+    }
+}
+
 TEST(LightSampling, FromInsideASphereThereIsNoSample)
 {
     auto s = sample_lights({sphere_light(glm::vec3(0.0f), 1.0f)}, glm::vec3(0.1f, 0.2f, 0.0f), 1000);

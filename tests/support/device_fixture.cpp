@@ -31,7 +31,7 @@ cl::Program build_test_program(const std::string& file, const std::string& defin
 
 std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const std::vector<Light>& lights,
                                                 const EnvironmentMap* env, glm::vec3 ref, std::uint32_t seed,
-                                                std::size_t n)
+                                                std::size_t n, std::vector<pcl_float4>* radiance)
 {
     ClDevice& dev = test_device();
     auto buffer = [&](const void* data, std::size_t bytes) {
@@ -46,6 +46,7 @@ std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, cons
     cl::Buffer conditional =
         buffer(env ? env->conditional_cdf.data() : nullptr, env ? env->conditional_cdf.size() * sizeof(float) : 0);
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Buffer radiance_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_light_sample");
     k.setArg(0, lb);
     k.setArg(1, static_cast<cl_uint>(lights.size()));
@@ -55,9 +56,14 @@ std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, cons
     k.setArg(5, marginal);
     k.setArg(6, conditional);
     k.setArg(7, out);
+    k.setArg(8, radiance_out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<pcl_float4> result(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), result.data());
+    if (radiance) {
+        radiance->resize(n);
+        dev.queue.enqueueReadBuffer(radiance_out, CL_TRUE, 0, n * sizeof(pcl_float4), radiance->data());
+    }
     return result;
 }
 

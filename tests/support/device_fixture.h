@@ -22,9 +22,10 @@ std::string read_text_file(const std::string& path);
 
 // Runs test_light_sample (tests/kernels/trace_test_kernels.cl, built into `program`) once
 // per sample: light_sample from `ref` over `lights` (environment buffers from `env`, if
-// any). Each result is (direction, pdf), or zero when there was no sample.
+// any). Each result is (direction, pdf), or zero when there was no sample; the radiance
+// each sample carries goes to `radiance` if given.
 std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const std::vector<Light>& lights,
                                                 const EnvironmentMap* env, glm::vec3 ref, std::uint32_t seed,
-                                                std::size_t n);
+                                                std::size_t n, std::vector<pcl_float4>* radiance = nullptr);
 
 } // namespace pathcl::test
