@@ -215,11 +215,16 @@ TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
 TEST(Render, EachLightTypeSceneMatchesItsCommittedReference)
 {
     // One scene per light type besides the area light (tools/make_scenes.sh), against its
-    // 8192-spp reference (tools/make_references.sh); zero NaN/Inf samples.
+    // 8192-spp reference (tools/make_references.sh); zero NaN/Inf samples. 256 spp, not
+    // 64: under the spot lights the walls see only light bounced off a small lit patch,
+    // and at 64 spp those pixel means are too skewed for a z-test (seeds 1-4 and 7 failed
+    // 0.2-0.4 % of pixels and, for seed 7, 3 of 192 tiles; at 256 spp 0.07-0.12 % and none).
     for (const char* name : {"cornell-box-point", "cornell-box-sphere", "cornell-box-spot", "cornell-box-rect-spot",
                              "cornell-box-directional", "sky-spheres"}) {
         Scene scene = load_gltf(kSource + "/scenes/" + name + ".gltf");
-        RenderResult r = render(scene, cornell_test_options());
+        RenderOptions o = cornell_test_options();
+        o.spp = 256;
+        RenderResult r = render(scene, o);
         EXPECT_EQ(r.stats.bad_samples, 0u) << name;
         Image ref = read_image(kSource + "/tests/references/" + name + "-64.exr");
         CompareReport cmp = compare_images(r.image, ref);
