@@ -23,6 +23,7 @@
 #define DIM_LIGHT 1 /* 4: pick (2) and point (2) */
 #define DIM_BSDF 5  /* 2 */
 #define DIM_RR 7
+#define DIM_BSDF_LOBE 8
 
 static inline float power_heuristic(float pdf_a, float pdf_b)
 {
@@ -133,6 +134,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         float3 wo = -dir;
         SurfacePoint sp = surface_point(triangles, shading, hit, wo);
         Material m = materials[sp.material];
+        BsdfParams bp = bsdf_params(&m, &sp);
 
 #ifdef PATHCL_HAS_AREA_LIGHTS
         /* Emission leaves the front face only. */
@@ -150,8 +152,10 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 #endif
         if (depth >= frame.max_bounces)
             break;
-        /* A single-sided surface seen from behind is black but still blocks light. */
-        if (!sp.front_face && !(m.flags & MATERIAL_DOUBLE_SIDED))
+        /* A single-sided surface seen from behind is black but still blocks light; a solid
+         * dielectric's back face is its inside, an interface like the front. */
+        bool solid = m.transmission > 0.0f && !(m.flags & MATERIAL_THIN_WALLED);
+        if (!sp.front_face && !(m.flags & MATERIAL_DOUBLE_SIDED) && !solid)
             break;
 
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
@@ -161,12 +165,12 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 #ifdef PATHCL_HAS_LIGHTS
         /* Next event estimation: one shadow ray to a point on a light. */
         bool sample_light = frame.light_count > 0u && frame.strategy != STRATEGY_BSDF &&
-                            (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light);
+                            (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&bp);
         if (sample_light) {
             sampler.dimension = dims + DIM_LIGHT;
             LightSample ls = light_sample(lights, frame.light_count, &env, sp.p, &sampler);
             if (ls.pdf > 0.0f) {
-                BsdfEval e = bsdf_eval(&m, &sp, wo, ls.wi);
+                BsdfEval e = bsdf_eval(&bp, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {
                     /* The shadow ray's segment: unbounded towards a directional light,
                      * else up to just short of the light point (offset off an area
@@ -197,8 +201,10 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 #endif
 
         /* Continue the path by sampling the BSDF. */
+        sampler.dimension = dims + DIM_BSDF_LOBE;
+        float u_lobe = sampler_get_1d(&sampler);
         sampler.dimension = dims + DIM_BSDF;
-        BsdfSample bs = bsdf_sample(&m, &sp, wo, sampler_get_2d(&sampler));
+        BsdfSample bs = bsdf_sample(&bp, &sp, wo, u_lobe, sampler_get_2d(&sampler));
         if (!(bs.pdf > 0.0f))
             break;
         beta *= bs.weight;

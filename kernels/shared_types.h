@@ -57,16 +57,34 @@ typedef struct {
 } TriangleShading;
 
 /* Material flags */
-#define MATERIAL_DOUBLE_SIDED 1
+#define MATERIAL_DOUBLE_SIDED 1 /* glTF doubleSided: opaque surfaces reflect on both sides */
+#define MATERIAL_THIN_WALLED 2  /* transmission without KHR_materials_volume thickness > 0 */
 
-/* glTF metallic-roughness material, as far as the kernels read it: 48 bytes. */
+/* No texture (a texture field's value when the material has none). */
+#define TEXTURE_NONE (-1)
+
+/* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
+ * _volume, as the kernels read it (see kernels/bsdf.cl for the model): 112 bytes.
+ * Texture fields index the texture-view array (TEXTURE_NONE when absent); a texture
+ * value multiplies its factor, as glTF defines. */
 typedef struct {
-    pcl_float4 base_color; /* rgb linear; a unused */
-    pcl_float4 emission;   /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
+    pcl_float4 base_color;     /* rgb linear baseColorFactor; a unused */
+    pcl_float4 emission;       /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
+    pcl_float4 specular_color; /* rgb specularColorFactor; w specularFactor */
     pcl_float metallic;
-    pcl_float roughness;
-    pcl_uint flags;
-    pcl_uint pad0;
+    pcl_float roughness;    /* perceptual; GGX alpha = roughness^2 */
+    pcl_float transmission; /* transmissionFactor */
+    pcl_float ior;          /* KHR_materials_ior, default 1.5 */
+    pcl_uint flags;         /* MATERIAL_* */
+    pcl_float normal_scale; /* normalTexture.scale */
+    pcl_int base_color_texture;
+    pcl_int metallic_roughness_texture;
+    pcl_int emissive_texture;
+    pcl_int normal_texture;
+    pcl_int specular_texture;       /* A channel scales specularFactor */
+    pcl_int specular_color_texture; /* RGB (sRGB) scales specularColorFactor */
+    pcl_int transmission_texture;   /* R channel scales transmissionFactor */
+    pcl_int pad0, pad1, pad2;
 } Material;
 
 /* Light types */
@@ -147,7 +165,8 @@ typedef struct {
 #define DIM_PIXEL 0
 #define DIM_LENS 2
 #define DIM_PATH_START 4
-#define DIMS_PER_BOUNCE 8 /* technique coin, light pick (2), light point (2), BSDF (2), RR */
+#define DIMS_PER_BOUNCE 9 /* technique coin, light pick (2), light point (2), BSDF (2), RR,
+                            BSDF lobe */
 
 #ifndef __OPENCL_C_VERSION__
 } /* namespace pathcl */

@@ -145,9 +145,16 @@ DeviceScene make_device_scene(const Scene& scene)
         Material dm{};
         dm.base_color = f4(m.base_color);
         dm.emission = f4(m.emission);
+        dm.specular_color = f4(m.specular_color, m.specular);
         dm.metallic = m.metallic;
         dm.roughness = m.roughness;
-        dm.flags = m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u;
+        dm.transmission = m.transmission;
+        dm.ior = m.ior;
+        dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u);
+        dm.normal_scale = 1.0f;
+        dm.base_color_texture = dm.metallic_roughness_texture = dm.emissive_texture = TEXTURE_NONE;
+        dm.normal_texture = dm.specular_texture = dm.specular_color_texture = TEXTURE_NONE;
+        dm.transmission_texture = TEXTURE_NONE;
         ds.materials.push_back(dm);
     }
 

@@ -7,7 +7,6 @@
 #include <limits>
 #include <numbers>
 #include <set>
-#include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -157,6 +156,46 @@ double number_or(const tinygltf::Value& obj, const char* key, double fallback)
     return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
 }
 
+glm::vec3 vec3_or(const tinygltf::Value& obj, const char* key, glm::vec3 fallback)
+{
+    if (!obj.IsObject() || !obj.Has(key))
+        return fallback;
+    const tinygltf::Value& v = obj.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3)
+        return glm::vec3(std::numeric_limits<float>::quiet_NaN()); // rejected by the range check
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = v.Get(i).IsNumber() ? static_cast<float>(v.Get(i).GetNumberAsDouble())
+                                     : std::numeric_limits<float>::quiet_NaN();
+    return out;
+}
+
+// The ranges glTF and the KHR material extensions allow; anything else is an error that
+// names the material and the field, rather than NaN or negative energy in the kernels.
+void check_material(const SceneMaterial& m, const std::string& where)
+{
+    auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
+    auto fail = [&](const char* what) { throw Error(where + ": " + what); };
+    for (int i = 0; i < 3; ++i) {
+        if (!in01(m.base_color[i]))
+            fail("baseColorFactor must lie in [0, 1]");
+        if (!(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
+            fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
+        if (!(m.specular_color[i] >= 0.0f) || !std::isfinite(m.specular_color[i]))
+            fail("KHR_materials_specular specularColorFactor must be finite and >= 0");
+    }
+    if (!in01(m.metallic))
+        fail("metallicFactor must lie in [0, 1]");
+    if (!in01(m.roughness))
+        fail("roughnessFactor must lie in [0, 1]");
+    if (!in01(m.specular))
+        fail("KHR_materials_specular specularFactor must lie in [0, 1]");
+    if (!in01(m.transmission))
+        fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
+    if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
+        fail("KHR_materials_ior ior must be finite and >= 1");
+}
+
 SceneMaterial import_material(const tinygltf::Material& m)
 {
     SceneMaterial out;
@@ -175,6 +214,16 @@ SceneMaterial import_material(const tinygltf::Material& m)
         out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
                                             m.emissiveFactor[2]) * strength);
     out.double_sided = m.doubleSided;
+    if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
+        out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
+        out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
+    }
+    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end())
+        out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
+    if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
+        out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
+    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
+        out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
     return out;
 }
 
@@ -341,13 +390,17 @@ struct Importer {
     void run()
     {
         static const std::set<std::string> supported = {
-            "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_lights_punctual"};
+            "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
+            "KHR_materials_ior", "KHR_materials_volume", "KHR_lights_punctual"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
 
-        for (const tinygltf::Material& m : model.materials)
-            scene.materials.push_back(import_material(m));
+        for (std::size_t i = 0; i < model.materials.size(); ++i) {
+            scene.materials.push_back(import_material(model.materials[i]));
+            check_material(scene.materials.back(), source + ": material " + std::to_string(i) + " (" +
+                                                       model.materials[i].name + ")");
+        }
 
         int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
         if (model.scenes.empty())

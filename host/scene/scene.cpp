@@ -20,8 +20,10 @@ std::string SceneFeatures::build_defines() const
         d += " -DPATHCL_HAS_SPHERE_LIGHTS";
     if (environment)
         d += " -DPATHCL_HAS_ENVIRONMENT";
-    if (lambertian)
-        d += " -DPATHCL_HAS_LAMBERTIAN";
+    if (glossy)
+        d += " -DPATHCL_HAS_GLOSSY";
+    if (transmission)
+        d += " -DPATHCL_HAS_TRANSMISSION";
     return d;
 }
 
@@ -31,7 +33,9 @@ SceneFeatures scene_features(const Scene& scene)
     for (const SceneTriangle& t : scene.triangles) {
         const SceneMaterial& m = scene.materials[static_cast<std::size_t>(t.material)];
         f.area_lights = f.area_lights || m.emits();
-        f.lambertian = true; // every material has a diffuse lobe for now
+        // Exactly Lambertian: no metal, no specular layer (specularFactor 0), no transmission.
+        f.glossy = f.glossy || m.metallic > 0.0f || m.specular > 0.0f;
+        f.transmission = f.transmission || m.transmission > 0.0f;
     }
     for (const SceneLight& l : scene.lights) {
         f.point_lights = f.point_lights || l.type == SceneLight::Type::Point;

@@ -21,6 +21,11 @@ struct SceneMaterial {
     float roughness = 1.0f;
     glm::vec3 emission{0.0f}; // radiance, W m^-2 sr^-1
     bool double_sided = false;
+    float specular = 1.0f;             // KHR_materials_specular specularFactor
+    glm::vec3 specular_color{1.0f};    // KHR_materials_specular specularColorFactor
+    float transmission = 0.0f;         // KHR_materials_transmission transmissionFactor
+    float ior = 1.5f;                  // KHR_materials_ior
+    bool thin_walled = true;           // no KHR_materials_volume with thicknessFactor > 0
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
@@ -84,7 +89,8 @@ struct SceneFeatures {
     bool directional_lights = false;
     bool sphere_lights = false;
     bool environment = false;
-    bool lambertian = false;
+    bool glossy = false;       // a material with a specular lobe (metal or dielectric layer)
+    bool transmission = false; // a material with KHR_materials_transmission > 0
 
     std::string build_defines() const;
 };

@@ -71,10 +71,37 @@ int GltfBuilder::add_material(const glm::vec3& base_color, const glm::vec3& emis
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.emissiveFactor = {emission.x, emission.y, emission.z};
     m.doubleSided = double_sided;
+    tinygltf::Value::Object spec;
+    spec["specularFactor"] = tinygltf::Value(0.0);
+    m.extensions["KHR_materials_specular"] = tinygltf::Value(spec);
     if (emissive_strength != 1.0) {
         tinygltf::Value::Object ext;
         ext["emissiveStrength"] = tinygltf::Value(emissive_strength);
         m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(ext);
+    }
+    model.materials.push_back(m);
+    return static_cast<int>(model.materials.size()) - 1;
+}
+
+int GltfBuilder::add_pbr_material(const Pbr& pbr)
+{
+    tinygltf::Material m;
+    m.pbrMetallicRoughness.baseColorFactor = {pbr.base_color.x, pbr.base_color.y, pbr.base_color.z, 1.0};
+    m.pbrMetallicRoughness.metallicFactor = pbr.metallic;
+    m.pbrMetallicRoughness.roughnessFactor = pbr.roughness;
+    m.doubleSided = pbr.double_sided;
+    auto ext = [&](const char* name, const char* key, double value) {
+        tinygltf::Value::Object o;
+        o[key] = tinygltf::Value(value);
+        m.extensions[name] = tinygltf::Value(o);
+    };
+    if (pbr.specular != 1.0)
+        ext("KHR_materials_specular", "specularFactor", pbr.specular);
+    if (pbr.transmission > 0.0) {
+        ext("KHR_materials_transmission", "transmissionFactor", pbr.transmission);
+        ext("KHR_materials_ior", "ior", pbr.ior);
+        if (pbr.thickness > 0.0)
+            ext("KHR_materials_volume", "thicknessFactor", pbr.thickness);
     }
     model.materials.push_back(m);
     return static_cast<int>(model.materials.size()) - 1;

@@ -24,8 +24,19 @@ public:
     // component_type: TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE/SHORT/INT
     int add_indices(const std::vector<std::uint32_t>& idx, int component_type);
 
+    // An exactly Lambertian material (metallic 0, KHR_materials_specular specularFactor 0).
     int add_material(const glm::vec3& base_color, const glm::vec3& emission = glm::vec3(0.0f),
                      bool double_sided = false, double emissive_strength = 1.0);
+    // A glTF metallic-roughness material; transmission > 0 adds KHR_materials_transmission
+    // and _ior, thickness > 0 makes it a solid (KHR_materials_volume).
+    struct Pbr {
+        glm::vec3 base_color{1.0f};
+        double metallic = 0.0, roughness = 0.0;
+        double transmission = 0.0, ior = 1.5, thickness = 0.0;
+        double specular = 1.0;
+        bool double_sided = false;
+    };
+    int add_pbr_material(const Pbr& pbr);
     // A mesh with one primitive. indices < 0: non-indexed. normals < 0: none.
     int add_mesh(int positions, int indices, int material, int mode = 4, int normals = -1);
     // A node; returns its index. Root nodes must also be passed to add_root.
