@@ -1,4 +1,4 @@
-/* BSDFs: evaluation, sampling and pdf. Needs: shared_types.h, geometry.cl.
+/* BSDFs: evaluation, sampling and pdf. Needs: shared_types.h, samplers.cl, geometry.cl.
  *
  * Directions are world-space unit vectors; wo points away from the surface, towards the
  * previous vertex. The shading point has ng and ns on wo's side. A direction is reflected
@@ -34,9 +34,6 @@
  *
  * Scenes whose materials are all Lambertian compile only the Lambertian code (no
  * PATHCL_HAS_GLOSSY / PATHCL_HAS_TRANSMISSION): they pay nothing for the rest. */
-
-#define INV_PI 0.31830988618379067f
-#define PI_F 3.14159265358979324f
 
 /* GGX alpha below which the specular lobes are delta functions (pbrt-v4 uses the same). */
 #define ALPHA_DELTA 1.0e-3f
@@ -94,23 +91,7 @@ static inline bool bsdf_is_delta(const BsdfParams* p)
 #endif
 }
 
-/* Cosine-weighted hemisphere sampling via the concentric disk map (Shirley-Chiu). */
-static inline float2 sample_concentric_disk(float2 u)
-{
-    float2 o = 2.0f * u - 1.0f;
-    if (o.x == 0.0f && o.y == 0.0f)
-        return (float2)(0.0f);
-    float r, theta;
-    if (fabs(o.x) > fabs(o.y)) {
-        r = o.x;
-        theta = (PI_F / 4.0f) * (o.y / o.x);
-    } else {
-        r = o.y;
-        theta = (PI_F / 2.0f) - (PI_F / 4.0f) * (o.x / o.y);
-    }
-    return r * (float2)(cos(theta), sin(theta));
-}
-
+/* Cosine-weighted hemisphere sampling via the concentric disk map. */
 static inline float3 sample_cosine_hemisphere(float2 u)
 {
     float2 d = sample_concentric_disk(u);

@@ -56,3 +56,27 @@ static inline float2 sampler_get_2d(SamplerState* s)
     float b = sampler_get_1d(s);
     return (float2)(a, b);
 }
+
+/* Warps from the unit square, shared by the camera (lens), BSDFs and lights. */
+
+#define INV_PI 0.31830988618379067f
+#define PI_F 3.14159265358979324f
+
+/* The unit square to the unit disk by Shirley and Chiu's concentric map: low distortion,
+ * so stratified points stay stratified on the disk. */
+static inline float2 sample_concentric_disk(float2 u)
+{
+    float2 o = 2.0f * u - 1.0f;
+    if (o.x == 0.0f && o.y == 0.0f)
+        return (float2)(0.0f);
+    float r, theta;
+    if (fabs(o.x) > fabs(o.y)) {
+        r = o.x;
+        theta = (PI_F / 4.0f) * (o.y / o.x);
+    } else {
+        r = o.y;
+        theta = (PI_F / 2.0f) - (PI_F / 4.0f) * (o.x / o.y);
+    }
+    return r * (float2)(cos(theta), sin(theta));
+}
+
