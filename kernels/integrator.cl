@@ -152,10 +152,10 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 #endif
         if (depth >= frame.max_bounces)
             break;
-        /* A single-sided surface seen from behind is black but still blocks light; a solid
-         * dielectric's back face is its inside, an interface like the front. */
-        bool solid = m.transmission > 0.0f && !(m.flags & MATERIAL_THIN_WALLED);
-        if (!sp.front_face && !(m.flags & MATERIAL_DOUBLE_SIDED) && !solid)
+        /* A single-sided opaque surface seen from behind is black but still blocks light.
+         * A transmissive one is an interface from both sides: a solid's back face is its
+         * inside, a thin sheet lets light through either way. */
+        if (!sp.front_face && !(m.flags & MATERIAL_DOUBLE_SIDED) && !(m.transmission > 0.0f))
             break;
 
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
