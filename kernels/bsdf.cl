@@ -8,10 +8,10 @@
  * The material model is glTF's metallic-roughness BSDF (glTF 2.0 appendix B) with
  * KHR_materials_specular, _transmission, _ior and _volume:
  *
- *   f = metallic        * F_schlick(base_color, wo.h) * spec
- *     + (1 - metallic)  * [ F_d(wo.h) * spec
- *                           + (1 - max(F_d(wo.h))) * ( (1 - transmission) * base_color / pi
- *                                                     + transmission * base_color * btdf ) ]
+ *   f = metallic       * F_schlick(base_color, wo.h) * spec
+ *     + (1 - metallic) * [ F_d(wo.h) * spec
+ *                          + (1 - transmission) * base_color / pi * K(wo, wi)
+ *                          + transmission * (1 - max(F_d(wo.h))) * base_color * btdf ]
  *
  * spec is the GGX microfacet reflection D G / (4 |cos_o| |cos_i|) with alpha = roughness^2
  * and separable Smith G = G1(wo) G1(wi); btdf is Walter et al.'s rough dielectric
@@ -27,16 +27,32 @@
  * exactly Lambertian. Below alpha ALPHA_DELTA the specular lobes are delta functions
  * (ideal mirror and glass): sampled, never evaluated, so no light sampling at such lobes.
  *
- * Sampling picks one lobe with probabilities from the Fresnel terms at the macro normal,
- * samples it (cosine hemisphere, or the GGX visible normals of Dupuy and Benyoub 2023),
- * and returns f cos / pdf with f and pdf summed over every non-delta lobe: the weight is
- * exactly what bsdf_eval returns, divided by what bsdf_pdf returns.
+ * The diffuse base under the dielectric layer gets what the layer does not reflect, by
+ * reciprocal albedo scaling (Kelemen and Szirmay-Kalos 2001):
+ *
+ *   K(wo, wi) = (1 - E(cos_o)) (1 - E(cos_i)) / (1 - E_avg)
+ *
+ * with E the layer's directional albedo (tabulated, see LAYER_* in shared_types.h; the
+ * exact Fresnel curve for a smooth layer) and E_avg its cosine-weighted average. glTF's
+ * own weight (1 - max(F_d(wo.h))) is not energy-conserving: a white rough plastic then
+ * reflects up to 1.3 times the light it receives at grazing incidence. With K a white
+ * plastic reflects exactly all of it (f is reciprocal, and the diffuse albedo from wo is
+ * base_color (1 - E(cos_o))). Inside a solid there is no diffuse base.
+ *
+ * Sampling picks one lobe with probabilities estimated from the albedos at the macro
+ * normal (computed once per shading point by bsdf_params), samples it (cosine
+ * hemisphere, or the GGX visible normals of Dupuy and Benyoub 2023), and returns
+ * f cos / pdf with f and pdf summed over every non-delta lobe: the weight is exactly what
+ * bsdf_eval returns, divided by its pdf.
  *
  * Scenes whose materials are all Lambertian compile only the Lambertian code (no
  * PATHCL_HAS_GLOSSY / PATHCL_HAS_TRANSMISSION): they pay nothing for the rest. */
 
 /* GGX alpha below which the specular lobes are delta functions (pbrt-v4 uses the same). */
 #define ALPHA_DELTA 1.0e-3f
+/* Smallest selection probability estimate of a rough specular or transmission lobe that
+ * exists: the estimates come from the macro normal, the lobes from the microfacets. */
+#define LOBE_ESTIMATE_FLOOR 0.02f
 
 #if defined(PATHCL_HAS_GLOSSY) || defined(PATHCL_HAS_TRANSMISSION)
 #define PATHCL_FULL_BSDF
@@ -54,7 +70,13 @@ typedef struct {
     float pdf;    /* of bsdf_sample producing wi */
 } BsdfEval;
 
-/* The material at one shading point (textures, when present, are applied here). */
+/* Lobe selection probabilities for sampling. */
+typedef struct {
+    float diffuse, specular, transmission;
+} LobeChoice;
+
+/* The material at one shading point, for one wo (textures, when present, are applied
+ * here). */
 typedef struct {
     float3 base_color;
     float3 specular_color; /* KHR_materials_specular colour */
@@ -62,24 +84,19 @@ typedef struct {
     float metallic;
     float alpha;           /* GGX alpha = roughness^2 */
     float transmission;
-    float eta;  /* solid: ior of the side wi refracts into over ior of wo's side; thin: ior */
-    bool thin;  /* thin-walled: transmitted light does not bend */
+    float eta;   /* ior of the side wi refracts into over ior of wo's side (thin: ior) */
+    bool thin;   /* thin-walled: transmitted light does not bend */
+    bool inside; /* wo is inside a solid: no diffuse base */
+#ifdef PATHCL_FULL_BSDF
+    float3 f0c;           /* min(F0(ior) specular_color, 1) */
+    float3 diffuse_scale; /* (1 - metallic)(1 - transmission) base / (pi (1 - E_avg)) */
+    float3 layer_o;       /* E(cos_o): the dielectric layer's albedo from wo */
+    float cos_o;          /* wo against the shading normal, >= 0 */
+    __global const float* layer; /* LAYER_* tables */
+    float layer_r, layer_x;      /* continuous table coordinates of roughness and ior */
+    LobeChoice lobes;
+#endif
 } BsdfParams;
-
-static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp)
-{
-    BsdfParams p;
-    p.base_color = m->base_color.xyz;
-    p.specular_color = m->specular_color.xyz;
-    p.specular = m->specular_color.w;
-    p.metallic = m->metallic;
-    p.alpha = m->roughness * m->roughness;
-    p.transmission = m->transmission;
-    p.thin = (m->flags & MATERIAL_THIN_WALLED) != 0u;
-    /* A solid's geometric normal points out of it: a back-face hit is from inside. */
-    p.eta = (p.thin || sp->front_face) ? m->ior : 1.0f / m->ior;
-    return p;
-}
 
 /* Every lobe of the material is a delta function: light sampling cannot help there. */
 static inline bool bsdf_is_delta(const BsdfParams* p)
@@ -150,8 +167,7 @@ static inline float3 fresnel_specular_layer(const BsdfParams* p, float cos_i)
     float f0 = r * r;
     float s = f0 < 1.0f ? (fresnel_dielectric(cos_i, p->eta) - f0) / (1.0f - f0) : 1.0f;
     s = clamp(s, 0.0f, 1.0f);
-    float3 f0c = fmin(f0 * p->specular_color, (float3)(1.0f));
-    return p->specular * (f0c + (1.0f - f0c) * s);
+    return p->specular * (p->f0c + (1.0f - p->f0c) * s);
 }
 
 /* Reflectance of the specular reflection lobe: conductor and dielectric layer mixed. */
@@ -160,10 +176,53 @@ static inline float3 fresnel_reflection(const BsdfParams* p, float cos_i, float3
     return p->metallic * fresnel_schlick(p->base_color, cos_i) + (1.0f - p->metallic) * f_layer;
 }
 
-/* What the dielectric layer lets through to the diffuse and transmission lobes. */
+/* What the dielectric layer lets through to the transmission lobe. */
 static inline float base_weight(const BsdfParams* p, float3 f_layer)
 {
     return (1.0f - p->metallic) * (1.0f - max3(f_layer));
+}
+
+/* Bilinear lookup in a rows x cols block of the layer table at continuous (row, col). */
+static inline float layer_bilinear(__global const float* t, int offset, int cols, float row, int rows, float col)
+{
+    int r0 = min((int)row, rows - 2), c0 = min((int)col, cols - 2);
+    float fr = row - (float)r0, fc = col - (float)c0;
+    __global const float* a = t + offset + r0 * cols + c0;
+    float top = mix(a[0], a[1], fc), bottom = mix(a[cols], a[cols + 1], fc);
+    return mix(top, bottom, fr);
+}
+
+/* The dielectric layer's directional albedo E(cos theta), per channel: exact for a
+ * smooth layer, else interpolated from the tables (linear in sqrt(cos), roughness, x). */
+static inline float3 layer_albedo(const BsdfParams* p, float mu)
+{
+    if (p->alpha < ALPHA_DELTA)
+        return fresnel_specular_layer(p, mu);
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    int x0 = min((int)p->layer_x, LAYER_ETA_RES - 2);
+    float fx = p->layer_x - (float)x0;
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float b = mix(b0, b1, fx);
+    return p->specular * (p->f0c * (e_ss - b) + b);
+}
+
+/* Its cosine-weighted hemispherical average E_avg. */
+static inline float3 layer_average(const BsdfParams* p, const Material* m)
+{
+    float e_ss, b;
+    if (p->alpha < ALPHA_DELTA) {
+        e_ss = 1.0f;
+        b = m->smooth_layer_average;
+    } else {
+        int r0 = min((int)p->layer_r, LAYER_ROUGH_RES - 2);
+        float fr = p->layer_r - (float)r0;
+        e_ss = mix(p->layer[LAYER_TABLE_ESS_AVG + r0], p->layer[LAYER_TABLE_ESS_AVG + r0 + 1], fr);
+        b = layer_bilinear(p->layer, LAYER_TABLE_B_AVG, LAYER_ROUGH_RES, p->layer_x, LAYER_ETA_RES, p->layer_r);
+    }
+    return p->specular * (p->f0c * (e_ss - b) + b);
 }
 
 /* GGX normal distribution, local frame (wm.z > 0). Written with sin^2 = x^2 + y^2 so that
@@ -215,19 +274,25 @@ static inline bool refract_dir(float3 wo, float3 n, float eta, float3* wt)
     return true;
 }
 
-/* Lobe probabilities for sampling, from the Fresnel terms at the macro normal. */
-typedef struct {
-    float diffuse, specular, transmission;
-} LobeChoice;
-
-static inline LobeChoice choose_lobes(const BsdfParams* p, float cos_o)
+/* Lobe probabilities from each lobe's albedo as seen from wo at the macro normal. A delta
+ * lobe's estimate is exact; a rough lobe that exists gets at least LOBE_ESTIMATE_FLOOR,
+ * since its microfacets can reflect (or refract) where the macro surface would not. */
+static inline LobeChoice choose_lobes(const BsdfParams* p)
 {
-    float3 f_layer = fresnel_specular_layer(p, cos_o);
-    float base = base_weight(p, f_layer) * mean3(p->base_color);
+    bool rough = p->alpha >= ALPHA_DELTA;
+    float3 f_layer = fresnel_specular_layer(p, p->cos_o);
     LobeChoice c;
-    c.specular = mean3(fresnel_reflection(p, cos_o, f_layer));
-    c.diffuse = base * (1.0f - p->transmission);
-    c.transmission = base * p->transmission;
+    c.specular = p->metallic * mean3(fresnel_schlick(p->base_color, p->cos_o)) +
+                 (1.0f - p->metallic) * mean3(p->inside ? f_layer : p->layer_o);
+    c.diffuse = p->inside ? 0.0f
+                          : (1.0f - p->metallic) * (1.0f - p->transmission) * mean3(p->base_color * (1.0f - p->layer_o));
+    c.transmission = base_weight(p, f_layer) * p->transmission * mean3(p->base_color);
+    bool has_specular = p->metallic > 0.0f || (p->specular > 0.0f && p->eta != 1.0f);
+    bool has_transmission = (1.0f - p->metallic) * p->transmission > 0.0f && max3(p->base_color) > 0.0f;
+    if (rough && has_specular)
+        c.specular = fmax(c.specular, LOBE_ESTIMATE_FLOOR);
+    if (rough && has_transmission)
+        c.transmission = fmax(c.transmission, LOBE_ESTIMATE_FLOOR);
     float sum = c.specular + c.diffuse + c.transmission;
     if (sum > 0.0f) {
         c.specular /= sum;
@@ -244,24 +309,30 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
     BsdfEval e;
     e.f_cos = (float3)(0.0f);
     e.pdf = 0.0f;
-    LobeChoice lobes = choose_lobes(p, fmax(wo.z, 0.0f));
     bool rough = p->alpha >= ALPHA_DELTA;
     float a2 = p->alpha * p->alpha;
     if (reflect) {
-        float3 h = wo + wi;
-        float len = length(h);
-        if (!(len > 0.0f))
-            return e;
-        h /= len;
-        float cos_h = fabs(dot(wo, h));
-        float3 f_layer = fresnel_specular_layer(p, cos_h);
-        float diffuse = base_weight(p, f_layer) * (1.0f - p->transmission);
-        e.f_cos = p->base_color * (diffuse * INV_PI * wi.z);
-        e.pdf = lobes.diffuse * wi.z * INV_PI;
+        if (!p->inside) {
+            float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo(p, wi.z));
+            e.f_cos = p->diffuse_scale * k * wi.z;
+#ifdef PATHCL_FAULT_GLTF_DIFFUSE_WEIGHT
+            /* A deliberate bug for the energy test: glTF's (1 - max F_d(wo.h)) weight. */
+            float3 hf = normalize(wo + wi);
+            e.f_cos = p->base_color * ((1.0f - p->metallic) * (1.0f - p->transmission) *
+                                       (1.0f - max3(fresnel_specular_layer(p, fabs(dot(wo, hf))))) * INV_PI * wi.z);
+#endif
+            e.pdf = p->lobes.diffuse * wi.z * INV_PI;
+        }
         if (rough && wo.z > 0.0f) {
-            float3 fr = fresnel_reflection(p, cos_h, f_layer);
+            float3 h = wo + wi;
+            float len = length(h);
+            if (!(len > 0.0f))
+                return e;
+            h /= len;
+            float cos_h = fabs(dot(wo, h));
+            float3 fr = fresnel_reflection(p, cos_h, fresnel_specular_layer(p, cos_h));
             e.f_cos += fr * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
-            e.pdf += lobes.specular * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
+            e.pdf += p->lobes.specular * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
         }
         return e;
     }
@@ -269,7 +340,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
         return e;
     float3 wm;
     float dwm_dwi; /* Jacobian of the half vector map */
-    float btdf;    /* f / (base colour x transmission weight), without the Fresnel factor */
+    float btdf;    /* f cos / (base colour x transmission weight) */
     if (p->thin) {
         /* Thin-walled: the reflection lobe mirrored through the surface. */
         float3 wr = (float3)(wi.x, wi.y, -wi.z);
@@ -296,11 +367,43 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
     float3 f_layer = fresnel_specular_layer(p, dot(wo, wm));
     float t = base_weight(p, f_layer) * p->transmission;
     e.f_cos = p->base_color * (t * btdf);
-    e.pdf = lobes.transmission * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
+    e.pdf = p->lobes.transmission * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
     return e;
 }
 
 #endif /* PATHCL_FULL_BSDF */
+
+/* The BSDF at a shading point seen from wo. layer: the LAYER_* tables. */
+static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, float3 wo,
+                                     __global const float* layer)
+{
+    BsdfParams p;
+    p.base_color = m->base_color.xyz;
+    p.specular_color = m->specular_color.xyz;
+    p.specular = m->specular_color.w;
+    p.metallic = m->metallic;
+    p.alpha = m->roughness * m->roughness;
+    p.transmission = m->transmission;
+    p.thin = (m->flags & MATERIAL_THIN_WALLED) != 0u;
+    /* A solid's geometric normal points out of it: a back-face hit is from inside. */
+    p.inside = !p.thin && !sp->front_face && m->transmission > 0.0f;
+    p.eta = p.inside ? 1.0f / m->ior : m->ior;
+#ifdef PATHCL_FULL_BSDF
+    float r = (m->ior - 1.0f) / (m->ior + 1.0f);
+    p.f0c = fmin(r * r * p.specular_color, (float3)(1.0f));
+    p.layer = layer;
+    p.layer_r = m->roughness * (float)(LAYER_ROUGH_RES - 1);
+    p.layer_x = clamp(r / LAYER_X_MAX, 0.0f, 1.0f) * (float)(LAYER_ETA_RES - 1);
+    p.cos_o = clamp(dot(wo, sp->ns), 0.0f, 1.0f);
+    p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
+    float3 one_minus_avg = 1.0f - layer_average(&p, m);
+    float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
+    /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
+    p.diffuse_scale = select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, 1e-6f));
+    p.lobes = choose_lobes(&p);
+#endif
+    return p;
+}
 
 static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
 {
@@ -350,8 +453,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     return s;
 #else
     float3 wo_l = to_local(wo, t, b, sp->ns);
-    float cos_o = fmax(wo_l.z, 0.0f);
-    LobeChoice lobes = choose_lobes(p, cos_o);
+    const LobeChoice lobes = p->lobes;
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 wi;
     bool reflect;
@@ -368,7 +470,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
                 return s;
             s.delta = true;
             s.pdf = lobes.specular;
-            s.weight = fresnel_reflection(p, cos_o, fresnel_specular_layer(p, cos_o)) / lobes.specular;
+            s.weight = fresnel_reflection(p, p->cos_o, fresnel_specular_layer(p, p->cos_o)) / lobes.specular;
             return s;
         }
         if (!(wo_l.z > 0.0f))
@@ -392,8 +494,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
             s.wi = to_world(wi, t, b, sp->ns);
             if (!(wi.z < 0.0f) || dot(s.wi, sp->ng) >= 0.0f)
                 return s;
-            float3 f_layer = fresnel_specular_layer(p, cos_o);
-            float tw = base_weight(p, f_layer) * p->transmission;
+            float tw = base_weight(p, fresnel_specular_layer(p, p->cos_o)) * p->transmission;
             if (!p->thin)
                 tw /= p->eta * p->eta;
             s.delta = true;

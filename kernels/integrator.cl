@@ -76,8 +76,8 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                           __global const TriangleShading* shading,
                           __global const Material* materials, __global const Light* lights,
                           __global const float4* env_texels, __global const float* env_marginal,
-                          __global const float* env_conditional, __global FilmPixel* film,
-                          __global uint* bad_samples, FrameParams frame)
+                          __global const float* env_conditional, __global const float* layer_albedo,
+                          __global FilmPixel* film, __global uint* bad_samples, FrameParams frame)
 {
     EnvironmentBuffers env;
     env.texels = env_texels;
@@ -134,7 +134,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         float3 wo = -dir;
         SurfacePoint sp = surface_point(triangles, shading, hit, wo);
         Material m = materials[sp.material];
-        BsdfParams bp = bsdf_params(&m, &sp);
+        BsdfParams bp = bsdf_params(&m, &sp, wo, layer_albedo);
 
 #ifdef PATHCL_HAS_AREA_LIGHTS
         /* Emission leaves the front face only. */

@@ -84,8 +84,27 @@ typedef struct {
     pcl_int specular_texture;       /* A channel scales specularFactor */
     pcl_int specular_color_texture; /* RGB (sRGB) scales specularColorFactor */
     pcl_int transmission_texture;   /* R channel scales transmissionFactor */
-    pcl_int pad0, pad1, pad2;
+    pcl_float smooth_layer_average; /* 2 int s(mu, ior) mu dmu, see layer_albedo.h */
+    pcl_int pad1, pad2;
 } Material;
+
+/* Directional albedo tables of the dielectric specular layer, read by kernels/bsdf.cl to
+ * weight the diffuse base (albedo scaling) and built by host/render/layer_albedo.cpp.
+ * One float array over sqrt(cos theta), roughness r = sqrt(alpha) and x = (eta-1)/(eta+1),
+ * each uniform on its grid and interpolated linearly:
+ *   E_ss[r][mu]     albedo of the GGX reflection lobe with Fresnel 1
+ *   B[x][r][mu]     albedo with the normalized Fresnel curve s(c) of bsdf.cl in place of 1
+ *   E_ss_avg[r], B_avg[x][r]   their cosine-weighted hemispherical averages 2 int E mu dmu
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu)). 139,392 bytes. */
+#define LAYER_MU_RES 32
+#define LAYER_ROUGH_RES 32
+#define LAYER_ETA_RES 32 /* x in [0, 0.5]: eta in [1, 3] (clamped beyond) */
+#define LAYER_X_MAX 0.5f
+#define LAYER_TABLE_ESS 0
+#define LAYER_TABLE_B (LAYER_TABLE_ESS + LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_ESS_AVG (LAYER_TABLE_B + LAYER_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_B_AVG (LAYER_TABLE_ESS_AVG + LAYER_ROUGH_RES)
+#define LAYER_TABLE_SIZE (LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES)
 
 /* Light types */
 #define LIGHT_TRIANGLE 0    /* an emissive triangle (area light) */

@@ -12,7 +12,7 @@ static_assert(sizeof(BvhNode) == 64 && offsetof(BvhNode, right_min) == 32);
 static_assert(sizeof(Triangle) == 48);
 static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);
 static_assert(sizeof(Material) == 112 && offsetof(Material, metallic) == 48 &&
-              offsetof(Material, base_color_texture) == 72 && offsetof(Material, pad0) == 100);
+              offsetof(Material, base_color_texture) == 72 && offsetof(Material, smooth_layer_average) == 100);
 static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
 static_assert(sizeof(FrameParams) == 48);

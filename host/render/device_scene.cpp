@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/layer_albedo.h"
+
 namespace pathcl {
 namespace {
 
@@ -155,8 +157,12 @@ DeviceScene make_device_scene(const Scene& scene)
         dm.base_color_texture = dm.metallic_roughness_texture = dm.emissive_texture = TEXTURE_NONE;
         dm.normal_texture = dm.specular_texture = dm.specular_color_texture = TEXTURE_NONE;
         dm.transmission_texture = TEXTURE_NONE;
+        dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
         ds.materials.push_back(dm);
     }
+
+    if (ds.features.glossy || ds.features.transmission)
+        ds.layer_albedo = layer_albedo_table();
 
     ds.triangles.resize(n);
     ds.shading.resize(n);

@@ -20,6 +20,7 @@ struct DeviceScene {
     std::vector<Light> lights; // spheres, emissive triangles, punctual; selection by power
     std::size_t sphere_count = 0; // lights[0 .. sphere_count) are sphere lights
     EnvironmentMap environment;   // empty unless the scene has one
+    std::vector<float> layer_albedo; // LAYER_* tables; empty unless a material is glossy
     int environment_light = -1;   // its index in `lights`
     SceneFeatures features;
     Bvh bvh_stats; // depth and leaf figures (nodes moved into `nodes`)

@@ -13,7 +13,7 @@ namespace {
 
 // Fixed work-group shape for the 2D image kernels (a multiple of every SIMD width).
 constexpr std::uint32_t kTile = 8;
-constexpr cl_uint kPathFrameArg = 11; // trace_paths' FrameParams argument
+constexpr cl_uint kPathFrameArg = 12; // trace_paths' FrameParams argument
 
 std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
 {
@@ -25,8 +25,8 @@ struct DeviceRender {
     ClDevice dev;
     cl::Program program;
     cl::Kernel camera_kernel, path_kernel, clear_kernel;
-    cl::Buffer nodes, triangles, shading, materials, lights, env_texels, env_marginal, env_conditional, rays, film,
-        bad;
+    cl::Buffer nodes, triangles, shading, materials, lights, env_texels, env_marginal, env_conditional, layer_albedo,
+        rays, film, bad;
     std::size_t pixels = 0;
 
     template <typename T>
@@ -91,6 +91,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->env_texels = dr->make(ds.environment.texels);
             dr->env_marginal = dr->make(ds.environment.marginal_cdf);
             dr->env_conditional = dr->make(ds.environment.conditional_cdf);
+            dr->layer_albedo = dr->make(ds.layer_albedo);
             dr->pixels = pixels;
             dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
             dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
@@ -113,6 +114,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->path_kernel.setArg(a++, dr->env_texels);
             dr->path_kernel.setArg(a++, dr->env_marginal);
             dr->path_kernel.setArg(a++, dr->env_conditional);
+            dr->path_kernel.setArg(a++, dr->layer_albedo);
             dr->path_kernel.setArg(a++, dr->film);
             dr->path_kernel.setArg(a++, dr->bad);
             dr->dev.queue.finish();

@@ -1,0 +1,227 @@
+#include "render/layer_albedo.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "shared_types.h"
+
+namespace pathcl {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double smith_g1(const glm::dvec3& w, double alpha)
+{
+    double c2 = w.z * w.z;
+    if (c2 <= 0.0)
+        return 0.0;
+    double tan2 = (1.0 - c2) / c2;
+    return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2));
+}
+
+// Grid values: sqrt(cos theta) (finer towards grazing, where the Fresnel curve bends),
+// roughness and x = (eta - 1) / (eta + 1), each uniform.
+double grid_mu(int i)
+{
+    double t = static_cast<double>(i) / (LAYER_MU_RES - 1);
+    // mu = 0 exactly is a grazing ray that sees no microfacet; the albedo's limit is
+    // taken just above it.
+    return std::max(t * t, 1e-6);
+}
+
+double grid_roughness(int j)
+{
+    return static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
+}
+
+double grid_eta(int k)
+{
+    double x = static_cast<double>(LAYER_X_MAX) * k / (LAYER_ETA_RES - 1);
+    return (1.0 + x) / (1.0 - x);
+}
+
+// 2 * integral over mu in [0, 1] of mu times the interpolant the kernels read: linear in
+// t = sqrt(mu) between grid points, so 2 mu dmu = 4 t^3 dt.
+double cosine_average(const float* f)
+{
+    double h = 1.0 / (LAYER_MU_RES - 1), sum = 0.0;
+    for (int i = 0; i + 1 < LAYER_MU_RES; ++i) {
+        double t0 = i * h, t1 = (i + 1) * h;
+        double p4 = std::pow(t1, 4) - std::pow(t0, 4), p5 = std::pow(t1, 5) - std::pow(t0, 5);
+        // f = (f_i (t1 - t) + f_i+1 (t - t0)) / h
+        sum += (f[i] * (t1 * p4 - 0.8 * p5) + f[i + 1] * (0.8 * p5 - t0 * p4)) / h;
+    }
+    return sum;
+}
+
+} // namespace
+
+std::vector<float> compute_layer_albedo_table(int panels)
+{
+    std::vector<float> t(LAYER_TABLE_SIZE, 0.0f);
+    auto ess = [&](int j, int i) -> float& { return t[LAYER_TABLE_ESS + j * LAYER_MU_RES + i]; };
+    auto b = [&](int k, int j, int i) -> float& {
+        return t[LAYER_TABLE_B + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i];
+    };
+    std::vector<double> etas(LAYER_ETA_RES), bs;
+    for (int k = 0; k < LAYER_ETA_RES; ++k)
+        etas[k] = grid_eta(k);
+    for (int j = 0; j < LAYER_ROUGH_RES; ++j)
+        for (int i = 0; i < LAYER_MU_RES; ++i) {
+            if (j == 0) { // the smooth interface: a mirror with the Fresnel curve itself
+                ess(j, i) = 1.0f;
+                for (int k = 0; k < LAYER_ETA_RES; ++k)
+                    b(k, j, i) = static_cast<float>(normalized_fresnel(grid_mu(i), etas[k]));
+                continue;
+            }
+            ess(j, i) = static_cast<float>(integrate_layer_albedo(grid_mu(i), grid_roughness(j), etas, bs, panels));
+            for (int k = 0; k < LAYER_ETA_RES; ++k)
+                b(k, j, i) = static_cast<float>(bs[k]);
+        }
+    for (int j = 0; j < LAYER_ROUGH_RES; ++j) {
+        t[LAYER_TABLE_ESS_AVG + j] = static_cast<float>(cosine_average(&ess(j, 0)));
+        for (int k = 0; k < LAYER_ETA_RES; ++k)
+            t[LAYER_TABLE_B_AVG + k * LAYER_ROUGH_RES + j] = static_cast<float>(cosine_average(&b(k, j, 0)));
+    }
+    return t;
+}
+
+double fresnel_dielectric(double c, double eta)
+{
+    c = std::clamp(c, 0.0, 1.0);
+    double sin2_t = (1.0 - c * c) / (eta * eta);
+    if (sin2_t >= 1.0)
+        return 1.0;
+    double cos_t = std::sqrt(1.0 - sin2_t);
+    double rs = (c - eta * cos_t) / (c + eta * cos_t), rp = (eta * c - cos_t) / (eta * c + cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+double normalized_fresnel(double cos_theta, double eta)
+{
+    double r = (eta - 1.0) / (eta + 1.0), f0 = r * r;
+    if (f0 >= 1.0)
+        return 1.0;
+    return std::clamp((fresnel_dielectric(cos_theta, eta) - f0) / (1.0 - f0), 0.0, 1.0);
+}
+
+double integrate_layer_albedo(double cos_theta, double roughness, const std::vector<double>& etas,
+                              std::vector<double>& b_out, int panels)
+{
+    // Visible-normal sampling as a change of variables: a uniform point (phi, z) on the
+    // spherical cap of Dupuy and Benyoub maps to a microfacet normal, and the reflection
+    // lobe's f cos / pdf there is G1(wi) (times the Fresnel factor), so each albedo is the
+    // mean of G1(wi) over the cap where wi lies above the horizon. That horizon is a
+    // discontinuity: for each phi it is located by bisection and each piece of z where wi
+    // is above it is integrated by Gauss-Legendre, so the result is accurate to ~1e-4
+    // (1e-7 away from grazing) rather than the ~1e-3 of a stratified mean. wo lies in the xz plane, so the
+    // integrand is even in phi and [0, pi] suffices.
+    static constexpr double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                     -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                     0.7966664774136267,  0.9602898564975363};
+    static constexpr double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066278921548,
+                                     0.3626837833783620, 0.3626837833783620, 0.3137066278921548,
+                                     0.2223810344533745, 0.1012285362903763};
+    const double alpha = std::max(roughness * roughness, 1e-7);
+    const glm::dvec3 wo(std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta);
+    const glm::dvec3 w = glm::normalize(glm::dvec3(wo.x * alpha, wo.y * alpha, wo.z));
+    const double z_lo = -w.z;
+    struct Point {
+        double wi_z, c; // height of the reflected direction, wo . m
+        glm::dvec3 wi;
+    };
+    auto at = [&](double cos_phi, double sin_phi, double z) {
+        double st = std::sqrt(std::max(0.0, 1.0 - z * z));
+        glm::dvec3 h = glm::dvec3(st * cos_phi, st * sin_phi, z) + w;
+        glm::dvec3 m = glm::normalize(glm::dvec3(h.x * alpha, h.y * alpha, std::max(h.z, 0.0)));
+        double c = glm::dot(wo, m);
+        glm::dvec3 wi = 2.0 * c * m - wo;
+        return Point{wi.z, c, wi};
+    };
+    const int sign_steps = 32;
+    double e = 0.0;
+    std::vector<double> b(etas.size(), 0.0);
+    for (int panel = 0; panel < panels; ++panel) {
+        double p0 = kPi * panel / panels, p1 = kPi * (panel + 1) / panels;
+        for (int gp = 0; gp < 8; ++gp) {
+            double phi = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * gx[gp], wphi = 0.5 * (p1 - p0) * gw[gp];
+            double cp = std::cos(phi), sp = std::sin(phi);
+            // Brackets of z where wi is above the horizon.
+            double z_prev = z_lo;
+            bool above_prev = at(cp, sp, z_lo).wi_z > 0.0;
+            double start = z_lo;
+            auto integrate_piece = [&](double a, double bnd) {
+                for (int half = 0; half < 2; ++half) { // two Gauss panels per piece
+                    double a0 = a + (bnd - a) * half / 2.0, a1 = a + (bnd - a) * (half + 1) / 2.0;
+                    for (int k = 0; k < 8; ++k) {
+                        double z = 0.5 * (a0 + a1) + 0.5 * (a1 - a0) * gx[k], wz = 0.5 * (a1 - a0) * gw[k];
+                        Point q = at(cp, sp, z);
+                        if (!(q.wi_z > 0.0))
+                            continue;
+                        double g = smith_g1(q.wi, alpha) * wz * wphi;
+                        e += g;
+                        for (std::size_t k_eta = 0; k_eta < etas.size(); ++k_eta)
+                            b[k_eta] += g * normalized_fresnel(q.c, etas[k_eta]);
+                    }
+                }
+            };
+            for (int k = 1; k <= sign_steps; ++k) {
+                double z = z_lo + (1.0 - z_lo) * k / sign_steps;
+                bool above = at(cp, sp, z).wi_z > 0.0;
+                if (above != above_prev) {
+                    double lo = z_prev, hi = z; // bisect to the crossing
+                    for (int it = 0; it < 60; ++it) {
+                        double mid = 0.5 * (lo + hi);
+                        ((at(cp, sp, mid).wi_z > 0.0) == above_prev ? lo : hi) = mid;
+                    }
+                    double crossing = 0.5 * (lo + hi);
+                    if (above_prev)
+                        integrate_piece(start, crossing);
+                    start = crossing;
+                    above_prev = above;
+                }
+                z_prev = z;
+            }
+            if (above_prev)
+                integrate_piece(start, 1.0);
+        }
+    }
+    double cap_area = kPi * (1.0 - z_lo); // half the cap: phi in [0, pi]
+    b_out.resize(etas.size());
+    for (std::size_t k = 0; k < etas.size(); ++k)
+        b_out[k] = b[k] / cap_area;
+    return e / cap_area;
+}
+
+LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double eta, int panels)
+{
+    std::vector<double> b;
+    double e = integrate_layer_albedo(cos_theta, roughness, std::vector<double>{eta}, b, panels);
+    return {e, b[0]};
+}
+
+double smooth_layer_average(double eta)
+{
+    // Gauss-Legendre on panels in t = sqrt(mu) (the curve is steep at grazing and has a
+    // kink at the critical angle only for eta < 1, which materials never use here).
+    static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                                    0.9061798459386640};
+    static constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                    0.4786286704993665, 0.2369268850561891};
+    const int panels = 256;
+    double sum = 0.0;
+    for (int k = 0; k < panels; ++k) {
+        double a = static_cast<double>(k) / panels, b = static_cast<double>(k + 1) / panels;
+        for (int i = 0; i < 5; ++i) {
+            double t = 0.5 * (a + b) + 0.5 * (b - a) * x[i];
+            sum += 0.5 * (b - a) * w[i] * 4.0 * t * t * t * normalized_fresnel(t * t, eta);
+        }
+    }
+    return sum;
+}
+
+} // namespace pathcl

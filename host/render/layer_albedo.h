@@ -1,0 +1,45 @@
+// Directional albedo of the dielectric specular layer of the glTF material (GGX
+// reflection with the normalized exact-Fresnel curve of kernels/bsdf.cl), tabulated over
+// cos theta, roughness and ior for the kernels' albedo scaling of the diffuse base. The
+// layout is defined in kernels/shared_types.h (LAYER_*). The table is computed at build
+// time by tools/make_layer_albedo_table.cpp, which calls compute_layer_albedo_table.
+#pragma once
+
+#include <vector>
+
+namespace pathcl {
+
+// The table the kernels read (LAYER_TABLE_SIZE floats), generated at build time.
+const std::vector<float>& layer_albedo_table();
+
+// Computes the table: each entry by integrate_layer_albedo with `panels` panels; the
+// hemispherical averages integrate the piecewise-linear interpolant the kernels read, so
+// the diffuse lobe's albedo is exactly 1 - E for the values the kernels use.
+std::vector<float> compute_layer_albedo_table(int panels = 32);
+
+// Albedo of the GGX reflection lobe (separable Smith G) from cos theta at the given
+// roughness (alpha = roughness^2): with Fresnel 1 (the result) and with the normalized
+// Fresnel curve of each eta in `etas` (into b). Gauss-Legendre over the visible-normal
+// cap with the horizon located per azimuth: accurate to about 1e-4 at 16 panels.
+double integrate_layer_albedo(double cos_theta, double roughness, const std::vector<double>& etas,
+                              std::vector<double>& b, int panels = 16);
+
+struct LayerAlbedo {
+    double e_ss; // albedo with Fresnel 1
+    double b;    // albedo with the normalized Fresnel curve s(c)
+};
+LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double eta, int panels = 16);
+
+// 2 * integral of normalized_fresnel(mu, eta) mu dmu: the smooth layer's hemispherical
+// average of the normalized Fresnel curve, exact (the kernels use it below ALPHA_DELTA).
+double smooth_layer_average(double eta);
+
+// Unpolarized Fresnel reflectance of a dielectric interface; eta = far ior / near ior;
+// 1 under total internal reflection.
+double fresnel_dielectric(double cos_theta, double eta);
+
+// The normalized Fresnel curve of kernels/bsdf.cl: (F(c, eta) - F0) / (1 - F0), clamped
+// to [0, 1]; 0 at normal incidence, 1 at grazing and under total internal reflection.
+double normalized_fresnel(double cos_theta, double eta);
+
+} // namespace pathcl

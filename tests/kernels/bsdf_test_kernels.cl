@@ -1,0 +1,61 @@
+/* Test kernels over the real BSDF code (kernels/bsdf.cl). The shading point has its
+ * geometric and shading normal along `normal` (any unit vector: the kernels' own basis
+ * code runs); directions are in world space. */
+
+static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
+{
+    SurfacePoint sp;
+    sp.p = (float3)(0.0f);
+    sp.p_error = (float3)(0.0f);
+    sp.ng = normal;
+    sp.ns = normal;
+    sp.front_face = front_face != 0u;
+    sp.area = 1.0f;
+    sp.material = 0;
+    sp.emitter = -1;
+    return sp;
+}
+
+/* One bsdf_sample per work-item from wo, then bsdf_eval at the sampled direction:
+ *   dir_pdf = (wi, sample pdf)           (0 when there was no sample)
+ *   weight  = (sample weight, 1 if delta)
+ *   eval    = (bsdf_eval f_cos at wi, bsdf_eval pdf at wi) */
+__kernel void test_bsdf_sample(Material m, float4 normal, float4 wo, uint front_face, uint seed,
+                               __global const float* layer, __global float4* dir_pdf, __global float4* weight,
+                               __global float4* eval)
+{
+    uint i = get_global_id(0);
+    SurfacePoint sp = test_surface_point(normal.xyz, front_face);
+    BsdfParams p = bsdf_params(&m, &sp, wo.xyz, layer);
+    SamplerState s = sampler_start(i, 0u, seed, 0u);
+    float u_lobe = sampler_get_1d(&s);
+    float2 u = sampler_get_2d(&s);
+    BsdfSample bs = bsdf_sample(&p, &sp, wo.xyz, u_lobe, u);
+    if (!(bs.pdf > 0.0f)) {
+        dir_pdf[i] = weight[i] = eval[i] = (float4)(0.0f);
+        return;
+    }
+    dir_pdf[i] = (float4)(bs.wi, bs.pdf);
+    weight[i] = (float4)(bs.weight, bs.delta ? 1.0f : 0.0f);
+    BsdfEval e = bsdf_eval(&p, &sp, wo.xyz, bs.wi);
+    eval[i] = (float4)(e.f_cos, e.pdf);
+}
+
+/* bsdf_eval for given pairs: out = (f_cos, pdf). */
+__kernel void test_bsdf_eval(Material m, float4 normal, uint front_face, __global const float* layer,
+                             __global const float4* wo, __global const float4* wi, __global float4* out)
+{
+    uint i = get_global_id(0);
+    SurfacePoint sp = test_surface_point(normal.xyz, front_face);
+    BsdfParams p = bsdf_params(&m, &sp, wo[i].xyz, layer);
+    BsdfEval e = bsdf_eval(&p, &sp, wo[i].xyz, wi[i].xyz);
+    out[i] = (float4)(e.f_cos, e.pdf);
+}
+
+/* Whether NEE is skipped at this material (every lobe a delta function). */
+__kernel void test_bsdf_is_delta(Material m, __global const float* layer, __global int* out)
+{
+    SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), 1u);
+    BsdfParams p = bsdf_params(&m, &sp, (float3)(0.0f, 0.0f, 1.0f), layer);
+    out[0] = bsdf_is_delta(&p) ? 1 : 0;
+}

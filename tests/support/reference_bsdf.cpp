@@ -1,0 +1,259 @@
+#include "support/reference_bsdf.h"
+
+#include "render/layer_albedo.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace pathcl::test {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kAlphaDelta = 1e-3; // kernels/bsdf.cl ALPHA_DELTA
+
+double max3(const glm::dvec3& v)
+{
+    return std::max(v.x, std::max(v.y, v.z));
+}
+
+double mean3(const glm::dvec3& v)
+{
+    return (v.x + v.y + v.z) / 3.0;
+}
+
+// GGX (Trowbridge-Reitz) normal distribution and Smith's G1 for alpha.
+double ggx_d(const glm::dvec3& m, double alpha)
+{
+    if (m.z <= 0.0)
+        return 0.0;
+    double cos2 = m.z * m.z, tan2 = (1.0 - cos2) / cos2, a2 = alpha * alpha;
+    double k = a2 + tan2;
+    return a2 / (kPi * cos2 * cos2 * k * k);
+}
+
+double ggx_g1(const glm::dvec3& w, double alpha)
+{
+    double cos2 = w.z * w.z;
+    if (cos2 == 0.0)
+        return 0.0;
+    double tan2 = (1.0 - cos2) / cos2;
+    double lambda = 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0);
+    return 1.0 / (1.0 + lambda);
+}
+
+// Heitz's distribution of visible normals: G1(wo) max(0, wo.m) D(m) / wo.z.
+double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double alpha)
+{
+    double c = glm::dot(wo, m);
+    if (c <= 0.0 || wo.z <= 0.0)
+        return 0.0;
+    return ggx_g1(wo, alpha) * c * ggx_d(m, alpha) / wo.z;
+}
+
+} // namespace
+
+ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
+{
+    ReferenceBsdf r;
+    r.base_color = {m.base_color.x, m.base_color.y, m.base_color.z};
+    r.specular_color = {m.specular_color.x, m.specular_color.y, m.specular_color.z};
+    r.specular = m.specular_color.w;
+    r.metallic = m.metallic;
+    r.alpha = static_cast<double>(m.roughness) * m.roughness;
+    r.transmission = m.transmission;
+    r.thin = (m.flags & MATERIAL_THIN_WALLED) != 0;
+    r.ior = m.ior;
+    r.inside = !r.thin && !front_face && m.transmission > 0.0f;
+    // The kernel's own float 1/ior: near the critical angle F depends on eta so steeply
+    // that the double quotient alone moves it by a percent.
+    r.eta = r.inside ? static_cast<double>(1.0f / m.ior) : m.ior;
+    return r;
+}
+
+bool ReferenceBsdf::rough() const
+{
+    return alpha >= kAlphaDelta;
+}
+
+// The dielectric layer: KHR_materials_specular's F0 colour and weight, with the exact
+// Fresnel curve normalized to run from F0 (normal incidence) to 1 (grazing or TIR).
+static glm::dvec3 layer_fresnel(const ReferenceBsdf& b, double cos_h)
+{
+    double r = (b.ior - 1.0) / (b.ior + 1.0), f0 = r * r;
+    double s = f0 < 1.0 ? std::clamp((fresnel_dielectric(cos_h, b.eta) - f0) / (1.0 - f0), 0.0, 1.0) : 1.0;
+    glm::dvec3 f0c = glm::min(f0 * b.specular_color, glm::dvec3(1.0));
+    return b.specular * (f0c + (glm::dvec3(1.0) - f0c) * s);
+}
+
+static double base_weight(const ReferenceBsdf& b, const glm::dvec3& layer)
+{
+    return (1.0 - b.metallic) * (1.0 - max3(layer));
+}
+
+// Linear interpolation of the table at continuous grid coordinates, written out
+// independently of the kernels' layer_bilinear.
+static double table_at(const std::vector<float>& t, int offset, int cols, double row, int rows, double col)
+{
+    int r0 = std::min(static_cast<int>(row), rows - 2), c0 = std::min(static_cast<int>(col), cols - 2);
+    double fr = row - r0, fc = col - c0;
+    auto v = [&](int r, int c) { return static_cast<double>(t[static_cast<std::size_t>(offset + r * cols + c)]); };
+    return (1 - fr) * ((1 - fc) * v(r0, c0) + fc * v(r0, c0 + 1)) + fr * ((1 - fc) * v(r0 + 1, c0) + fc * v(r0 + 1, c0 + 1));
+}
+
+static glm::dvec3 f0_colour(const ReferenceBsdf& b)
+{
+    double r = (b.ior - 1.0) / (b.ior + 1.0);
+    return glm::min(r * r * b.specular_color, glm::dvec3(1.0));
+}
+
+glm::dvec3 ReferenceBsdf::layer_albedo(double mu) const
+{
+    glm::dvec3 f0c = f0_colour(*this);
+    if (!rough()) {
+        double s = normalized_fresnel(mu, eta);
+        return specular * (f0c + (glm::dvec3(1.0) - f0c) * s);
+    }
+    const std::vector<float>& t = layer_albedo_table();
+    double roughness = std::sqrt(alpha), r = (ior - 1.0) / (ior + 1.0);
+    double row = roughness * (LAYER_ROUGH_RES - 1), x = std::clamp(r / LAYER_X_MAX, 0.0, 1.0) * (LAYER_ETA_RES - 1);
+    double col = std::sqrt(std::clamp(mu, 0.0, 1.0)) * (LAYER_MU_RES - 1);
+    double e_ss = table_at(t, LAYER_TABLE_ESS, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    int x0 = std::min(static_cast<int>(x), LAYER_ETA_RES - 2);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b = b0 + (x - x0) * (b1 - b0);
+    return specular * (f0c * (e_ss - b) + b);
+}
+
+glm::dvec3 ReferenceBsdf::layer_average() const
+{
+    glm::dvec3 f0c = f0_colour(*this);
+    double e_ss, b;
+    if (!rough()) {
+        e_ss = 1.0;
+        b = smooth_layer_average(ior);
+    } else {
+        const std::vector<float>& t = layer_albedo_table();
+        double roughness = std::sqrt(alpha), r = (ior - 1.0) / (ior + 1.0);
+        double row = roughness * (LAYER_ROUGH_RES - 1), x = std::clamp(r / LAYER_X_MAX, 0.0, 1.0) * (LAYER_ETA_RES - 1);
+        e_ss = table_at(t, LAYER_TABLE_ESS_AVG, LAYER_ROUGH_RES, 0.0, 2, row);
+        b = table_at(t, LAYER_TABLE_B_AVG, LAYER_ROUGH_RES, x, LAYER_ETA_RES, row);
+    }
+    return specular * (f0c * (e_ss - b) + b);
+}
+
+glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h) const
+{
+    double m = std::clamp(1.0 - cos_h, 0.0, 1.0);
+    glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(m, 5.0);
+    return metallic * schlick + (1.0 - metallic) * layer_fresnel(*this, cos_h);
+}
+
+glm::dvec3 ReferenceBsdf::transmittance(double cos_h) const
+{
+    return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission);
+}
+
+ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
+{
+    if (cos_o == cached_cos_o_)
+        return cached_lobes_;
+    glm::dvec3 layer = layer_fresnel(*this, cos_o);
+    glm::dvec3 e_o = inside ? glm::dvec3(0.0) : layer_albedo(cos_o);
+    glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - cos_o, 5.0);
+    Lobes l{};
+    l.specular = metallic * mean3(schlick) + (1.0 - metallic) * mean3(inside ? layer : e_o);
+    l.diffuse = inside ? 0.0 : (1.0 - metallic) * (1.0 - transmission) * mean3(base_color * (glm::dvec3(1.0) - e_o));
+    l.transmission = base_weight(*this, layer) * transmission * mean3(base_color);
+    bool has_specular = metallic > 0.0 || (specular > 0.0 && eta != 1.0);
+    bool has_transmission = (1.0 - metallic) * transmission > 0.0 && max3(base_color) > 0.0;
+    const double floor = 0.02; // kernels/bsdf.cl LOBE_ESTIMATE_FLOOR
+    if (rough() && has_specular)
+        l.specular = std::max(l.specular, floor);
+    if (rough() && has_transmission)
+        l.transmission = std::max(l.transmission, floor);
+    double sum = l.diffuse + l.specular + l.transmission;
+    if (sum > 0.0) {
+        l.diffuse /= sum;
+        l.specular /= sum;
+        l.transmission /= sum;
+    }
+    cached_cos_o_ = cos_o;
+    cached_lobes_ = l;
+    return l;
+}
+
+glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
+{
+    if (wi.z > 0.0) {
+        glm::dvec3 h = glm::normalize(wo + wi);
+        double c = std::abs(glm::dot(wo, h));
+        glm::dvec3 f(0.0);
+        if (!inside) {
+            // Albedo-scaled diffuse base (Kelemen and Szirmay-Kalos 2001).
+            glm::dvec3 norm = glm::dvec3(1.0) - layer_average();
+            for (int ch = 0; ch < 3; ++ch)
+                if (norm[ch] > 1e-6)
+                    f[ch] = base_color[ch] * (1.0 - metallic) * (1.0 - transmission) / kPi * (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) *
+                            (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] * wi.z;
+        }
+        if (rough() && wo.z > 0.0)
+            f += specular_reflectance(c) * (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+        return f;
+    }
+    if (wi.z == 0.0 || !rough() || wo.z <= 0.0 || transmission <= 0.0)
+        return glm::dvec3(0.0);
+    if (thin) {
+        glm::dvec3 mirrored(wi.x, wi.y, -wi.z);
+        glm::dvec3 m = glm::normalize(wo + mirrored);
+        double c = glm::dot(wo, m);
+        if (c <= 0.0)
+            return glm::dvec3(0.0);
+        return transmittance(c) * (ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+    }
+    // Walter et al. 2007, radiance scaled by 1/eta^2 across the interface.
+    glm::dvec3 m = glm::normalize(wi * eta + wo);
+    if (m.z < 0.0)
+        m = -m;
+    double di = glm::dot(wi, m), dn = glm::dot(wo, m);
+    if (dn <= 0.0 || di >= 0.0)
+        return glm::dvec3(0.0);
+    double denom = (di + dn / eta) * (di + dn / eta);
+    double ft = ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) * std::abs(di * dn) / (wo.z * denom * eta * eta);
+    return transmittance(dn) * ft;
+}
+
+double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
+{
+    Lobes l = lobes(std::max(wo.z, 0.0));
+    if (wi.z > 0.0) {
+        double p = inside ? 0.0 : l.diffuse * wi.z / kPi;
+        if (rough() && wo.z > 0.0) {
+            glm::dvec3 h = glm::normalize(wo + wi);
+            p += l.specular * visible_normal_pdf(wo, h, alpha) / (4.0 * std::abs(glm::dot(wo, h)));
+        }
+        return p;
+    }
+    if (wi.z == 0.0 || !rough() || wo.z <= 0.0 || transmission <= 0.0)
+        return 0.0;
+    if (thin) {
+        glm::dvec3 m = glm::normalize(wo + glm::dvec3(wi.x, wi.y, -wi.z));
+        double c = glm::dot(wo, m);
+        return c > 0.0 ? l.transmission * visible_normal_pdf(wo, m, alpha) / (4.0 * c) : 0.0;
+    }
+    glm::dvec3 m = glm::normalize(wi * eta + wo);
+    if (m.z < 0.0)
+        m = -m;
+    double di = glm::dot(wi, m), dn = glm::dot(wo, m);
+    if (dn <= 0.0 || di >= 0.0)
+        return 0.0;
+    double denom = (di + dn / eta) * (di + dn / eta);
+    return l.transmission * visible_normal_pdf(wo, m, alpha) * std::abs(di) / denom;
+}
+
+} // namespace pathcl::test

@@ -1,0 +1,59 @@
+// An independent double-precision host implementation of the material model in
+// kernels/bsdf.cl (glTF metallic-roughness with KHR_materials_specular, _transmission,
+// _ior and _volume), written from the formulas in that file's header comment rather than
+// from its code. The BSDF tests compare the kernels' values and pdfs with it and use its
+// pdf for the chi-square tests of the kernels' samplers.
+//
+// Local shading frame: the normal is +Z and wo.z > 0 is the side the ray came from.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "shared_types.h"
+
+namespace pathcl::test {
+
+struct ReferenceBsdf {
+    glm::dvec3 base_color{1.0}, specular_color{1.0};
+    double specular = 1.0, metallic = 0.0, alpha = 1.0, transmission = 0.0;
+    double eta = 1.5; // ior of the side wi refracts into over the ior of wo's side
+    double ior = 1.5;
+    bool thin = true;
+    bool inside = false; // wo inside a solid: no diffuse base
+
+    // The material as the kernel reads it, hit from the front (eta = ior) or the back.
+    static ReferenceBsdf from_material(const Material& m, bool front_face);
+
+    bool rough() const; // false: the specular lobes are delta functions
+
+    // f(wo, wi) |cos theta_i| over the non-delta lobes.
+    glm::dvec3 f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const;
+    // Solid-angle density with which the kernel's sampler returns wi (non-delta lobes).
+    double pdf(const glm::dvec3& wo, const glm::dvec3& wi) const;
+
+    // Lobe selection probabilities at cos theta_o (delta lobes included).
+    struct Lobes {
+        double diffuse, specular, transmission;
+    };
+    Lobes lobes(double cos_o) const;
+
+private:
+    // lobes() for the last cos_o asked (the chi-square integration asks millions of times).
+    mutable double cached_cos_o_ = -1.0;
+    mutable Lobes cached_lobes_{};
+
+public:
+
+    // Reflectance of the specular reflection lobe and transmittance weight of the
+    // transmission lobe (without the 1/eta^2 radiance scaling) at cos(wo, microfacet).
+    glm::dvec3 specular_reflectance(double cos_h) const;
+    glm::dvec3 transmittance(double cos_h) const;
+
+    // The dielectric layer's directional albedo E(cos theta) and its cosine-weighted
+    // average, as the kernels read them: interpolated from layer_albedo_table() for a
+    // rough layer, exact for a smooth one.
+    glm::dvec3 layer_albedo(double cos_theta) const;
+    glm::dvec3 layer_average() const;
+};
+
+} // namespace pathcl::test
