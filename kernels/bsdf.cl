@@ -196,6 +196,8 @@ static inline float layer_bilinear(__global const float* t, int offset, int cols
  * smooth layer, else interpolated from the tables (linear in sqrt(cos), roughness, x). */
 static inline float3 layer_albedo(const BsdfParams* p, float mu)
 {
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f); /* no layer: the base is exactly Lambertian, no lookups */
     if (p->alpha < ALPHA_DELTA)
         return fresnel_specular_layer(p, mu);
     float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
@@ -213,6 +215,8 @@ static inline float3 layer_albedo(const BsdfParams* p, float mu)
 static inline float3 layer_average(const BsdfParams* p, const Material* m)
 {
     float e_ss, b;
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f);
     if (p->alpha < ALPHA_DELTA) {
         e_ss = 1.0f;
         b = m->smooth_layer_average;

@@ -12,9 +12,11 @@ film, at (278, 273, -800) looking along +z.
 
 With --light KIND the ceiling light is replaced by a KHR_lights_punctual light of that
 kind (point, sphere, spot, rect-spot, directional) and the ceiling is closed: one test scene per
-light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh).
+light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh). With
+--variant glass-mirror the tall block is an ideal mirror and the short block gives way
+to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf).
 
-Usage: python3 tools/make_cornell_box.py [--light KIND] [OUT.gltf]   (Python 3 only)
+Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror] [OUT.gltf]
 """
 import base64, json, math, struct, sys
 
@@ -80,16 +82,19 @@ class Builder:
         self.blob += data
         return len(self.views) - 1
 
-    def add_mesh(self, name, quads, material):
-        positions, indices = [], []
-        for q in quads:
+    def add_mesh(self, name, quads, material, normals=None):
+        """Quads in millimetres; normals (optional): one unit vector per quad corner."""
+        positions, indices, nrm = [], [], []
+        for qi, q in enumerate(quads):
             base = len(positions)
             positions += [tuple(c * MM for c in v) for v in q]
+            if normals is not None:
+                nrm += normals[qi]
             for tri in ((0, 1, 2), (0, 2, 3)):
                 if len({q[k] for k in tri}) == 3:  # a quad collapsed to a triangle (a pole)
                     indices += [base + k for k in tri]
         pos_bytes = b"".join(struct.pack("<3f", *p) for p in positions)
-        idx_bytes = b"".join(struct.pack("<H", i) for i in indices)
+        idx_bytes = b"".join(struct.pack("<H" if len(positions) < 65536 else "<I", i) for i in indices)
         lo = [min(p[i] for p in positions) for i in range(3)]
         hi = [max(p[i] for p in positions) for i in range(3)]
         # glTF requires min/max to match the stored (float32) values exactly.
@@ -98,13 +103,40 @@ class Builder:
         self.accessors.append({"bufferView": pv, "componentType": 5126, "count": len(positions),
                                "type": "VEC3", "min": [f32(x) for x in lo],
                                "max": [f32(x) for x in hi]})
+        attributes = {"POSITION": len(self.accessors) - 1}
+        if normals is not None:
+            nv = self.add_view(b"".join(struct.pack("<3f", *n) for n in nrm), 34962)
+            self.accessors.append({"bufferView": nv, "componentType": 5126, "count": len(nrm),
+                                   "type": "VEC3"})
+            attributes["NORMAL"] = len(self.accessors) - 1
         iv = self.add_view(idx_bytes, 34963)
-        self.accessors.append({"bufferView": iv, "componentType": 5123, "count": len(indices),
-                               "type": "SCALAR"})
+        self.accessors.append({"bufferView": iv, "componentType": 5123 if len(positions) < 65536 else 5125,
+                               "count": len(indices), "type": "SCALAR"})
         self.meshes.append({"name": name, "primitives": [{
-            "attributes": {"POSITION": len(self.accessors) - 2},
+            "attributes": attributes,
             "indices": len(self.accessors) - 1, "material": material, "mode": 4}]})
         self.nodes.append({"name": name, "mesh": len(self.meshes) - 1})
+
+def sphere_quads(cx, cy, cz, r, stacks=12, slices=24):
+    """Quads (4 points, counter-clockwise seen from outside) of a UV sphere, in the
+    millimetres the Builder converts; the pole rows collapse to triangles."""
+    def p(i, j):
+        th, ph = math.pi * i / stacks, 2 * math.pi * j / slices
+        sin_th = 0.0 if i in (0, stacks) else math.sin(th)  # exact poles: one shared point
+        return (cx + r * sin_th * math.cos(ph), cy + r * math.cos(th), cz + r * sin_th * math.sin(ph))
+    quads = []
+    for i in range(stacks):
+        for j in range(slices):
+            quads.append([p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j)])
+    return quads
+
+def sphere_normals(quads, cx, cy, cz):
+    """Smooth (radial) vertex normals for sphere_quads."""
+    def n(v):
+        d = (v[0] - cx, v[1] - cy, v[2] - cz)
+        l = math.sqrt(dot(d, d))
+        return tuple(x / l for x in d)
+    return [[n(v) for v in q] for q in quads]
 
 def lambertian(name, rgb):
     return {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(rgb) + [1.0],
@@ -147,16 +179,33 @@ def quat_rotate(q, v):
     t = tuple(2.0 * c for c in cross(u, v))
     return tuple(v[i] + w * t[i] + cross(u, t)[i] for i in range(3))
 
+# --variant glass-mirror: the tall block becomes an ideal mirror (metallic 1, roughness 0)
+# and the short block a solid glass sphere (KHR_materials_transmission 1, ior 1.5,
+# KHR_materials_volume thickness > 0, roughness 0) resting on the floor where it stood.
+MIRROR = {"name": "mirror", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+          "metallicFactor": 1.0, "roughnessFactor": 0.0}}
+GLASS = {"name": "glass", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+         "metallicFactor": 0.0, "roughnessFactor": 0.0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_ior": {"ior": 1.5},
+                        "KHR_materials_volume": {"thicknessFactor": 0.2}}}
+GLASS_SPHERE = (185.0, 100.5, 169.0, 100.0)  # centre and radius, mm: 0.5 mm above the floor
+
 def main():
     args = sys.argv[1:]
-    light_kind = None
-    if len(args) >= 2 and args[0] == "--light":
-        light_kind = args[1]
-        if light_kind not in PUNCTUAL_LIGHTS:
-            sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
+    light_kind, variant = None, None
+    while len(args) >= 2 and args[0] in ("--light", "--variant"):
+        if args[0] == "--light":
+            light_kind = args[1]
+            if light_kind not in PUNCTUAL_LIGHTS:
+                sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
+        else:
+            variant = args[1]
+            if variant != "glass-mirror":
+                sys.exit("make_cornell_box.py: --variant must be glass-mirror")
         args = args[2:]
-    default_out = "scenes/cornell-box.gltf" if light_kind is None else f"scenes/cornell-box-{light_kind}.gltf"
-    out = args[0] if args else default_out
+    name = "cornell-box" + (f"-{light_kind}" if light_kind else "") + (f"-{variant}" if variant else "")
+    out = args[0] if args else f"scenes/{name}.gltf"
     materials = [
         lambertian("white", (0.725, 0.71, 0.68)),
         lambertian("red", (0.63, 0.065, 0.05)),
@@ -176,9 +225,17 @@ def main():
     b.add_mesh("back_wall", [oriented(BACK_WALL, inside)], WHITE)
     b.add_mesh("right_wall_green", [oriented(RIGHT_WALL, inside)], GREEN)
     b.add_mesh("left_wall_red", [oriented(LEFT_WALL, inside)], RED)
-    b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], WHITE)
-    b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
     extensions_used = ["KHR_materials_emissive_strength", "KHR_materials_specular"]
+    if variant == "glass-mirror":
+        materials += [MIRROR, GLASS]
+        mirror_m, glass_m = len(materials) - 2, len(materials) - 1
+        quads = sphere_quads(*GLASS_SPHERE, stacks=32, slices=64)
+        b.add_mesh("glass_sphere", quads, glass_m, normals=sphere_normals(quads, *GLASS_SPHERE[:3]))
+        b.add_mesh("tall_block_mirror", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], mirror_m)
+        extensions_used += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"]
+    else:
+        b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], WHITE)
+        b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
     lights = []
     if light_kind is None:
         b.add_mesh("light", [oriented(LIGHT, (278, 0, 279.5))], LIGHT_M)  # faces down
@@ -203,7 +260,7 @@ def main():
         "asset": {"version": "2.0", "generator": "pathcl tools/make_cornell_box.py"},
         "extensionsUsed": extensions_used,
         "scene": 0,
-        "scenes": [{"name": "cornell-box", "nodes": list(range(len(b.nodes)))}],
+        "scenes": [{"name": "cornell-box" + (f"-{variant}" if variant else ""), "nodes": list(range(len(b.nodes)))}],
         "nodes": b.nodes, "meshes": b.meshes, "materials": materials,
         "cameras": [{"type": "perspective", "perspective": {
             "yfov": yfov, "aspectRatio": 1.0, "znear": 0.01}}],

@@ -6,4 +6,6 @@ python3 tools/make_cornell_box.py scenes/cornell-box.gltf
 for light in point sphere spot rect-spot directional; do
     python3 tools/make_cornell_box.py --light "$light"
 done
+python3 tools/make_cornell_box.py --variant glass-mirror
 python3 tools/make_sky_scene.py scenes
+python3 tools/make_material_spheres.py scenes

@@ -47,20 +47,6 @@ def write_hdr(path):
             f.write(b"".join(rgbe(*sky((i + 0.5) / W, (j + 0.5) / H)) for i in range(W)))
 
 
-def sphere_quads(cx, cy, cz, r, stacks=12, slices=24):
-    """Quads (4 points, counter-clockwise seen from outside) of a UV sphere, in the
-    millimetres the Builder converts; the pole rows collapse to triangles."""
-    def p(i, j):
-        th, ph = math.pi * i / stacks, 2 * math.pi * j / slices
-        sin_th = 0.0 if i in (0, stacks) else math.sin(th)  # exact poles: one shared point
-        return (cx + r * sin_th * math.cos(ph), cy + r * math.cos(th), cz + r * sin_th * math.sin(ph))
-    quads = []
-    for i in range(stacks):
-        for j in range(slices):
-            quads.append([p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j)])
-    return quads
-
-
 def main():
     out_dir = sys.argv[1] if len(sys.argv) > 1 else "scenes"
     write_hdr(os.path.join(out_dir, "sky.hdr"))
@@ -69,8 +55,8 @@ def main():
             cb.lambertian("white", (0.8, 0.8, 0.8))]
     size = 4000.0
     b.add_mesh("ground", [[(-size, 0, -size), (-size, 0, size), (size, 0, size), (size, 0, -size)]], 0)
-    b.add_mesh("sphere_red", sphere_quads(-400, 400, 0, 400), 1)
-    b.add_mesh("sphere_white", sphere_quads(500, 300, 300, 300), 2)
+    b.add_mesh("sphere_red", cb.sphere_quads(-400, 400, 0, 400), 1)
+    b.add_mesh("sphere_white", cb.sphere_quads(500, 300, 300, 300), 2)
     block = [(200, 0, -700), (700, 0, -700), (700, 600, -700), (200, 600, -700)]
     b.add_mesh("block_front", [cb.oriented(block, (450, 300, 0))], 2)
     b.nodes.append({"name": "camera", "camera": 0, "translation": [0.0, 0.9, 3.2],

@@ -18,9 +18,12 @@ The glTF reader is our own (numpy only, no pathcl code) and covers what
 scenes/cornell-box.gltf uses: node TRS/matrix hierarchy, triangle primitives (mode 4)
 with float VEC3 POSITION and u8/u16/u32 indices, base64 data-URI or external buffers,
 baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual
-point (and sphere) and directional lights, and the first perspective camera. Textures, normals,
-metallic/roughness and other extensions are ignored: every surface is a flat-shaded
-Lambertian `diffuse` BSDF.
+point (and sphere) and directional lights, and the first perspective camera. Materials
+with an exact Mitsuba equivalent: Lambertian (specularFactor 0), white metals (smooth or
+GGX-rough), solid glass (smooth or GGX-rough) (see material_params); any other is an
+error. Vertex normals and textures
+are ignored: every surface is flat-shaded, so compare with a pathcl render of the scene
+without its NORMAL attributes (see tools/strip_normals.py).
 
 Conventions matched to pathcl:
   * --max-bounces B counts scattering events (B=0: emission only). Mitsuba's path
@@ -185,15 +188,37 @@ def walk_nodes(doc):
 
 
 def material_params(doc, index):
-    """(base colour rgb, emitted radiance rgb, double sided) of material `index`."""
-    if index is None:  # glTF default material: white, not emissive
-        return (1.0, 1.0, 1.0), (0.0, 0.0, 0.0), False
+    """(base colour rgb, emitted radiance rgb, double sided, kind) of material `index`.
+    kind is the Mitsuba BSDF with the same scattering as pathcl's glTF model, where one
+    exists: "diffuse" (metallic 0, KHR_materials_specular specularFactor 0, no
+    transmission); a white metal (metallic 1, white base: Schlick's F is then 1, Mitsuba's
+    conductor / roughconductor with material "none"); solid glass (transmission 1,
+    metallic 0, white base, specular 1, KHR_materials_volume: exact Fresnel, Mitsuba's
+    dielectric / roughdielectric). Rough lobes: GGX with alpha = roughness^2, separable
+    Smith G and visible-normal sampling, as in pathcl; below alpha 1e-3 pathcl's lobes are
+    delta functions. Anything else is an error."""
+    if index is None:  # glTF default material: metallic 1, roughness 1: no equivalent
+        raise ValueError("a primitive without a material (glTF default: rough metal) has no Mitsuba equivalent")
     mat = doc["materials"][index]
-    base = mat.get("pbrMetallicRoughness", {}).get("baseColorFactor", [1, 1, 1, 1])[:3]
-    strength = mat.get("extensions", {}).get("KHR_materials_emissive_strength", {}) \
-                  .get("emissiveStrength", 1.0)
+    pbr = mat.get("pbrMetallicRoughness", {})
+    ext = mat.get("extensions", {})
+    base = pbr.get("baseColorFactor", [1, 1, 1, 1])[:3]
+    strength = ext.get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)
     emissive = [c * strength for c in mat.get("emissiveFactor", [0, 0, 0])]
-    return tuple(base), tuple(emissive), bool(mat.get("doubleSided", False))
+    metallic, roughness = pbr.get("metallicFactor", 1.0), pbr.get("roughnessFactor", 1.0)
+    specular = ext.get("KHR_materials_specular", {}).get("specularFactor", 1.0)
+    transmission = ext.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0)
+    white = all(c == 1.0 for c in base)
+    alpha = roughness * roughness
+    if metallic == 0.0 and specular == 0.0 and transmission == 0.0:
+        kind = "diffuse"
+    elif metallic == 1.0 and white:
+        kind = ("metal", alpha)
+    elif transmission == 1.0 and metallic == 0.0 and white and specular == 1.0 and "KHR_materials_volume" in ext:
+        kind = ("glass", ext.get("KHR_materials_ior", {}).get("ior", 1.5), alpha)
+    else:
+        raise ValueError(f"material {index} ({mat.get('name', '')}) has no like-for-like Mitsuba BSDF here")
+    return tuple(base), tuple(emissive), bool(mat.get("doubleSided", False)), kind
 
 
 def load_scene(path):
@@ -239,10 +264,10 @@ def load_scene(path):
             if mirrored:  # a mirroring transform flips which side is counter-clockwise
                 faces = faces[:, ::-1]
             pos = pos @ world[:3, :3].T + world[:3, 3]
-            base, emit, two_sided = material_params(doc, p.get("material"))
+            base, emit, two_sided, kind = material_params(doc, p.get("material"))
             prims.append({"name": f"{node.get('name', 'node')}_{k}", "positions": pos,
                           "faces": np.ascontiguousarray(faces), "base": base,
-                          "emission": emit, "two_sided": two_sided})
+                          "emission": emit, "two_sided": two_sided, "kind": kind})
     if camera is None:
         raise ValueError(f"{path}: no perspective camera node in the scene")
     return prims, camera, lights
@@ -254,8 +279,21 @@ def load_scene(path):
 def make_mesh(mi, prim):
     """A Mitsuba mesh without vertex normals (flat shading) with its BSDF/emitter."""
     props = mi.Properties()
-    bsdf = {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(prim["base"])}}
-    if prim["two_sided"]:
+    kind = prim["kind"]
+    glass = isinstance(kind, tuple) and kind[0] == "glass"
+    if isinstance(kind, tuple) and kind[0] == "metal":
+        alpha = kind[1]
+        bsdf = ({"type": "conductor", "material": "none"} if alpha < 1e-3 else
+                {"type": "roughconductor", "material": "none", "distribution": "ggx",
+                 "alpha": float(alpha), "sample_visible": True})
+    elif glass:  # both sides are the interface
+        ior, alpha = float(kind[1]), kind[2]
+        bsdf = ({"type": "dielectric", "int_ior": ior, "ext_ior": 1.0} if alpha < 1e-3 else
+                {"type": "roughdielectric", "int_ior": ior, "ext_ior": 1.0, "distribution": "ggx",
+                 "alpha": float(alpha), "sample_visible": True})
+    else:
+        bsdf = {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(prim["base"])}}
+    if prim["two_sided"] and not glass:
         bsdf = {"type": "twosided", "material": bsdf}
     props["bsdf"] = mi.load_dict(bsdf)
     if any(c > 0 for c in prim["emission"]):
