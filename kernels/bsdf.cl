@@ -39,11 +39,21 @@
  * plastic reflects exactly all of it (f is reciprocal, and the diffuse albedo from wo is
  * base_color (1 - E(cos_o))). Inside a solid there is no diffuse base.
  *
- * Sampling picks one lobe with probabilities estimated from the albedos at the macro
- * normal (computed once per shading point by bsdf_params), samples it (cosine
- * hemisphere, or the GGX visible normals of Dupuy and Benyoub 2023), and returns
- * f cos / pdf with f and pdf summed over every non-delta lobe: the weight is exactly what
- * bsdf_eval returns, divided by its pdf.
+ * Multiple scattering between microfacets, which single-scattering GGX drops (a white
+ * rough metal or glass would lose up to ~20 % of the light), is restored: conductors get
+ * Kulla and Conty's (2017) reciprocal lobe F_ms (1 - E_ss(cos_o))(1 - E_ss(cos_i)) /
+ * (pi (1 - E_ss_avg)); a rough dielectric interface with the exact Fresnel factor has its
+ * reflection and refraction divided by its energy albedo G(cos_o) from the side of wo
+ * (Turquin 2019; tabulated, LAYER_TABLE_GLASS_*). -DPATHCL_SINGLE_SCATTERING turns this
+ * off (pbrt's and Mitsuba's model, for cross-checks).
+ *
+ * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
+ * the interface with probabilities estimated from their albedos at the macro normal
+ * (computed once per shading point by bsdf_params); the GGX lobes sample a visible
+ * facet (Dupuy and Benyoub 2023), and the interface then reflects or refracts by that
+ * facet's own energy split (as pbrt does), so refraction under the macro critical angle
+ * is still sampled well. The weight is f cos / pdf with f and pdf summed over every
+ * non-delta lobe: exactly what bsdf_eval returns, divided by its pdf.
  *
  * Scenes whose materials are all Lambertian compile only the Lambertian code (no
  * PATHCL_HAS_GLOSSY / PATHCL_HAS_TRANSMISSION): they pay nothing for the rest. */
@@ -62,6 +72,7 @@ typedef struct {
     float3 wi;
     float3 weight; /* f cos / pdf */
     float pdf;     /* solid angle; 0: no sample. For a delta lobe: its selection probability */
+    float eta2;    /* eta^2 when wi refracted into a solid (the weight holds 1/eta^2), else 1 */
     bool delta;
 } BsdfSample;
 
@@ -70,9 +81,11 @@ typedef struct {
     float pdf;    /* of bsdf_sample producing wi */
 } BsdfEval;
 
-/* Lobe selection probabilities for sampling. */
+/* Lobe selection probabilities for sampling: the diffuse base (with the conductor's
+ * multiple-scattering lobe), the conductor's GGX reflection, and the dielectric interface
+ * (its reflection and refraction, split per facet by interface_split). */
 typedef struct {
-    float diffuse, specular, transmission;
+    float diffuse, conductor, interface;
 } LobeChoice;
 
 /* The material at one shading point, for one wo (textures, when present, are applied
@@ -94,6 +107,10 @@ typedef struct {
     float cos_o;          /* wo against the shading normal, >= 0 */
     __global const float* layer; /* LAYER_* tables */
     float layer_r, layer_x;      /* continuous table coordinates of roughness and ior */
+    float ess_o;                 /* GGX albedo with Fresnel 1 from wo (rough lobes) */
+    float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
+    float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
+    float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
     LobeChoice lobes;
 #endif
 } BsdfParams;
@@ -170,10 +187,13 @@ static inline float3 fresnel_specular_layer(const BsdfParams* p, float cos_i)
     return p->specular * (p->f0c + (1.0f - p->f0c) * s);
 }
 
-/* Reflectance of the specular reflection lobe: conductor and dielectric layer mixed. */
+/* Reflectance of the specular reflection lobe: conductor and dielectric layer mixed. The
+ * transmissive share of the layer is the rough interface, whose energy is restored by
+ * glass_scale (1 when smooth, or when there is none). */
 static inline float3 fresnel_reflection(const BsdfParams* p, float cos_i, float3 f_layer)
 {
-    return p->metallic * fresnel_schlick(p->base_color, cos_i) + (1.0f - p->metallic) * f_layer;
+    float layer_scale = (1.0f - p->transmission) + p->transmission * p->glass_scale;
+    return p->metallic * fresnel_schlick(p->base_color, cos_i) + (1.0f - p->metallic) * layer_scale * f_layer;
 }
 
 /* What the dielectric layer lets through to the transmission lobe. */
@@ -190,6 +210,27 @@ static inline float layer_bilinear(__global const float* t, int offset, int cols
     __global const float* a = t + offset + r0 * cols + c0;
     float top = mix(a[0], a[1], fc), bottom = mix(a[cols], a[cols + 1], fc);
     return mix(top, bottom, fr);
+}
+
+/* The GGX reflection lobe's albedo with Fresnel 1 from cos theta (rough lobes only). */
+static inline float ess_albedo(const BsdfParams* p, float mu)
+{
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    return layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+}
+
+/* The rough dielectric interface's energy albedo (reflection plus refraction) from cos
+ * theta, outside or inside the solid. */
+static inline float interface_albedo(const BsdfParams* p, float mu)
+{
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    float x = p->layer_x * (float)(LAYER_GLASS_ETA_RES - 1) / (float)(LAYER_ETA_RES - 1);
+    int x0 = min((int)x, LAYER_GLASS_ETA_RES - 2);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    int base = p->inside ? LAYER_TABLE_GLASS_IN : LAYER_TABLE_GLASS_OUT;
+    float g0 = layer_bilinear(p->layer, base + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float g1 = layer_bilinear(p->layer, base + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    return mix(g0, g1, x - (float)x0);
 }
 
 /* The dielectric layer's directional albedo E(cos theta), per channel: exact for a
@@ -278,32 +319,48 @@ static inline bool refract_dir(float3 wo, float3 n, float eta, float3* wt)
     return true;
 }
 
-/* Lobe probabilities from each lobe's albedo as seen from wo at the macro normal. A delta
- * lobe's estimate is exact; a rough lobe that exists gets at least LOBE_ESTIMATE_FLOOR,
- * since its microfacets can reflect (or refract) where the macro surface would not. */
+/* Lobe probabilities from each lobe's albedo as seen from wo at the macro normal. A rough
+ * lobe that exists gets at least LOBE_ESTIMATE_FLOOR of its weight, since its facets can
+ * reflect where the macro surface barely does (a black conductor at normal incidence). */
 static inline LobeChoice choose_lobes(const BsdfParams* p)
 {
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 f_layer = fresnel_specular_layer(p, p->cos_o);
     LobeChoice c;
-    c.specular = p->metallic * mean3(fresnel_schlick(p->base_color, p->cos_o)) +
-                 (1.0f - p->metallic) * mean3(p->inside ? f_layer : p->layer_o);
     c.diffuse = p->inside ? 0.0f
                           : (1.0f - p->metallic) * (1.0f - p->transmission) * mean3(p->base_color * (1.0f - p->layer_o));
-    c.transmission = base_weight(p, f_layer) * p->transmission * mean3(p->base_color);
-    bool has_specular = p->metallic > 0.0f || (p->specular > 0.0f && p->eta != 1.0f);
-    bool has_transmission = (1.0f - p->metallic) * p->transmission > 0.0f && max3(p->base_color) > 0.0f;
-    if (rough && has_specular)
-        c.specular = fmax(c.specular, LOBE_ESTIMATE_FLOOR);
-    if (rough && has_transmission)
-        c.transmission = fmax(c.transmission, LOBE_ESTIMATE_FLOOR);
-    float sum = c.specular + c.diffuse + c.transmission;
+    c.diffuse += mean3(p->ms_albedo); /* the conductor's multiple scattering, sampled alike */
+    c.conductor = p->metallic * mean3(fresnel_schlick(p->base_color, p->cos_o));
+    /* The interface: the coat's reflection over the diffuse base, and the glass (whose
+     * compensated albedo is reflection plus tinted refraction). */
+    float coat = mean3(p->inside ? f_layer : p->layer_o);
+    float glass = mean3(f_layer) + (1.0f - max3(f_layer)) * mean3(p->base_color);
+    c.interface = (1.0f - p->metallic) * ((1.0f - p->transmission) * coat + p->transmission * glass);
+    bool has_interface = (p->specular > 0.0f && p->eta != 1.0f) || p->transmission > 0.0f;
+    if (rough) {
+        c.conductor = fmax(c.conductor, LOBE_ESTIMATE_FLOOR * p->metallic);
+        if (has_interface)
+            c.interface = fmax(c.interface, LOBE_ESTIMATE_FLOOR * (1.0f - p->metallic));
+    }
+    float sum = c.diffuse + c.conductor + c.interface;
     if (sum > 0.0f) {
-        c.specular /= sum;
         c.diffuse /= sum;
-        c.transmission /= sum;
+        c.conductor /= sum;
+        c.interface /= sum;
     }
     return c;
+}
+
+/* Probability that the interface reflects rather than refracts at a facet seen at cos c
+ * from wo: its share of the facet's reflected and transmitted energy (pbrt's per-facet
+ * choice; for a white dielectric this is the Fresnel factor itself). */
+static inline float interface_split(const BsdfParams* p, float c)
+{
+    float3 f_layer = fresnel_specular_layer(p, c);
+    float layer_scale = (1.0f - p->transmission) + p->transmission * p->glass_scale;
+    float r = layer_scale * mean3(f_layer);
+    float t = p->transmission * p->glass_scale * (1.0f - max3(f_layer)) * mean3(p->base_color);
+    return r + t > 0.0f ? r / (r + t) : 1.0f;
 }
 
 /* Local-frame evaluation of the non-delta lobes; wo.z > 0 is not required (shading
@@ -316,6 +373,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
     bool rough = p->alpha >= ALPHA_DELTA;
     float a2 = p->alpha * p->alpha;
     if (reflect) {
+        e.pdf = p->lobes.diffuse * wi.z * INV_PI; /* the diffuse and multiple-scattering lobes */
         if (!p->inside) {
             float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo(p, wi.z));
             e.f_cos = p->diffuse_scale * k * wi.z;
@@ -325,7 +383,11 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
             e.f_cos = p->base_color * ((1.0f - p->metallic) * (1.0f - p->transmission) *
                                        (1.0f - max3(fresnel_specular_layer(p, fabs(dot(wo, hf))))) * INV_PI * wi.z);
 #endif
-            e.pdf = p->lobes.diffuse * wi.z * INV_PI;
+        }
+        if (rough && p->metallic > 0.0f) {
+            /* Kulla and Conty's multiple-scattering lobe: reciprocal, and with it a white
+             * rough conductor reflects everything. Sampled with the diffuse lobe. */
+            e.f_cos += p->ms_scale * ((1.0f - p->ess_o) * (1.0f - ess_albedo(p, wi.z)) * wi.z);
         }
         if (rough && wo.z > 0.0f) {
             float3 h = wo + wi;
@@ -336,7 +398,8 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
             float cos_h = fabs(dot(wo, h));
             float3 fr = fresnel_reflection(p, cos_h, fresnel_specular_layer(p, cos_h));
             e.f_cos += fr * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
-            e.pdf += p->lobes.specular * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
+            float select = p->lobes.conductor + p->lobes.interface * interface_split(p, cos_h);
+            e.pdf += select * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
         }
         return e;
     }
@@ -368,10 +431,11 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
         btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) * fabs(dot_i * dot_o) /
                (wo.z * denom * p->eta * p->eta);
     }
-    float3 f_layer = fresnel_specular_layer(p, dot(wo, wm));
-    float t = base_weight(p, f_layer) * p->transmission;
+    float c = dot(wo, wm);
+    float3 f_layer = fresnel_specular_layer(p, c);
+    float t = base_weight(p, f_layer) * p->transmission * p->glass_scale;
     e.f_cos = p->base_color * (t * btdf);
-    e.pdf = p->lobes.transmission * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
+    e.pdf = p->lobes.interface * (1.0f - interface_split(p, c)) * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
     return e;
 }
 
@@ -399,6 +463,34 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.layer_r = m->roughness * (float)(LAYER_ROUGH_RES - 1);
     p.layer_x = clamp(r / LAYER_X_MAX, 0.0f, 1.0f) * (float)(LAYER_ETA_RES - 1);
     p.cos_o = clamp(dot(wo, sp->ns), 0.0f, 1.0f);
+    p.glass_scale = 1.0f;
+    p.ms_scale = p.ms_albedo = (float3)(0.0f);
+    p.ess_o = 1.0f;
+#ifndef PATHCL_SINGLE_SCATTERING
+    if (p.alpha >= ALPHA_DELTA) {
+        /* Energy lost to masking, restored (multiple-scattering compensation). */
+        p.ess_o = ess_albedo(&p, p.cos_o);
+        if (p.metallic > 0.0f) {
+            /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
+            int r0 = min((int)p.layer_r, LAYER_ROUGH_RES - 2);
+            float e_avg = mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
+            float3 f_avg = p.base_color + (1.0f - p.base_color) * (1.0f / 21.0f);
+            float3 f_ms = f_avg * f_avg * e_avg / (1.0f - f_avg * (1.0f - e_avg));
+            if (1.0f - e_avg > 1e-4f) { /* else the loss is below 1e-4: nothing to restore */
+                p.ms_scale = p.metallic * f_ms * INV_PI / (1.0f - e_avg);
+                p.ms_albedo = p.metallic * f_ms * (1.0f - p.ess_o);
+            }
+        }
+        /* A rough interface with the exact Fresnel factor (specular 1, white specular
+         * colour) loses 1 - G(cos_o); its lobes are divided by G, as Turquin (2019) does.
+         * A thin sheet's lobe pair has the reflection lobe's albedo E_ss. */
+        bool exact_fresnel = p.specular == 1.0f && all(p.specular_color == (float3)(1.0f));
+        if (p.transmission > 0.0f && exact_fresnel) {
+            float g = p.thin ? p.ess_o : interface_albedo(&p, p.cos_o);
+            p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
+        }
+    }
+#endif
     p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
     float3 one_minus_avg = 1.0f - layer_average(&p, m);
     float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
@@ -444,6 +536,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     BsdfSample s;
     s.delta = false;
     s.pdf = 0.0f;
+    s.eta2 = 1.0f;
     s.weight = (float3)(0.0f);
     float3 t, b;
     make_basis(sp->ns, &t, &b);
@@ -460,12 +553,10 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     const LobeChoice lobes = p->lobes;
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 wi;
-    bool reflect;
+    bool reflect = true;
     if (u_lobe < lobes.diffuse) {
         wi = sample_cosine_hemisphere(u);
-        reflect = true;
-    } else if (u_lobe < lobes.diffuse + lobes.specular) {
-        reflect = true;
+    } else if (u_lobe < lobes.diffuse + lobes.conductor) {
         if (!rough) {
             /* Ideal mirror: weight F / (selection probability). */
             wi = (float3)(-wo_l.x, -wo_l.y, wo_l.z);
@@ -473,8 +564,8 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
             if (!(wi.z > 0.0f) || dot(s.wi, sp->ng) <= 0.0f)
                 return s;
             s.delta = true;
-            s.pdf = lobes.specular;
-            s.weight = fresnel_reflection(p, p->cos_o, fresnel_specular_layer(p, p->cos_o)) / lobes.specular;
+            s.pdf = lobes.conductor;
+            s.weight = p->metallic * fresnel_schlick(p->base_color, p->cos_o) / lobes.conductor;
             return s;
         }
         if (!(wo_l.z > 0.0f))
@@ -482,28 +573,44 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
         float3 wm = ggx_sample_visible(wo_l, p->alpha, u);
         wi = 2.0f * dot(wo_l, wm) * wm - wo_l;
     } else {
-        reflect = false;
-        if (!(lobes.transmission > 0.0f) || !(wo_l.z > 0.0f))
+        /* The interface: a visible facet, then reflection or refraction by its own split;
+         * the rest of u_lobe's interval is the uniform number for that choice. */
+        if (!(wo_l.z > 0.0f) || !(lobes.interface > 0.0f))
             return s;
         float3 wm = rough ? ggx_sample_visible(wo_l, p->alpha, u) : (float3)(0.0f, 0.0f, 1.0f);
-        if (p->thin) {
-            wi = 2.0f * dot(wo_l, wm) * wm - wo_l;
+        float c = dot(wo_l, wm);
+        float split = interface_split(p, c);
+        float u_split = (u_lobe - lobes.diffuse - lobes.conductor) / lobes.interface;
+        reflect = u_split < split;
+        if (reflect) {
+            wi = 2.0f * c * wm - wo_l;
+        } else if (p->thin) {
+            wi = 2.0f * c * wm - wo_l;
             wi.z = -wi.z;
         } else if (!refract_dir(wo_l, wm, p->eta, &wi)) {
-            return s; /* total internal reflection at this microfacet: the reflection lobe's job */
+            return s; /* not reached: total internal reflection makes the split 1 */
         }
         if (!rough) {
-            /* Ideal glass (or a thin sheet): weight T / (selection probability), radiance
-             * scaled by 1/eta^2 when it crosses into a solid. */
+            /* Ideal coat, glass or thin sheet: weight (F or T) / (selection probability);
+             * radiance is scaled by 1/eta^2 when it crosses into a solid. */
             s.wi = to_world(wi, t, b, sp->ns);
-            if (!(wi.z < 0.0f) || dot(s.wi, sp->ng) >= 0.0f)
+            float cos_ig = dot(s.wi, sp->ng);
+            if (reflect ? (!(wi.z > 0.0f) || !(cos_ig > 0.0f)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
                 return s;
-            float tw = base_weight(p, fresnel_specular_layer(p, p->cos_o)) * p->transmission;
-            if (!p->thin)
-                tw /= p->eta * p->eta;
+            float3 f_layer = fresnel_specular_layer(p, c);
             s.delta = true;
-            s.pdf = lobes.transmission;
-            s.weight = p->base_color * (tw / lobes.transmission);
+            if (reflect) {
+                s.pdf = lobes.interface * split;
+                s.weight = (1.0f - p->metallic) * f_layer / s.pdf;
+            } else {
+                float tw = base_weight(p, f_layer) * p->transmission;
+                if (!p->thin) {
+                    s.eta2 = p->eta * p->eta;
+                    tw /= s.eta2;
+                }
+                s.pdf = lobes.interface * (1.0f - split);
+                s.weight = p->base_color * (tw / s.pdf);
+            }
             return s;
         }
     }
@@ -516,6 +623,8 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
         return s;
     s.pdf = e.pdf;
     s.weight = e.f_cos / e.pdf;
+    if (!reflect && !p->thin)
+        s.eta2 = p->eta * p->eta;
     return s;
 #endif
 }

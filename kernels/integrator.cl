@@ -94,6 +94,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
     float3 dir = ray.direction.xyz;
     float3 radiance = (float3)(0.0f);
     float3 beta = (float3)(1.0f);
+    float eta2_product = 1.0f; /* product of the eta^2 that beta holds the inverse of */
     float prev_bsdf_pdf = 0.0f;
     bool prev_delta = true;         /* camera rays see emission with full weight */
     bool prev_technique_bsdf = true; /* one-sample: the coin chose the BSDF technique */
@@ -208,16 +209,19 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         if (!(bs.pdf > 0.0f))
             break;
         beta *= bs.weight;
+        eta2_product *= bs.eta2;
         prev_bsdf_pdf = bs.pdf;
         prev_delta = bs.delta;
         prev_technique_bsdf = !technique_light;
         origin = offset_ray_origin(sp.p, sp.p_error, sp.ng, bs.wi);
         dir = bs.wi;
 
-        /* Russian roulette: survive with probability q, divide by q (unbiased). */
+        /* Russian roulette: survive with probability q, divide by q (unbiased). q follows
+         * the energy the path carries, not its radiance: inside glass beta holds 1/eta^2,
+         * which would otherwise kill paths that are about to leave it (as pbrt does). */
         if (depth + 1u >= RR_START_BOUNCE) {
             sampler.dimension = dims + DIM_RR;
-            float q = fmin(1.0f, max_component(beta));
+            float q = fmin(1.0f, max_component(beta) * eta2_product);
             if (sampler_get_1d(&sampler) >= q)
                 break;
             beta /= q;

@@ -95,7 +95,10 @@ typedef struct {
  *   E_ss[r][mu]     albedo of the GGX reflection lobe with Fresnel 1
  *   B[x][r][mu]     albedo with the normalized Fresnel curve s(c) of bsdf.cl in place of 1
  *   E_ss_avg[r], B_avg[x][r]   their cosine-weighted hemispherical averages 2 int E mu dmu
- * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu)). 139,392 bytes. */
+ *   G_out[x'][r][mu], G_in[x'][r][mu]   energy albedo (reflection + refraction) of a rough
+ *                   dielectric interface seen from outside (eta = ior) and inside (1/ior),
+ *                   x' on a 16-point grid
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 270,464 bytes. */
 #define LAYER_MU_RES 32
 #define LAYER_ROUGH_RES 32
 #define LAYER_ETA_RES 32 /* x in [0, 0.5]: eta in [1, 3] (clamped beyond) */
@@ -104,7 +107,10 @@ typedef struct {
 #define LAYER_TABLE_B (LAYER_TABLE_ESS + LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_ESS_AVG (LAYER_TABLE_B + LAYER_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_B_AVG (LAYER_TABLE_ESS_AVG + LAYER_ROUGH_RES)
-#define LAYER_TABLE_SIZE (LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES)
+#define LAYER_GLASS_ETA_RES 16 /* x in [0, 0.5] for the dielectric interface tables */
+#define LAYER_TABLE_GLASS_OUT (LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES)
+#define LAYER_TABLE_GLASS_IN (LAYER_TABLE_GLASS_OUT + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_SIZE (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 
 /* Light types */
 #define LIGHT_TRIANGLE 0    /* an emissive triangle (area light) */

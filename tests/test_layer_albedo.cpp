@@ -68,6 +68,65 @@ TEST(LayerAlbedo, IntegrationAgreesWithABruteForceEstimate)
         }
 }
 
+// Energy albedo of a rough dielectric interface estimated as Walter et al. (2007) sample
+// it: a facet normal from D(m) cos(m) (all facets, not the visible ones), reflection with
+// probability F at it and refraction otherwise; the weight is G1(wo) G1(wi) |wo.m| /
+// (cos_o cos_m). A different estimator for the same integral. Returns mean and error.
+std::pair<double, double> walter_estimate(double mu, double roughness, double eta, int n)
+{
+    double a = roughness * roughness, a2 = a * a;
+    glm::dvec3 wo(std::sqrt(1.0 - mu * mu), 0.0, mu);
+    auto g1 = [&](const glm::dvec3& w) {
+        double t2 = (1.0 - w.z * w.z) / (w.z * w.z);
+        return 2.0 / (1.0 + std::sqrt(1.0 + a2 * t2));
+    };
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double sum = 0.0, sum_sq = 0.0;
+    for (int i = 0; i < n; ++i) {
+        // GGX: tan^2(theta_m) = a2 u / (1 - u), phi uniform.
+        double v = u(rng), t2 = a2 * v / (1.0 - v), cm = 1.0 / std::sqrt(1.0 + t2), sm = std::sqrt(1.0 - cm * cm);
+        double phi = 2.0 * kPi * u(rng);
+        glm::dvec3 m(sm * std::cos(phi), sm * std::sin(phi), cm);
+        double c = glm::dot(wo, m);
+        if (c <= 0.0)
+            continue; // a back-facing facet: weight 0
+        double f = fresnel(c, eta);
+        glm::dvec3 wi;
+        if (u(rng) < f) {
+            wi = 2.0 * c * m - wo;
+            if (wi.z <= 0.0)
+                continue;
+        } else {
+            double s2 = (1.0 - c * c) / (eta * eta);
+            wi = -wo / eta + (c / eta - std::sqrt(1.0 - s2)) * m; // F < 1: no TIR here
+            if (wi.z >= 0.0)
+                continue;
+        }
+        double w = g1(wo) * g1(wi) * c / (mu * cm);
+        sum += w;
+        sum_sq += w * w;
+    }
+    double mean = sum / n;
+    return {mean, std::sqrt((sum_sq / n - mean * mean) / n)};
+}
+
+TEST(LayerAlbedo, InterfaceAlbedoAgreesWithAnIndependentEstimate)
+{
+    // From outside (eta 1.5) and inside (1 / 1.5), where total internal reflection sends
+    // the light back: reflection plus refraction, less the energy masking loses.
+    for (double eta : {1.5, 1.0 / 1.5})
+        for (double mu : {0.3, 0.8})
+            for (double r : {0.5, 1.0}) {
+                double q = integrate_dielectric_albedo(mu, r, eta);
+                auto [m, se] = walter_estimate(mu, r, eta, 2000000);
+                EXPECT_LT(se, 2e-3);
+                EXPECT_NEAR(q, m, 5.0 * se + 1e-4) << "eta " << eta << " mu " << mu << " roughness " << r;
+                EXPECT_LT(q, 1.0);
+            }
+    EXPECT_NEAR(integrate_dielectric_albedo(0.5, 0.0, 1.5), 1.0, 1e-6); // smooth: nothing lost
+}
+
 TEST(LayerAlbedo, SmoothLayerAverageMatchesClosedFormAndLimits)
 {
     // eta 1: no interface, nothing reflected.
@@ -93,6 +152,14 @@ TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
                 float b = t[LAYER_TABLE_B + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i];
                 ASSERT_TRUE(e > 0.0f && e <= 1.0f + 1e-6f && b >= 0.0f && b <= e + 1e-6f) << i << " " << j << " " << k;
             }
+    // The interface tables: 1 for the smooth row, in (0, 1] elsewhere.
+    for (int side : {LAYER_TABLE_GLASS_OUT, LAYER_TABLE_GLASS_IN})
+        for (int k = 0; k < LAYER_GLASS_ETA_RES; ++k)
+            for (int j = 0; j < LAYER_ROUGH_RES; ++j)
+                for (int i = 0; i < LAYER_MU_RES; ++i) {
+                    float g = t[side + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i];
+                    ASSERT_TRUE(j == 0 ? g == 1.0f : (g > 0.0f && g <= 1.0f + 1e-6f)) << side << " " << i << " " << j;
+                }
     // A few entries recomputed with four times the panels.
     for (int i : {3, 17, 31})
         for (int j : {1, 9, 20, 31})
@@ -103,6 +170,18 @@ TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
                 LayerAlbedo fine = integrate_layer_albedo(mu, r, eta, 128);
                 EXPECT_NEAR(t[LAYER_TABLE_ESS + j * LAYER_MU_RES + i], fine.e_ss, 2e-4) << i << " " << j;
                 EXPECT_NEAR(t[LAYER_TABLE_B + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i], fine.b, 2e-4)
+                    << i << " " << j << " " << k;
+            }
+    for (int i : {3, 17, 31})
+        for (int j : {1, 9, 20, 31})
+            for (int k : {0, 7, 15}) {
+                double mu = std::max(std::pow(static_cast<double>(i) / (LAYER_MU_RES - 1), 2.0), 1e-6);
+                double r = static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
+                double x = static_cast<double>(LAYER_X_MAX) * k / (LAYER_GLASS_ETA_RES - 1), ior = (1 + x) / (1 - x);
+                std::size_t at = static_cast<std::size_t>((k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i);
+                EXPECT_NEAR(t[LAYER_TABLE_GLASS_OUT + at], integrate_dielectric_albedo(mu, r, ior, 64), 1e-3)
+                    << i << " " << j << " " << k;
+                EXPECT_NEAR(t[LAYER_TABLE_GLASS_IN + at], integrate_dielectric_albedo(mu, r, 1.0 / ior, 64), 1e-3)
                     << i << " " << j << " " << k;
             }
 }

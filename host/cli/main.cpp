@@ -165,6 +165,11 @@ int main(int argc, char** argv)
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
 
+    bool single_scattering = false;
+    render->add_flag("--single-scattering", single_scattering,
+                     "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
+                     "render them; for cross-checks)");
+
     app.add_subcommand("devices", "List every OpenCL platform and device with its index");
 
     CLI::App* bench = app.add_subcommand("bench", "Time repeated renders of a scene (min/median/max samples/s)");
@@ -208,6 +213,8 @@ int main(int argc, char** argv)
     try {
         if (render->parsed()) {
             opt.devices = {device};
+            if (single_scattering)
+                opt.extra_build_options += " -DPATHCL_SINGLE_SCATTERING";
             EnvironmentOverride env{env_file, env_strength, env_rotation, background};
             return run_render(scene_path, outputs, opt, env);
         }

@@ -24,6 +24,12 @@ std::vector<float> compute_layer_albedo_table(int panels = 32);
 double integrate_layer_albedo(double cos_theta, double roughness, const std::vector<double>& etas,
                               std::vector<double>& b, int panels = 16);
 
+// Energy albedo (reflection plus refraction, no 1/eta^2 radiance factor) of a rough
+// dielectric interface with the exact Fresnel factor, seen from the side wo is on; eta =
+// far ior / near ior (< 1 from inside a solid). 1 for a smooth interface; below 1 by the
+// energy that single-scattering microfacets lose to masking.
+double integrate_dielectric_albedo(double cos_theta, double roughness, double eta, int panels = 16);
+
 struct LayerAlbedo {
     double e_ss; // albedo with Fresnel 1
     double b;    // albedo with the normalized Fresnel curve s(c)

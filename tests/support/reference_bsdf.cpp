@@ -147,16 +147,72 @@ glm::dvec3 ReferenceBsdf::layer_average() const
     return specular * (f0c * (e_ss - b) + b);
 }
 
-glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h) const
+// Continuous table coordinates of this material's roughness and ior.
+static double rough_row(const ReferenceBsdf& b)
+{
+    return std::sqrt(b.alpha) * (LAYER_ROUGH_RES - 1);
+}
+
+static double mu_col(double mu)
+{
+    return std::sqrt(std::clamp(mu, 0.0, 1.0)) * (LAYER_MU_RES - 1);
+}
+
+double ReferenceBsdf::ess(double mu) const
+{
+    return table_at(layer_albedo_table(), LAYER_TABLE_ESS, LAYER_MU_RES, rough_row(*this), LAYER_ROUGH_RES, mu_col(mu));
+}
+
+double ReferenceBsdf::ess_average() const
+{
+    return table_at(layer_albedo_table(), LAYER_TABLE_ESS_AVG, LAYER_ROUGH_RES, 0.0, 2, rough_row(*this));
+}
+
+double ReferenceBsdf::interface_albedo(double mu) const
+{
+    double r = (ior - 1.0) / (ior + 1.0);
+    double x = std::clamp(r / LAYER_X_MAX, 0.0, 1.0) * (LAYER_GLASS_ETA_RES - 1);
+    int x0 = std::min(static_cast<int>(x), LAYER_GLASS_ETA_RES - 2);
+    int base = inside ? LAYER_TABLE_GLASS_IN : LAYER_TABLE_GLASS_OUT;
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    const std::vector<float>& t = layer_albedo_table();
+    double g0 = table_at(t, base + x0 * block, LAYER_MU_RES, rough_row(*this), LAYER_ROUGH_RES, mu_col(mu));
+    double g1 = table_at(t, base + (x0 + 1) * block, LAYER_MU_RES, rough_row(*this), LAYER_ROUGH_RES, mu_col(mu));
+    return g0 + (x - x0) * (g1 - g0);
+}
+
+double ReferenceBsdf::glass_scale(double cos_o) const
+{
+    bool exact_fresnel = specular == 1.0 && specular_color == glm::dvec3(1.0);
+    if (!rough() || transmission <= 0.0 || !exact_fresnel)
+        return 1.0;
+    double g = thin ? ess(cos_o) : interface_albedo(cos_o);
+    return g > 1e-3 ? 1.0 / g : 1.0;
+}
+
+glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(double cos_o, double cos_i) const
+{
+    if (!rough() || metallic <= 0.0)
+        return glm::dvec3(0.0);
+    double e_avg = ess_average();
+    if (1.0 - e_avg <= 1e-4)
+        return glm::dvec3(0.0);
+    glm::dvec3 f_avg = base_color + (glm::dvec3(1.0) - base_color) / 21.0;
+    glm::dvec3 f_ms = f_avg * f_avg * e_avg / (glm::dvec3(1.0) - f_avg * (1.0 - e_avg));
+    return metallic * f_ms * ((1.0 - ess(cos_o)) * (1.0 - ess(cos_i)) / (kPi * (1.0 - e_avg)) * cos_i);
+}
+
+glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h, double cos_o) const
 {
     double m = std::clamp(1.0 - cos_h, 0.0, 1.0);
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(m, 5.0);
-    return metallic * schlick + (1.0 - metallic) * layer_fresnel(*this, cos_h);
+    double layer_scale = (1.0 - transmission) + transmission * glass_scale(cos_o);
+    return metallic * schlick + (1.0 - metallic) * layer_scale * layer_fresnel(*this, cos_h);
 }
 
-glm::dvec3 ReferenceBsdf::transmittance(double cos_h) const
+glm::dvec3 ReferenceBsdf::transmittance(double cos_h, double cos_o) const
 {
-    return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission);
+    return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission * glass_scale(cos_o));
 }
 
 ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
@@ -167,25 +223,42 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
     glm::dvec3 e_o = inside ? glm::dvec3(0.0) : layer_albedo(cos_o);
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - cos_o, 5.0);
     Lobes l{};
-    l.specular = metallic * mean3(schlick) + (1.0 - metallic) * mean3(inside ? layer : e_o);
     l.diffuse = inside ? 0.0 : (1.0 - metallic) * (1.0 - transmission) * mean3(base_color * (glm::dvec3(1.0) - e_o));
-    l.transmission = base_weight(*this, layer) * transmission * mean3(base_color);
-    bool has_specular = metallic > 0.0 || (specular > 0.0 && eta != 1.0);
-    bool has_transmission = (1.0 - metallic) * transmission > 0.0 && max3(base_color) > 0.0;
+    if (rough() && metallic > 0.0 && 1.0 - ess_average() > 1e-4) { // the multiple-scattering lobe
+        glm::dvec3 f_avg = base_color + (glm::dvec3(1.0) - base_color) / 21.0;
+        double e_avg = ess_average();
+        glm::dvec3 f_ms = f_avg * f_avg * e_avg / (glm::dvec3(1.0) - f_avg * (1.0 - e_avg));
+        l.diffuse += mean3(metallic * f_ms * (1.0 - ess(cos_o)));
+    }
+    l.conductor = metallic * mean3(schlick);
+    double coat = mean3(inside ? layer : e_o);
+    double glass = mean3(layer) + (1.0 - max3(layer)) * mean3(base_color);
+    l.interface = (1.0 - metallic) * ((1.0 - transmission) * coat + transmission * glass);
     const double floor = 0.02; // kernels/bsdf.cl LOBE_ESTIMATE_FLOOR
-    if (rough() && has_specular)
-        l.specular = std::max(l.specular, floor);
-    if (rough() && has_transmission)
-        l.transmission = std::max(l.transmission, floor);
-    double sum = l.diffuse + l.specular + l.transmission;
+    bool has_interface = (specular > 0.0 && eta != 1.0) || transmission > 0.0;
+    if (rough()) {
+        l.conductor = std::max(l.conductor, floor * metallic);
+        if (has_interface)
+            l.interface = std::max(l.interface, floor * (1.0 - metallic));
+    }
+    double sum = l.diffuse + l.conductor + l.interface;
     if (sum > 0.0) {
         l.diffuse /= sum;
-        l.specular /= sum;
-        l.transmission /= sum;
+        l.conductor /= sum;
+        l.interface /= sum;
     }
     cached_cos_o_ = cos_o;
     cached_lobes_ = l;
     return l;
+}
+
+double ReferenceBsdf::interface_split(double c, double cos_o) const
+{
+    glm::dvec3 layer = layer_fresnel(*this, c);
+    double layer_scale = (1.0 - transmission) + transmission * glass_scale(cos_o);
+    double r = layer_scale * mean3(layer);
+    double t = transmission * glass_scale(cos_o) * (1.0 - max3(layer)) * mean3(base_color);
+    return r + t > 0.0 ? r / (r + t) : 1.0;
 }
 
 glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
@@ -202,8 +275,9 @@ glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) cons
                     f[ch] = base_color[ch] * (1.0 - metallic) * (1.0 - transmission) / kPi * (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) *
                             (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] * wi.z;
         }
+        f += multiple_scattering_f_cos(std::max(wo.z, 0.0), wi.z);
         if (rough() && wo.z > 0.0)
-            f += specular_reflectance(c) * (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+            f += specular_reflectance(c, wo.z) * (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
         return f;
     }
     if (wi.z == 0.0 || !rough() || wo.z <= 0.0 || transmission <= 0.0)
@@ -214,7 +288,7 @@ glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) cons
         double c = glm::dot(wo, m);
         if (c <= 0.0)
             return glm::dvec3(0.0);
-        return transmittance(c) * (ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+        return transmittance(c, wo.z) * (ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
     }
     // Walter et al. 2007, radiance scaled by 1/eta^2 across the interface.
     glm::dvec3 m = glm::normalize(wi * eta + wo);
@@ -225,17 +299,19 @@ glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) cons
         return glm::dvec3(0.0);
     double denom = (di + dn / eta) * (di + dn / eta);
     double ft = ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) * std::abs(di * dn) / (wo.z * denom * eta * eta);
-    return transmittance(dn) * ft;
+    return transmittance(dn, wo.z) * ft;
 }
 
 double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
 {
     Lobes l = lobes(std::max(wo.z, 0.0));
     if (wi.z > 0.0) {
-        double p = inside ? 0.0 : l.diffuse * wi.z / kPi;
+        double p = l.diffuse * wi.z / kPi; // diffuse and multiple-scattering lobes
         if (rough() && wo.z > 0.0) {
             glm::dvec3 h = glm::normalize(wo + wi);
-            p += l.specular * visible_normal_pdf(wo, h, alpha) / (4.0 * std::abs(glm::dot(wo, h)));
+            double c = std::abs(glm::dot(wo, h));
+            double select = l.conductor + l.interface * interface_split(c, std::max(wo.z, 0.0));
+            p += select * visible_normal_pdf(wo, h, alpha) / (4.0 * c);
         }
         return p;
     }
@@ -244,7 +320,8 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     if (thin) {
         glm::dvec3 m = glm::normalize(wo + glm::dvec3(wi.x, wi.y, -wi.z));
         double c = glm::dot(wo, m);
-        return c > 0.0 ? l.transmission * visible_normal_pdf(wo, m, alpha) / (4.0 * c) : 0.0;
+        return c > 0.0 ? l.interface * (1.0 - interface_split(c, wo.z)) * visible_normal_pdf(wo, m, alpha) / (4.0 * c)
+                       : 0.0;
     }
     glm::dvec3 m = glm::normalize(wi * eta + wo);
     if (m.z < 0.0)
@@ -253,7 +330,7 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     if (dn <= 0.0 || di >= 0.0)
         return 0.0;
     double denom = (di + dn / eta) * (di + dn / eta);
-    return l.transmission * visible_normal_pdf(wo, m, alpha) * std::abs(di) / denom;
+    return l.interface * (1.0 - interface_split(dn, wo.z)) * visible_normal_pdf(wo, m, alpha) * std::abs(di) / denom;
 }
 
 } // namespace pathcl::test

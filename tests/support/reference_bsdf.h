@@ -31,11 +31,14 @@ struct ReferenceBsdf {
     // Solid-angle density with which the kernel's sampler returns wi (non-delta lobes).
     double pdf(const glm::dvec3& wo, const glm::dvec3& wi) const;
 
-    // Lobe selection probabilities at cos theta_o (delta lobes included).
+    // Lobe selection probabilities at cos theta_o (delta lobes included): the diffuse
+    // base (with the conductor's multiple scattering), the conductor, the interface.
     struct Lobes {
-        double diffuse, specular, transmission;
+        double diffuse, conductor, interface;
     };
     Lobes lobes(double cos_o) const;
+    // Probability that the interface reflects (not refracts) at a facet seen at cos c.
+    double interface_split(double c, double cos_o) const;
 
 private:
     // lobes() for the last cos_o asked (the chi-square integration asks millions of times).
@@ -45,9 +48,19 @@ private:
 public:
 
     // Reflectance of the specular reflection lobe and transmittance weight of the
-    // transmission lobe (without the 1/eta^2 radiance scaling) at cos(wo, microfacet).
-    glm::dvec3 specular_reflectance(double cos_h) const;
-    glm::dvec3 transmittance(double cos_h) const;
+    // transmission lobe (without the 1/eta^2 radiance scaling) at cos(wo, microfacet),
+    // with the rough interface's energy compensation for wo at cos_o.
+    glm::dvec3 specular_reflectance(double cos_h, double cos_o) const;
+    glm::dvec3 transmittance(double cos_h, double cos_o) const;
+
+    // Multiple-scattering compensation (see kernels/bsdf.cl): the GGX albedo with Fresnel
+    // 1 and its average, the rough dielectric interface's energy albedo, the factor that
+    // divides the interface's lobes, and the conductor's Kulla-Conty lobe.
+    double ess(double cos_theta) const;
+    double ess_average() const;
+    double interface_albedo(double cos_theta) const;
+    double glass_scale(double cos_o) const;
+    glm::dvec3 multiple_scattering_f_cos(double cos_o, double cos_i) const;
 
     // The dielectric layer's directional albedo E(cos theta) and its cosine-weighted
     // average, as the kernels read them: interpolated from layer_albedo_table() for a
