@@ -2,8 +2,10 @@
  *
  * Directions are world-space unit vectors; wo points away from the surface, towards the
  * previous vertex. The shading point has ng and ns on wo's side. A direction is reflected
- * only if it lies above both the geometric and the shading surface, and transmitted only
- * if it lies below both: that keeps shading normals from leaking light through geometry.
+ * only if it lies above the shading surface and above the geometric one (or the point
+ * is lifted onto the smooth surface, see above_surface in geometry.cl), and transmitted
+ * only if it lies below both: that keeps shading normals from leaking light through
+ * geometry.
  *
  * The material model is glTF's metallic-roughness BSDF (glTF 2.0 appendix B) with
  * KHR_materials_specular, _transmission, _ior and _volume:
@@ -509,7 +511,7 @@ static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, fl
     float cos_i = dot(wi, sp->ns), cos_ig = dot(wi, sp->ng);
 #ifndef PATHCL_FULL_BSDF
     /* Lambertian with albedo = base colour. */
-    if (cos_i <= 0.0f || cos_ig <= 0.0f)
+    if (cos_i <= 0.0f || !above_surface(sp, cos_ig))
         return e;
     e.f_cos = p->base_color * (INV_PI * cos_i);
 #ifdef PATHCL_FAULT_LAMBERT_NO_COSINE
@@ -519,7 +521,7 @@ static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, fl
     e.pdf = cos_i * INV_PI;
     return e;
 #else
-    bool reflect = cos_i > 0.0f && cos_ig > 0.0f;
+    bool reflect = cos_i > 0.0f && above_surface(sp, cos_ig);
     bool transmit = cos_i < 0.0f && cos_ig < 0.0f;
     if (!reflect && !transmit)
         return e;
@@ -543,7 +545,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
 #ifndef PATHCL_FULL_BSDF
     float3 wi = sample_cosine_hemisphere(u);
     s.wi = to_world(wi, t, b, sp->ns);
-    if (wi.z <= 0.0f || dot(s.wi, sp->ng) <= 0.0f)
+    if (wi.z <= 0.0f || !above_surface(sp, dot(s.wi, sp->ng)))
         return s;
     s.pdf = wi.z * INV_PI;
     s.weight = p->base_color; /* (albedo / pi) cos / (cos / pi) */
@@ -561,7 +563,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
             /* Ideal mirror: weight F / (selection probability). */
             wi = (float3)(-wo_l.x, -wo_l.y, wo_l.z);
             s.wi = to_world(wi, t, b, sp->ns);
-            if (!(wi.z > 0.0f) || dot(s.wi, sp->ng) <= 0.0f)
+            if (!(wi.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
                 return s;
             s.delta = true;
             s.pdf = lobes.conductor;
@@ -595,7 +597,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
              * radiance is scaled by 1/eta^2 when it crosses into a solid. */
             s.wi = to_world(wi, t, b, sp->ns);
             float cos_ig = dot(s.wi, sp->ng);
-            if (reflect ? (!(wi.z > 0.0f) || !(cos_ig > 0.0f)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
+            if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
                 return s;
             float3 f_layer = fresnel_specular_layer(p, c);
             s.delta = true;
@@ -616,7 +618,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     }
     s.wi = to_world(wi, t, b, sp->ns);
     float cos_ig = dot(s.wi, sp->ng);
-    if (reflect ? (!(wi.z > 0.0f) || !(cos_ig > 0.0f)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
+    if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
         return s;
     BsdfEval e = bsdf_eval_local(p, wo_l, wi, reflect);
     if (!(e.pdf > 0.0f))

@@ -8,6 +8,10 @@
 typedef struct {
     float3 p;       /* world position, from barycentrics (more accurate than o + t d) */
     float3 p_error; /* per-axis bound on |p - exact p| */
+    float3 p_smooth; /* p lifted onto the smooth surface the vertex normals describe (Hanika
+                      * 2021): where reflected rays start, so that a coarse mesh with
+                      * smooth normals has no dark band at the shadow terminator */
+    bool lifted;     /* p_smooth is clearly above the triangle (beyond rounding) */
     float3 ng;      /* geometric normal, flipped to the side the ray came from */
     float3 ns;      /* shading normal, in the same hemisphere as ng */
     bool front_face; /* the ray hit the counter-clockwise (emitting) side */
@@ -60,6 +64,23 @@ static inline SurfacePoint surface_point(__global const Triangle* triangles,
     }
     sp.ng = ng;
     sp.ns = ns;
+    /* Hanika's terminator offset: for each vertex, the part of p below the plane through
+     * that vertex perpendicular to its normal (on wo's side), lifted out of it, weighted
+     * by the barycentrics. Zero on flat triangles and wherever the mesh is concave. */
+    sp.p_smooth = sp.p;
+    sp.lifted = false;
+    float3 n0 = sh.n0.xyz, n1 = sh.n1.xyz, n2 = sh.n2.xyz, front = c / len;
+    if (any(n0 != n1) || any(n0 != n2) || any(n0 != front)) {
+        n0 = dot(n0, front) < 0.0f ? -n0 : n0; /* vertex normals on the front side */
+        n1 = dot(n1, front) < 0.0f ? -n1 : n1;
+        n2 = dot(n2, front) < 0.0f ? -n2 : n2;
+        float side = sp.front_face ? 1.0f : -1.0f;
+        float3 lift = b0 * fmin(0.0f, side * dot(sp.p - v0, n0)) * n0 +
+                      hit.b1 * fmin(0.0f, side * dot(sp.p - v1, n1)) * n1 +
+                      hit.b2 * fmin(0.0f, side * dot(sp.p - v2, n2)) * n2;
+        sp.p_smooth = sp.p - side * lift;
+        sp.lifted = -side * dot(lift, ng) > 4.0f * dot(fabs(ng), sp.p_error);
+    }
     sp.material = sh.material;
     sp.emitter = sh.emitter;
     return sp;
@@ -81,3 +102,24 @@ static inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float
 /* The part of a shadow ray's segment that is tested, as a fraction of its length:
  * stops short of the offset end point so the light's own surface is never hit. */
 #define SHADOW_RAY_EXTENT (1.0f - 1.0e-4f)
+
+/* Whether a direction on the shading normal's side (cos_ig = its cosine with ng) counts
+ * as leaving on wo's side. Above the geometric surface it does. Below it only where the
+ * point is lifted onto the smooth surface: a ray from there towards wi that meets the
+ * mesh is shadowed by it, as the coarse mesh would shadow it, and one that clears it is
+ * lit, as the smooth surface would be; that is Hanika's terminator fix. Without a lift a
+ * ray below the triangle would start behind it and could leak light through it. */
+static inline bool above_surface(const SurfacePoint* sp, float cos_ig)
+{
+    return cos_ig > 0.0f || sp->lifted;
+}
+
+/* Origin for a ray leaving the surface point in direction w: a reflected ray (on the
+ * shading normal's side) from the smooth surface, pushed off wo's side of the triangle;
+ * a transmitted one from the triangle, pushed off its far side. */
+static inline float3 spawn_ray_origin(const SurfacePoint* sp, float3 w)
+{
+    if (dot(w, sp->ns) > 0.0f && above_surface(sp, dot(w, sp->ng)))
+        return offset_ray_origin(sp->p_smooth, sp->p_error, sp->ng, sp->ng);
+    return offset_ray_origin(sp->p, sp->p_error, sp->ng, w);
+}

@@ -176,7 +176,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                     /* The shadow ray's segment: unbounded towards a directional light,
                      * else up to just short of the light point (offset off an area
                      * light's surface so the light itself never blocks). */
-                    float3 from = offset_ray_origin(sp.p, sp.p_error, sp.ng, ls.wi);
+                    float3 from = spawn_ray_origin(&sp, ls.wi);
                     float3 shadow_dir = ls.wi;
                     float shadow_t_max = INFINITY;
                     if (!ls.at_infinity) {
@@ -213,7 +213,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         prev_bsdf_pdf = bs.pdf;
         prev_delta = bs.delta;
         prev_technique_bsdf = !technique_light;
-        origin = offset_ray_origin(sp.p, sp.p_error, sp.ng, bs.wi);
+        origin = spawn_ray_origin(&sp, bs.wi);
         dir = bs.wi;
 
         /* Russian roulette: survive with probability q, divide by q (unbiased). q follows

@@ -7,6 +7,8 @@ static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
     SurfacePoint sp;
     sp.p = (float3)(0.0f);
     sp.p_error = (float3)(0.0f);
+    sp.p_smooth = sp.p;
+    sp.lifted = false;
     sp.ng = normal;
     sp.ns = normal;
     sp.front_face = front_face != 0u;

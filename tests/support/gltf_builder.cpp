@@ -186,7 +186,8 @@ void GltfBuilder::add_root(int node)
     model.scenes[0].nodes.push_back(node);
 }
 
-int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward)
+int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward,
+                                 bool smooth_normals)
 {
     std::vector<glm::vec3> p;
     for (int i = 0; i <= stacks; ++i) {
@@ -214,7 +215,12 @@ int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int mate
         }
     int pos = add_positions(p);
     int ind = add_indices(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-    return add_mesh(pos, ind, material);
+    if (!smooth_normals)
+        return add_mesh(pos, ind, material);
+    std::vector<glm::vec3> n;
+    for (const glm::vec3& v : p)
+        n.push_back(glm::normalize(v) * (inward ? -1.0f : 1.0f));
+    return add_mesh(pos, ind, material, 4, add_normals(n));
 }
 
 } // namespace pathcl::test

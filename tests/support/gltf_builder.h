@@ -53,8 +53,10 @@ public:
     void add_root(int node);
 
     // A UV sphere (stacks x slices) of the given radius; normals point inward when
-    // `inward` (the front face then faces the centre).
-    int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward);
+    // `inward` (the front face then faces the centre). smooth_normals: a NORMAL
+    // attribute with the sphere's own (radial) normals, for smooth shading.
+    int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward,
+                        bool smooth_normals = false);
 
     tinygltf::Model model;
 };
