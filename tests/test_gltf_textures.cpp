@@ -490,8 +490,8 @@ Quad quad_with_image(const tinygltf::Image& image)
 TEST(GltfImages, FileUrisResolveAgainstTheGltfFilesDirectory)
 {
     // The scene sits in a subdirectory and names "tex/a.png"; the working directory is
-    // elsewhere. Also a data: URI. Broken variant seen to fail: a loader without the
-    // image callback (tinygltf's stb decoder is not built in: the image stays empty).
+    // elsewhere. Also a data: URI. Broken variant seen to fail: the URI check rejecting
+    // every path with a directory part.
     TempDir dir;
     fs::create_directories(dir.path() / "scene" / "tex");
     write_bytes(dir.path() / "scene" / "tex" / "a.png", kPngRgba8);

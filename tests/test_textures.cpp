@@ -169,8 +169,8 @@ TEST(TextureLookup, TexelCentresReturnTheTexelExactly)
 TEST(TextureLookup, BilinearMidpointsAreExact)
 {
     // Between two texel centres the weights are exactly 1/2; between four, 1/4 each.
-    // Broken variant seen to fail: weights from the texel index without the half-texel
-    // shift (u W instead of u W - 0.5).
+    // Broken variant seen to fail: the u and v fractions exchanged (invisible at texel
+    // centres, where both are 0).
     TextureSet set;
     auto rgba = four_by_two();
     int img = set.add_image8(4, 2, rgba);
@@ -193,8 +193,8 @@ TEST(TextureLookup, BilinearMidpointsAreExact)
 TEST(TextureLookup, WrapModesOnBothSidesOfTheUnitSquare)
 {
     // Texel i of a 4 x 1 image (nearest) at u = (i + 0.5) / 4 for i = -5 .. 8, each mode;
-    // the v axis (a 1 x 4 image) with a different mode than u. Broken variants seen to
-    // fail: mirrored repeat with period W instead of 2W; repeat with C's % on negative i.
+    // the v axis (a 1 x 4 image) with a different mode than u. Broken variant seen to
+    // fail: mirrored repeat with period W instead of 2W.
     TextureSet set;
     const std::vector<std::uint8_t> row = {10, 0, 0, 255, 20, 0, 0, 255, 30, 0, 0, 255, 40, 0, 0, 255};
     int wide = set.add_image8(4, 1, row), tall = set.add_image8(1, 4, row);
@@ -230,8 +230,10 @@ TEST(TextureLookup, WrapModesOnBothSidesOfTheUnitSquare)
 TEST(TextureLookup, BilinearBlendsAcrossTheWrapSeam)
 {
     // At u = 0 (between texel -1 and texel 0): repeat blends the last and first texels,
-    // clamp and mirrored repeat return the first. Broken variant seen to fail: wrapping
-    // the coordinate but not the neighbour's index (reads texel 4 of a 4-wide image).
+    // clamp and mirrored repeat return the first (and at u = 1, the last). Broken variants
+    // seen to fail: the right neighbour's index not wrapped (clamp reads texel 4 of a
+    // 4-wide image); repeat with C's % left negative for texel -1 (reads before the
+    // image: the test binary crashed).
     TextureSet set;
     std::vector<std::uint8_t> row = {0, 0, 0, 255, 40, 0, 0, 255, 80, 0, 0, 255, 200, 0, 0, 255};
     int img = set.add_image8(4, 1, row);
@@ -391,12 +393,28 @@ Scene textured_quad(const QuadOptions& o)
     m.emissiveTexture.index = b.add_texture(b.add_png_image(1, 1, {255, 128, 0, 255}));
     m.normalTexture.index = b.add_texture(b.add_png_image(1, 1, o.normal_texel));
     m.normalTexture.scale = o.normal_scale;
+    // KHR_materials_specular and _transmission textures (factors 0.8, (1, 0.5, 1), 0.6).
+    auto info = [](int index) {
+        tinygltf::Value::Object obj;
+        obj["index"] = tinygltf::Value(index);
+        return tinygltf::Value(obj);
+    };
+    tinygltf::Value::Object spec, trans;
+    spec["specularFactor"] = tinygltf::Value(0.8);
+    spec["specularColorFactor"] =
+        tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(1.0), tinygltf::Value(0.5), tinygltf::Value(1.0)});
+    spec["specularTexture"] = info(b.add_texture(b.add_png_image(1, 1, {10, 20, 30, 153})));
+    spec["specularColorTexture"] = info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 255})));
+    m.extensions["KHR_materials_specular"] = tinygltf::Value(spec);
+    trans["transmissionFactor"] = tinygltf::Value(0.6);
+    trans["transmissionTexture"] = info(b.add_texture(b.add_png_image(1, 1, {51, 200, 200, 255})));
+    m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
     b.add_root(b.add_node(mesh));
     return import_gltf(b.model, "quad.gltf");
 }
 
 struct MaterialProbe {
-    std::vector<pcl_float4> normal, base_color, emission, params;
+    std::vector<pcl_float4> normal, base_color, emission, specular_color, params;
 };
 
 // test_material_inputs at barycentrics (b1, b2) of scene triangle 0, seen along -wo.
@@ -425,7 +443,7 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
     std::vector<cl::Buffer> bufs = {upload(ds.triangles), upload(ds.shading), upload(ds.materials), upload(hits),
                                     upload(wos)};
     std::vector<cl::Buffer> outs;
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < 5; ++i)
         outs.emplace_back(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl_uint a = 6;
     for (cl::Buffer& b : bufs)
@@ -433,7 +451,8 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
     for (cl::Buffer& b : outs)
         k.setArg(a++, b);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n)};
+    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n),
+            read_back(outs[4], n)};
 }
 
 glm::vec3 v3(const pcl_float4& p) { return {p.x, p.y, p.z}; }
@@ -441,8 +460,10 @@ glm::vec3 v3(const pcl_float4& p) { return {p.x, p.y, p.z}; }
 TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
 {
     // base = factor x sRGB texel x COLOR_0; metallic = factor x B, roughness = factor x G;
-    // emission = factor x sRGB texel. Broken variants seen to fail: metallic from G and
-    // roughness from B (swapped channels); emission texels read as linear.
+    // emission = factor x sRGB texel; specular = factor x A, specular colour = factor x
+    // sRGB texel, transmission = factor x R. Broken variants seen to fail: metallic from G
+    // and roughness from B (swapped channels); emission texels read as linear; specular
+    // from R instead of A.
     Scene scene = textured_quad({});
     MaterialProbe p = probe(scene, {{0.2f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
     glm::vec3 base(0.8f * srgb8_to_linear(188) * 0.5f, 0.6f * srgb8_to_linear(128), 0.4f * srgb8_to_linear(64));
@@ -453,17 +474,22 @@ TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
     glm::vec3 emission(2.0f * srgb8_to_linear(255), 2.0f * srgb8_to_linear(128), 0.0f);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(v3(p.emission[0])[c], emission[c], 1e-6f) << "emission channel " << c;
+    EXPECT_NEAR(p.params[0].z, 0.8f * 153.0f / 255.0f, 1e-6f) << "specular";
+    glm::vec3 specular_color(srgb8_to_linear(255), 0.5f * srgb8_to_linear(188), srgb8_to_linear(64));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(v3(p.specular_color[0])[c], specular_color[c], 1e-6f) << "specular colour channel " << c;
+    EXPECT_NEAR(p.params[0].w, 0.6f * 51.0f / 255.0f, 1e-6f) << "transmission";
 }
 
 TEST(MaterialInputs, NormalMapTiltsAlongTheTangentFrame)
 {
-    // Texel (192, 128, 255) is n_t = (129, 1, 255) / 255 / |.|: towards +u (the tangent)
-    // and a hair towards "up" in the image (the bitangent, -v: +y here). For an upright UV
-    // layout the tangent is +x; for a mirrored one (u along -x) it is -x, with the
-    // bitangent still +y (handedness w = -1). Computed and file tangents agree. Broken
-    // variants seen to fail: bitangent without the handedness sign (mirrored case);
-    // bitangent along +dP/dv (the y component flips); the geometric instead of the
-    // mapped normal.
+    // Texel (192, 80, 255) is n_t = (129, -95, 255) / 255 / |.|: towards +u (the
+    // tangent) and "down" in the image (against the bitangent, which points up the image,
+    // along -v: +y here). For an upright UV layout the tangent is +x; for a mirrored one
+    // (u along -x) it is -x, with the bitangent still +y (handedness w = -1). Computed
+    // and file tangents agree. Broken variants seen to fail: the bitangent without the
+    // handedness sign (mirrored layouts); computed handedness from +dP/dv (the loader's
+    // tangents.cpp); the normal map not applied.
     for (bool mirrored : {false, true})
         for (bool file_tangents : {false, true}) {
             SCOPED_TRACE(std::string(mirrored ? "mirrored UVs" : "upright UVs") +
@@ -471,9 +497,9 @@ TEST(MaterialInputs, NormalMapTiltsAlongTheTangentFrame)
             QuadOptions o;
             o.mirrored_uv = mirrored;
             o.file_tangents = file_tangents;
-            o.normal_texel = {192, 128, 255, 255};
+            o.normal_texel = {192, 80, 255, 255};
             MaterialProbe p = probe(textured_quad(o), {{0.3f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
-            double right = 2.0 * 192.0 / 255.0 - 1.0, up = 2.0 * 128.0 / 255.0 - 1.0;
+            double right = 2.0 * 192.0 / 255.0 - 1.0, up = 2.0 * 80.0 / 255.0 - 1.0;
             glm::dvec3 expected = glm::normalize(glm::dvec3(mirrored ? -right : right, up, 1.0));
             glm::dvec3 got(v3(p.normal[0]));
             EXPECT_LT(glm::length(got - expected), 1e-5) << got.x << " " << got.y << " " << got.z;
@@ -484,6 +510,8 @@ TEST(MaterialInputs, NormalScaleAndBackFaces)
 {
     // scale 0.5 halves the tangential part before normalizing; seen from behind (a
     // double-sided material) the mapped normal is the front one turned to the back.
+    // Broken variants seen to fail: the scale applied to z too; the front normal used
+    // unturned on the back side.
     QuadOptions o;
     o.normal_texel = {255, 0, 255, 255}; // n_t = (1, -1, 1)
     o.normal_scale = 0.5;

@@ -30,13 +30,14 @@ __kernel void test_texture_sample(TEXTURE_BUFFER_ARGS, __global const float4* qu
 }
 
 /* The material at a hit, as the integrator sees it: hit = (b1, b2, as_float(triangle),
- * unused) seen along direction -wo. Writes the shading normal, the textured base colour
- * and emission, and (metallic, roughness, specular, transmission). */
+ * unused) seen along direction -wo. Writes the shading normal, the textured base colour,
+ * emission and specular colour, and (metallic, roughness, specular, transmission). */
 __kernel void test_material_inputs(TEXTURE_BUFFER_ARGS, __global const Triangle* triangles,
                                    __global const TriangleShading* shading, __global const Material* materials,
                                    __global const float4* hits, __global const float4* wos,
                                    __global float4* out_normal, __global float4* out_base_color,
-                                   __global float4* out_emission, __global float4* out_params)
+                                   __global float4* out_emission, __global float4* out_specular_color,
+                                   __global float4* out_params)
 {
     uint i = get_global_id(0);
     TextureBuffers tex = test_texture_buffers(texels, images, views, texcoords, tangents, colors);
@@ -52,6 +53,7 @@ __kernel void test_material_inputs(TEXTURE_BUFFER_ARGS, __global const Triangle*
     out_normal[i] = (float4)(sp.ns, dot(sp.ns, sp.ng));
     out_base_color[i] = m.base_color;
     out_emission[i] = m.emission;
+    out_specular_color[i] = m.specular_color;
     out_params[i] = (float4)(m.metallic, m.roughness, m.specular_color.w, m.transmission);
 }
 
