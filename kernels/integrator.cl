@@ -77,12 +77,22 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                           __global const Material* materials, __global const Light* lights,
                           __global const float4* env_texels, __global const float* env_marginal,
                           __global const float* env_conditional, __global const float* layer_albedo,
-                          __global FilmPixel* film, __global uint* bad_samples, FrameParams frame)
+                          __global FilmPixel* film, __global uint* bad_samples, FrameParams frame,
+                          __global const uint* texels, __global const TextureImage* texture_images,
+                          __global const TextureView* texture_views, __global const TriangleTexcoords* texcoords,
+                          __global const TriangleTangents* tangents, __global const TriangleColors* colors)
 {
     EnvironmentBuffers env;
     env.texels = env_texels;
     env.marginal = env_marginal;
     env.conditional = env_conditional;
+    TextureBuffers tex;
+    tex.texels = texels;
+    tex.images = texture_images;
+    tex.views = texture_views;
+    tex.texcoords = texcoords;
+    tex.tangents = tangents;
+    tex.colors = colors;
     uint x = get_global_id(0);
     uint y = get_global_id(1);
     if (x >= frame.width || y >= frame.height)
@@ -135,6 +145,9 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
         float3 wo = -dir;
         SurfacePoint sp = surface_point(triangles, shading, hit, wo);
         Material m = materials[sp.material];
+#if defined(PATHCL_HAS_TEXTURES) || defined(PATHCL_HAS_VERTEX_COLORS)
+        apply_material_inputs(&m, &sp, wo, hit, &tex);
+#endif
         BsdfParams bp = bsdf_params(&m, &sp, wo, layer_albedo);
 
 #ifdef PATHCL_HAS_AREA_LIGHTS
@@ -169,7 +182,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                             (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&bp);
         if (sample_light) {
             sampler.dimension = dims + DIM_LIGHT;
-            LightSample ls = light_sample(lights, frame.light_count, &env, sp.p, &sampler);
+            LightSample ls = light_sample(lights, frame.light_count, &env, &tex, sp.p, &sampler);
             if (ls.pdf > 0.0f) {
                 BsdfEval e = bsdf_eval(&bp, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {

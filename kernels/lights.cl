@@ -1,4 +1,4 @@
-/* Light selection and sampling. Needs: shared_types.h, samplers.cl, geometry.cl.
+/* Light selection and sampling. Needs: shared_types.h, samplers.cl, geometry.cl, textures.cl.
  * Lights are picked in proportion to their emitted power through an alias table (O(1));
  * each light's selection probability is in radiance.w, which MIS needs for BSDF-found
  * hits on area lights too. Only the light types a scene has are compiled
@@ -125,7 +125,7 @@ static inline float spot_falloff(const Light* light, float3 out)
 }
 
 static inline LightSample light_sample(__global const Light* lights, uint count, const EnvironmentBuffers* env,
-                                float3 ref, SamplerState* sampler)
+                                       const TextureBuffers* tex, float3 ref, SamplerState* sampler)
 {
     LightSample ls;
     ls.pdf = 0.0f;
@@ -222,6 +222,11 @@ static inline LightSample light_sample(__global const Light* lights, uint count,
     float cos_light = -dot(ls.wi, ls.n);
     ls.pdf = triangle_light_pdf(&light, dist, cos_light);
     ls.radiance = (ls.pdf > 0.0f) ? light.radiance.xyz : (float3)(0.0f);
+#ifdef PATHCL_HAS_TEXTURES
+    /* The emissive texture at the sampled point, as a ray hitting it would see it. */
+    if (light.texture != TEXTURE_NONE && ls.pdf > 0.0f)
+        ls.radiance *= texture_at(tex, light.texture, as_int(light.p1.w), b1, b2).xyz;
+#endif
 #endif
     return ls;
 }

@@ -56,6 +56,67 @@ typedef struct {
     pcl_int pad0, pad1;
 } TriangleShading;
 
+/* Optional per-triangle vertex attributes, each in its own buffer in the same (BVH leaf)
+ * order as Triangle, uploaded only when the scene uses them (PATHCL_HAS_TEXTURES,
+ * _NORMAL_MAPS, _VERTEX_COLORS); vertex 0, 1, 2 as in Triangle. */
+
+/* One texture-coordinate set (TEXCOORD_n) of a triangle: 32 bytes. The texcoord buffer
+ * holds every set some texture uses, one after the other (set slot k of triangle i at
+ * k * triangle count + i); a TextureView names where its set starts. */
+typedef struct {
+    pcl_float4 uv01; /* (u, v) of vertex 0, then of vertex 1 */
+    pcl_float4 uv2;  /* xy: (u, v) of vertex 2; zw unused */
+} TriangleTexcoords;
+
+/* Vertex tangents for normal mapping, world space: 48 bytes. xyz is the unit tangent
+ * (the direction of increasing u), w the handedness: bitangent = w * cross(n, t). Zero
+ * where the triangle's material has no normal texture. */
+typedef struct {
+    pcl_float4 t0, t1, t2;
+} TriangleTangents;
+
+/* Vertex colours (COLOR_0, linear RGB; alpha is not used): 48 bytes. White where the
+ * triangle's primitive has no COLOR_0. */
+typedef struct {
+    pcl_float4 c0, c1, c2; /* rgb; a unused */
+} TriangleColors;
+
+/* Texel storage formats. Texels of every image live in one buffer of 32-bit words,
+ * row-major from the top row of the image; channels are unsigned normalized integers
+ * (value / 255 or value / 65535), grey and RGB images expanded to RGBA on the host. */
+#define TEXTURE_FORMAT_RGBA8 0  /* one word per texel: R | G << 8 | B << 16 | A << 24 */
+#define TEXTURE_FORMAT_RGBA16 1 /* two words per texel: R | G << 16, then B | A << 16 */
+
+/* An image in the texel buffer: 16 bytes. */
+typedef struct {
+    pcl_uint offset; /* index of its first word in the texel buffer */
+    pcl_uint width, height;
+    pcl_uint format; /* TEXTURE_FORMAT_* */
+} TextureImage;
+
+/* glTF sampler wrap modes, per axis. */
+#define TEXTURE_WRAP_REPEAT 0
+#define TEXTURE_WRAP_CLAMP_TO_EDGE 1
+#define TEXTURE_WRAP_MIRRORED_REPEAT 2
+
+/* TextureView flags */
+#define TEXTURE_SRGB 1    /* colour texture: texels are sRGB-encoded, decoded before filtering */
+#define TEXTURE_NEAREST 2 /* sampler magFilter NEAREST; otherwise bilinear */
+
+/* How one material slot samples an image (a glTF textureInfo with its sampler): 64 bytes.
+ * The texture coordinate (u, v) is first transformed by KHR_texture_transform,
+ *   u' = dot(transform_u.xyz, (u, v, 1)),  v' = dot(transform_v.xyz, (u, v, 1)),
+ * then wrapped and filtered with texel centres at ((i + 0.5) / width, (j + 0.5) / height). */
+typedef struct {
+    pcl_float4 transform_u; /* w unused */
+    pcl_float4 transform_v; /* w unused */
+    pcl_int image;          /* index into the TextureImage array */
+    pcl_uint texcoord_base; /* where this view's texture-coordinate set starts in the texcoord buffer */
+    pcl_uint wrap_s, wrap_t; /* TEXTURE_WRAP_* for u and v */
+    pcl_uint flags;          /* TEXTURE_SRGB, TEXTURE_NEAREST */
+    pcl_uint pad0, pad1, pad2;
+} TextureView;
+
 /* Material flags */
 #define MATERIAL_DOUBLE_SIDED 1 /* glTF doubleSided: opaque surfaces reflect on both sides */
 #define MATERIAL_THIN_WALLED 2  /* transmission without KHR_materials_volume thickness > 0 */
@@ -65,8 +126,8 @@ typedef struct {
 
 /* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
  * _volume, as the kernels read it (see kernels/bsdf.cl for the model): 112 bytes.
- * Texture fields index the texture-view array (TEXTURE_NONE when absent); a texture
- * value multiplies its factor, as glTF defines. */
+ * Texture fields index the TextureView array (TEXTURE_NONE when absent); a texture
+ * value multiplies its factor, as glTF defines (kernels/textures.cl applies them). */
 typedef struct {
     pcl_float4 base_color;     /* rgb linear baseColorFactor; a unused */
     pcl_float4 emission;       /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
@@ -77,10 +138,10 @@ typedef struct {
     pcl_float ior;          /* KHR_materials_ior, default 1.5 */
     pcl_uint flags;         /* MATERIAL_* */
     pcl_float normal_scale; /* normalTexture.scale */
-    pcl_int base_color_texture;
-    pcl_int metallic_roughness_texture;
-    pcl_int emissive_texture;
-    pcl_int normal_texture;
+    pcl_int base_color_texture;         /* RGB (sRGB) scales base_color */
+    pcl_int metallic_roughness_texture; /* B scales metallic, G scales roughness */
+    pcl_int emissive_texture;           /* RGB (sRGB) scales emission */
+    pcl_int normal_texture;         /* tangent space, scaled by normal_scale */
     pcl_int specular_texture;       /* A channel scales specularFactor */
     pcl_int specular_color_texture; /* RGB (sRGB) scales specularColorFactor */
     pcl_int transmission_texture;   /* R channel scales transmissionFactor */
@@ -123,7 +184,10 @@ typedef struct {
 
 /* A light, with its entry of the power-proportional alias table used to pick lights.
  * 80 bytes. Fields by type:
- *   TRIANGLE:    p0, p1, p2 = vertices (p0.w = area); radiance = emitted radiance
+ *   TRIANGLE:    p0, p1, p2 = vertices (p0.w = area, p1.w = as_float(index of the
+ *                triangle in the Triangle array)); radiance = emitted radiance
+ *                (emissiveFactor x strength), times the texel of `texture` at the
+ *                sampled point when that is not TEXTURE_NONE
  *   POINT:       p0 = position; radiance = intensity (W/sr)
  *   SPOT:        p0 = position; p1 = axis (unit, the way light travels);
  *                p2.x = cos(outer angle), p2.y = cos(inner angle); radiance = intensity
@@ -142,7 +206,7 @@ typedef struct {
     pcl_int type;
     pcl_float alias_threshold; /* keep this light if u < threshold, else take alias */
     pcl_int alias;
-    pcl_int pad0;
+    pcl_int texture; /* TRIANGLE: the material's emissive TextureView or TEXTURE_NONE; other types: unused */
 } Light;
 
 /* Camera types */

@@ -9,3 +9,4 @@ done
 python3 tools/make_cornell_box.py --variant glass-mirror
 python3 tools/make_sky_scene.py scenes
 python3 tools/make_material_spheres.py scenes
+python3 tools/make_textured_scene.py scenes

@@ -11,9 +11,14 @@ static_assert(sizeof(Ray) == 32);
 static_assert(sizeof(BvhNode) == 64 && offsetof(BvhNode, right_min) == 32);
 static_assert(sizeof(Triangle) == 48);
 static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);
+static_assert(sizeof(TriangleTexcoords) == 32 && offsetof(TriangleTexcoords, uv2) == 16);
+static_assert(sizeof(TriangleTangents) == 48);
+static_assert(sizeof(TriangleColors) == 48);
+static_assert(sizeof(TextureImage) == 16 && offsetof(TextureImage, format) == 12);
+static_assert(sizeof(TextureView) == 64 && offsetof(TextureView, image) == 32 && offsetof(TextureView, flags) == 48);
 static_assert(sizeof(Material) == 112 && offsetof(Material, metallic) == 48 &&
               offsetof(Material, base_color_texture) == 72 && offsetof(Material, smooth_layer_average) == 100);
-static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64);
+static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64 && offsetof(Light, texture) == 76);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
 static_assert(sizeof(FrameParams) == 48);
 static_assert(sizeof(FilmPixel) == 64);

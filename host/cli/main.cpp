@@ -93,9 +93,12 @@ int run_bench(const std::string& scene_path, pathcl::RenderOptions opt, int runs
     pathcl::RenderOptions warm = opt;
     warm.spp = 1;
     pathcl::RenderResult first = pathcl::render(scene, warm);
-    std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s\n",
+    std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s",
                 scene_path.c_str(), first.stats.triangles, first.stats.bvh_nodes, first.stats.bvh_build_seconds * 1e3,
                 first.stats.kernel_build_seconds, first.stats.kernel_from_cache ? " (from cache)" : " (compiled)");
+    if (first.stats.texel_bytes > 0)
+        std::printf(" | texels %.1f KiB", static_cast<double>(first.stats.texel_bytes) / 1024.0);
+    std::printf("\n");
     std::vector<double> rates, seconds;
     for (int i = 0; i < runs; ++i) {
         opt.seed = static_cast<std::uint32_t>(i);

@@ -1,6 +1,7 @@
 #include "render/device_scene.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -153,12 +154,29 @@ DeviceScene make_device_scene(const Scene& scene)
         dm.transmission = m.transmission;
         dm.ior = m.ior;
         dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u);
-        dm.normal_scale = 1.0f;
         dm.base_color_texture = dm.metallic_roughness_texture = dm.emissive_texture = TEXTURE_NONE;
         dm.normal_texture = dm.specular_texture = dm.specular_color_texture = TEXTURE_NONE;
         dm.transmission_texture = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
+        dm.normal_scale = m.normal_scale;
         ds.materials.push_back(dm);
+    }
+    if (ds.features.textures)
+        ds.textures = pack_textures(scene, bvh.triangle_order, ds.materials);
+    if (ds.features.normal_maps) {
+        ds.tangents.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const TriangleTangent& t = scene.tangents[bvh.triangle_order[i]];
+            ds.tangents[i] = {{t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w},
+                              {t[2].x, t[2].y, t[2].z, t[2].w}};
+        }
+    }
+    if (ds.features.vertex_colors) {
+        ds.colors.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const TriangleColor& c = scene.colors[bvh.triangle_order[i]];
+            ds.colors[i] = {f4(c[0]), f4(c[1]), f4(c[2])};
+        }
     }
 
     if (ds.features.glossy || ds.features.transmission)
@@ -193,13 +211,24 @@ DeviceScene make_device_scene(const Scene& scene)
         Light light{};
         light.type = LIGHT_TRIANGLE;
         light.p0 = f4(t.v[0], static_cast<float>(area));
-        light.p1 = f4(t.v[1]);
+        light.p1 = f4(t.v[1], std::bit_cast<float>(static_cast<pcl_int>(i)));
         light.p2 = f4(t.v[2]);
         light.radiance = f4(m.emission);
+        light.texture = ds.materials[static_cast<std::size_t>(t.material)].emissive_texture;
         sh.emitter = static_cast<pcl_int>(ds.lights.size());
         ds.lights.push_back(light);
-        // Emitted power of a one-sided Lambertian emitter: pi * area * radiance (luminance-weighted).
-        power.push_back(std::numbers::pi * area * std::max(luminance(m.emission), 1e-12));
+        // Emitted power of a one-sided Lambertian emitter: pi * area * radiance (luminance-
+        // weighted); with an emissive texture, radiance = factor x the texture's mean over
+        // the triangle (an estimate: it only sets how often the light is picked; the floor
+        // keeps every emitter pickable, so the estimator stays unbiased).
+        glm::dvec3 radiance(m.emission);
+        if (m.emissive_texture.present()) {
+            const SceneImage& img = scene.images[static_cast<std::size_t>(m.emissive_texture.image)];
+            const TriangleUv& uv =
+                scene.texcoords[static_cast<std::size_t>(m.emissive_texture.texcoord)][bvh.triangle_order[i]];
+            radiance *= texture_mean_over_triangle(img, m.emissive_texture, true, uv);
+        }
+        power.push_back(std::numbers::pi * area * std::max(luminance(glm::vec3(radiance)), 1e-12));
     }
     add_punctual_lights(scene, ds.lights, power);
     if (scene.environment.present) {

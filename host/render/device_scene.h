@@ -1,5 +1,6 @@
 // The scene as the kernels read it: BVH nodes, triangles in leaf order with their shading
-// data, materials, lights with their alias table, and the camera; built once on the host.
+// data and optional vertex attributes, materials and their textures, lights with their
+// alias table, and the camera; built once on the host.
 #pragma once
 
 #include <cstdint>
@@ -7,6 +8,7 @@
 
 #include "bvh/bvh_builder.h"
 #include "render/environment.h"
+#include "render/textures.h"
 #include "scene/scene.h"
 #include "shared_types.h"
 
@@ -17,6 +19,9 @@ struct DeviceScene {
     std::vector<Triangle> triangles;
     std::vector<TriangleShading> shading;
     std::vector<Material> materials;
+    DeviceTextures textures;                 // empty unless a material has a texture
+    std::vector<TriangleTangents> tangents;  // leaf order; empty unless there are normal maps
+    std::vector<TriangleColors> colors;      // leaf order; empty unless there are vertex colours
     std::vector<Light> lights; // spheres, emissive triangles, punctual; selection by power
     std::size_t sphere_count = 0; // lights[0 .. sphere_count) are sphere lights
     EnvironmentMap environment;   // empty unless the scene has one

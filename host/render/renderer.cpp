@@ -13,7 +13,7 @@ namespace {
 
 // Fixed work-group shape for the 2D image kernels (a multiple of every SIMD width).
 constexpr std::uint32_t kTile = 8;
-constexpr cl_uint kPathFrameArg = 12; // trace_paths' FrameParams argument
+constexpr cl_uint kPathFrameArg = 12; // trace_paths' FrameParams argument (the texture buffers follow it)
 
 std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
 {
@@ -27,6 +27,7 @@ struct DeviceRender {
     cl::Kernel camera_kernel, path_kernel, clear_kernel;
     cl::Buffer nodes, triangles, shading, materials, lights, env_texels, env_marginal, env_conditional, layer_albedo,
         rays, film, bad;
+    cl::Buffer texels, texture_images, texture_views, texcoords, tangents, colors; // dummies when unused
     std::size_t pixels = 0;
 
     template <typename T>
@@ -65,6 +66,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
     stats.lights = ds.lights.size();
     stats.bvh_nodes = ds.nodes.size();
     stats.bvh_build_seconds = ds.bvh_build_seconds;
+    stats.texel_bytes = ds.textures.texel_bytes();
 
     const std::size_t pixels = static_cast<std::size_t>(opt.width) * opt.height;
     Camera camera = make_device_camera(scene.camera, opt.width, opt.height);
@@ -92,6 +94,12 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->env_marginal = dr->make(ds.environment.marginal_cdf);
             dr->env_conditional = dr->make(ds.environment.conditional_cdf);
             dr->layer_albedo = dr->make(ds.layer_albedo);
+            dr->texels = dr->make(ds.textures.texels);
+            dr->texture_images = dr->make(ds.textures.images);
+            dr->texture_views = dr->make(ds.textures.views);
+            dr->texcoords = dr->make(ds.textures.texcoords);
+            dr->tangents = dr->make(ds.tangents);
+            dr->colors = dr->make(ds.colors);
             dr->pixels = pixels;
             dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
             dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
@@ -117,6 +125,13 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->path_kernel.setArg(a++, dr->layer_albedo);
             dr->path_kernel.setArg(a++, dr->film);
             dr->path_kernel.setArg(a++, dr->bad);
+            a = kPathFrameArg + 1;
+            dr->path_kernel.setArg(a++, dr->texels);
+            dr->path_kernel.setArg(a++, dr->texture_images);
+            dr->path_kernel.setArg(a++, dr->texture_views);
+            dr->path_kernel.setArg(a++, dr->texcoords);
+            dr->path_kernel.setArg(a++, dr->tangents);
+            dr->path_kernel.setArg(a++, dr->colors);
             dr->dev.queue.finish();
         } catch (const cl::Error& e) {
             throw Error("device " + std::to_string(index) + ": setting up the render failed: " +

@@ -30,6 +30,7 @@ struct RenderStats {
     double render_seconds = 0.0;       // passes only, from first enqueue to finished films
     double samples_per_second = 0.0;   // camera samples (paths) per second
     std::uint64_t bad_samples = 0;     // NaN/Inf samples the film rejected
+    std::size_t texel_bytes = 0;       // device memory of all texture images (per device)
 };
 
 struct RenderResult {

@@ -14,6 +14,9 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/gltf_images.h"
+#include "scene/gltf_textures.h"
+#include "scene/tangents.h"
 
 namespace pathcl {
 namespace {
@@ -111,6 +114,14 @@ public:
         }
     }
 
+    // Attributes that are fractions (texture coordinates, colours) stored as integers
+    // must be normalized.
+    void require_float_or_normalized() const
+    {
+        if (component_type_ != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_)
+            fail("integer components must be normalized");
+    }
+
     bool is_index_type() const
     {
         return components_ == 1 && !normalized_ &&
@@ -196,7 +207,15 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_ior ior must be finite and >= 1");
 }
 
-SceneMaterial import_material(const tinygltf::Material& m)
+// The KHR_texture_transform object of a textureInfo's extensions, or null.
+const tinygltf::Value* texture_transform(const tinygltf::ExtensionMap& extensions)
+{
+    auto it = extensions.find("KHR_texture_transform");
+    return it == extensions.end() ? nullptr : &it->second;
+}
+
+SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& textures, const std::string& source,
+                              const std::string& where)
 {
     SceneMaterial out;
     out.name = m.name;
@@ -217,20 +236,64 @@ SceneMaterial import_material(const tinygltf::Material& m)
     if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
         out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
         out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
+        if (e->second.Has("specularTexture"))
+            out.specular_texture = textures.read(e->second.Get("specularTexture"), where + " specularTexture");
+        if (e->second.Has("specularColorTexture"))
+            out.specular_color_texture =
+                textures.read(e->second.Get("specularColorTexture"), where + " specularColorTexture");
     }
-    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end())
+    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
         out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
+        if (e->second.Has("transmissionTexture"))
+            out.transmission_texture =
+                textures.read(e->second.Get("transmissionTexture"), where + " transmissionTexture");
+    }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
     if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
         out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
+
+    // Core textures (occlusionTexture is not read: a path tracer computes occlusion).
+    auto core = [&](const tinygltf::TextureInfo& info, const char* name) {
+        return info.index < 0 ? SceneTexture{}
+                              : textures.read(info.index, info.texCoord, texture_transform(info.extensions),
+                                              where + " " + name);
+    };
+    out.base_color_texture = core(pbr.baseColorTexture, "baseColorTexture");
+    out.metallic_roughness_texture = core(pbr.metallicRoughnessTexture, "metallicRoughnessTexture");
+    out.emissive_texture = core(m.emissiveTexture, "emissiveTexture");
+    if (m.normalTexture.index >= 0) {
+        out.normal_texture = textures.read(m.normalTexture.index, m.normalTexture.texCoord,
+                                           texture_transform(m.normalTexture.extensions), where + " normalTexture");
+        out.normal_scale = static_cast<float>(m.normalTexture.scale);
+        if (!std::isfinite(out.normal_scale))
+            throw Error(source + ": " + where + ": normalTexture scale must be finite");
+    }
     return out;
 }
 
+// The texture slots of a material, each with its glTF name (for messages).
+std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m)
+{
+    return {{&m.base_color_texture, "baseColorTexture"},
+            {&m.metallic_roughness_texture, "metallicRoughnessTexture"},
+            {&m.emissive_texture, "emissiveTexture"},
+            {&m.normal_texture, "normalTexture"},
+            {&m.specular_texture, "specularTexture"},
+            {&m.specular_color_texture, "specularColorTexture"},
+            {&m.transmission_texture, "transmissionTexture"}};
+}
+
 struct Importer {
+    Importer(const tinygltf::Model& m, const std::string& src, const std::string& dir)
+        : model(m), source(src), base_dir(dir), textures(m, src, dir)
+    {
+    }
+
     const tinygltf::Model& model;
     const std::string& source;
     std::string base_dir;
+    TextureImporter textures;
     Scene scene;
     int default_material = -1;
     std::size_t skipped_points_lines = 0;
@@ -244,6 +307,15 @@ struct Importer {
         int material = 0;
     };
     std::vector<PendingTriangle> pending;
+    // Their optional attributes, in step with `pending` (see Scene): texcoords[n] for each
+    // set n some texture reads; tangents (world space, not yet normalized) when some
+    // material has a normal texture; colors from the first primitive with COLOR_0 on
+    // (earlier triangles get white when it arrives).
+    std::vector<std::vector<TriangleUv>> pending_texcoords;
+    std::vector<bool> texcoord_used;
+    bool tangents_used = false;
+    std::vector<std::array<glm::dvec4, 3>> pending_tangents;
+    std::vector<TriangleColor> pending_colors;
 
     int material_for(int gltf_material)
     {
@@ -339,10 +411,16 @@ struct Importer {
         }
         int material = material_for(prim.material);
         std::vector<std::uint32_t> tris = triangle_indices(prim, p.size(), what);
-        for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+        tris.resize(tris.size() / 3 * 3);
+        VertexAttributes attr = read_vertex_attributes(prim, material, pos, tris, what);
+        const double handedness = mirrored ? -1.0 : 1.0; // a mirror flips the bitangent
+        for (std::size_t t = 0; t < tris.size(); t += 3) {
             std::uint32_t ids[3] = {tris[t], tris[t + 1], tris[t + 2]};
-            if (mirrored)
+            int corner[3] = {0, 1, 2};
+            if (mirrored) {
                 std::swap(ids[1], ids[2]);
+                std::swap(corner[1], corner[2]);
+            }
             PendingTriangle tri;
             tri.material = material;
             tri.has_normals = !n.empty();
@@ -351,14 +429,141 @@ struct Importer {
                 tri.n[k] = n.empty() ? glm::dvec3(0.0) : n[ids[k]];
             }
             pending.push_back(tri);
+            for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
+                if (!texcoord_used[set])
+                    continue;
+                TriangleUv uv{};
+                if (!attr.texcoords[set].empty())
+                    for (int k = 0; k < 3; ++k)
+                        uv[static_cast<std::size_t>(k)] = attr.texcoords[set][ids[k]];
+                pending_texcoords[set].push_back(uv);
+            }
+            if (tangents_used) {
+                std::array<glm::dvec4, 3> tangent{};
+                if (!attr.tangents.empty())
+                    for (int k = 0; k < 3; ++k) {
+                        glm::dvec4 ot = attr.tangents[t + static_cast<std::size_t>(corner[k])];
+                        tangent[static_cast<std::size_t>(k)] = glm::dvec4(m3 * glm::dvec3(ot), ot.w * handedness);
+                    }
+                pending_tangents.push_back(tangent);
+            }
+            if (!attr.colors.empty() || !pending_colors.empty()) {
+                pending_colors.resize(pending.size() - 1, TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
+                TriangleColor c{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
+                if (!attr.colors.empty())
+                    for (int k = 0; k < 3; ++k)
+                        c[static_cast<std::size_t>(k)] = attr.colors[ids[k]];
+                pending_colors.push_back(c);
+            }
         }
+    }
+
+    // A primitive's optional vertex attributes, for the vertices of `tris`.
+    struct VertexAttributes {
+        std::vector<std::vector<glm::vec2>> texcoords; // [set][vertex], for the used sets it has
+        std::vector<glm::dvec4> tangents;              // object space, per corner of `tris`
+        std::vector<glm::vec3> colors;                 // per vertex
+    };
+
+    VertexAttributes read_vertex_attributes(const tinygltf::Primitive& prim, int material, const AccessorReader& pos,
+                                            const std::vector<std::uint32_t>& tris, const std::string& what)
+    {
+        VertexAttributes attr;
+        const SceneMaterial& mat = scene.materials[static_cast<std::size_t>(material)];
+        // Every set the material's textures read must be there.
+        for (const auto& [slot, name] : texture_slots(mat)) {
+            if (!slot->present())
+                continue;
+            std::string attribute = "TEXCOORD_" + std::to_string(slot->texcoord);
+            if (!prim.attributes.count(attribute))
+                throw Error(source + ": " + what + ": its material's " + name + " reads " + attribute +
+                            ", which the primitive does not have");
+        }
+        attr.texcoords.resize(texcoord_used.size());
+        for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
+            auto it = prim.attributes.find("TEXCOORD_" + std::to_string(set));
+            if (!texcoord_used[set] || it == prim.attributes.end())
+                continue;
+            AccessorReader r(model, it->second, what + " TEXCOORD_" + std::to_string(set), source);
+            if (r.components() != 2 || r.count() != pos.count())
+                r.fail("TEXCOORD_n must be VEC2 with one coordinate per vertex");
+            r.require_float_or_normalized();
+            attr.texcoords[set].resize(r.count());
+            for (std::size_t i = 0; i < r.count(); ++i) {
+                glm::dvec2 uv(r.get(i, 0), r.get(i, 1));
+                if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                    r.fail("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+                attr.texcoords[set][i] = glm::vec2(uv);
+            }
+        }
+        if (auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
+            AccessorReader r(model, it->second, what + " COLOR_0", source);
+            if ((r.components() != 3 && r.components() != 4) || r.count() != pos.count())
+                r.fail("COLOR_0 must be VEC3 or VEC4 with one colour per vertex");
+            r.require_float_or_normalized();
+            attr.colors.resize(r.count());
+            for (std::size_t i = 0; i < r.count(); ++i) {
+                glm::dvec3 c(r.get(i, 0), r.get(i, 1), r.get(i, 2)); // alpha is not used
+                for (int k = 0; k < 3; ++k)
+                    if (!(c[k] >= 0.0 && c[k] <= 1.0))
+                        r.fail("vertex " + std::to_string(i) + " has a colour component outside [0, 1]");
+                attr.colors[i] = glm::vec3(c);
+            }
+        }
+        if (mat.normal_texture.present())
+            attr.tangents = object_tangents(prim, mat.normal_texture.texcoord, pos, tris, what);
+        return attr;
+    }
+
+    // Object-space tangents per corner of `tris`: the TANGENT attribute when the primitive
+    // has it and NORMAL (glTF: without normals, tangents are ignored), else computed from
+    // the normal texture's texture coordinates.
+    std::vector<glm::dvec4> object_tangents(const tinygltf::Primitive& prim, int texcoord, const AccessorReader& pos,
+                                            const std::vector<std::uint32_t>& tris, const std::string& what)
+    {
+        auto nrm_it = prim.attributes.find("NORMAL");
+        auto tan_it = prim.attributes.find("TANGENT");
+        std::vector<glm::dvec4> out(tris.size());
+        if (tan_it != prim.attributes.end() && nrm_it != prim.attributes.end()) {
+            AccessorReader r(model, tan_it->second, what + " TANGENT", source);
+            if (r.components() != 4 || r.count() != pos.count())
+                r.fail("TANGENT must be VEC4 with one tangent per vertex");
+            std::vector<glm::dvec4> t(r.count());
+            for (std::size_t i = 0; i < r.count(); ++i) {
+                t[i] = glm::dvec4(r.get(i, 0), r.get(i, 1), r.get(i, 2), r.get(i, 3) < 0.0 ? -1.0 : 1.0);
+                if (!std::isfinite(t[i].x) || !std::isfinite(t[i].y) || !std::isfinite(t[i].z))
+                    r.fail("vertex " + std::to_string(i) + " has a NaN or infinite tangent");
+            }
+            for (std::size_t c = 0; c < tris.size(); ++c)
+                out[c] = t[tris[c]];
+            return out;
+        }
+        std::vector<glm::dvec3> positions(pos.count()), normals;
+        for (std::size_t i = 0; i < pos.count(); ++i)
+            positions[i] = glm::dvec3(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2));
+        if (nrm_it != prim.attributes.end()) {
+            AccessorReader nr(model, nrm_it->second, what + " NORMAL", source);
+            normals.resize(nr.count());
+            for (std::size_t i = 0; i < nr.count(); ++i)
+                normals[i] = glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
+        }
+        AccessorReader ur(model, prim.attributes.at("TEXCOORD_" + std::to_string(texcoord)),
+                          what + " TEXCOORD_" + std::to_string(texcoord), source);
+        std::vector<glm::dvec2> uvs(ur.count());
+        for (std::size_t i = 0; i < ur.count(); ++i)
+            uvs[i] = glm::dvec2(ur.get(i, 0), ur.get(i, 1));
+        return compute_tangents(positions, normals, uvs, tris);
     }
 
     // Converts the double-precision world triangles to float, relative to `origin`.
     void finish_triangles(const glm::dvec3& origin)
     {
         scene.triangles.reserve(pending.size());
-        for (const PendingTriangle& pt : pending) {
+        scene.texcoords.resize(texcoord_used.size());
+        if (!pending_colors.empty())
+            pending_colors.resize(pending.size(), TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
+        for (std::size_t index = 0; index < pending.size(); ++index) {
+            const PendingTriangle& pt = pending[index];
             SceneTriangle tri;
             tri.material = pt.material;
             for (int k = 0; k < 3; ++k)
@@ -383,6 +588,20 @@ struct Importer {
                 tri.n[k] = sn;
             }
             scene.triangles.push_back(tri);
+            for (std::size_t set = 0; set < texcoord_used.size(); ++set)
+                if (texcoord_used[set])
+                    scene.texcoords[set].push_back(pending_texcoords[set][index]);
+            if (tangents_used) {
+                TriangleTangent t;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const glm::dvec4& wt = pending_tangents[index][k];
+                    double tl = glm::length(glm::dvec3(wt));
+                    t[k] = (tl > 0.0 && std::isfinite(tl)) ? glm::vec4(glm::dvec3(wt) / tl, wt.w) : glm::vec4(0.0f);
+                }
+                scene.tangents.push_back(t);
+            }
+            if (!pending_colors.empty())
+                scene.colors.push_back(pending_colors[index]);
         }
         pending.clear();
     }
@@ -391,16 +610,26 @@ struct Importer {
     {
         static const std::set<std::string> supported = {
             "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
-            "KHR_materials_ior", "KHR_materials_volume", "KHR_lights_punctual"};
+            "KHR_materials_ior", "KHR_materials_volume", "KHR_lights_punctual", "KHR_texture_transform"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
 
         for (std::size_t i = 0; i < model.materials.size(); ++i) {
-            scene.materials.push_back(import_material(model.materials[i]));
-            check_material(scene.materials.back(), source + ": material " + std::to_string(i) + " (" +
-                                                       model.materials[i].name + ")");
+            std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
+            scene.materials.push_back(import_material(model.materials[i], textures, source, where));
+            check_material(scene.materials.back(), source + ": " + where);
+            for (const auto& [slot, name] : texture_slots(scene.materials.back())) {
+                if (!slot->present())
+                    continue;
+                std::size_t set = static_cast<std::size_t>(slot->texcoord);
+                if (set >= texcoord_used.size())
+                    texcoord_used.resize(set + 1, false);
+                texcoord_used[set] = true;
+            }
+            tangents_used = tangents_used || scene.materials.back().normal_texture.present();
         }
+        pending_texcoords.resize(texcoord_used.size());
 
         int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
         if (model.scenes.empty())
@@ -472,6 +701,7 @@ struct Importer {
             origin = 0.5 * (lo + hi);
         }
         finish_triangles(origin);
+        scene.images = textures.take_images();
         for (SceneLight& l : scene.lights)
             l.position -= origin;
         scene.render_origin = origin;
@@ -601,7 +831,7 @@ struct Importer {
 
 Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir)
 {
-    Importer importer{model, source, base_dir, {}, -1, 0, 0, {}};
+    Importer importer(model, source, base_dir);
     importer.run();
     return std::move(importer.scene);
 }
@@ -612,6 +842,7 @@ Scene load_gltf(const std::string& path)
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(path + ": no such file");
     tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(load_gltf_image, nullptr); // OpenImageIO decodes, not tinygltf
     tinygltf::Model model;
     std::string err, warning;
     bool binary = std::filesystem::path(path).extension() == ".glb";

@@ -24,6 +24,12 @@ std::string SceneFeatures::build_defines() const
         d += " -DPATHCL_HAS_GLOSSY";
     if (transmission)
         d += " -DPATHCL_HAS_TRANSMISSION";
+    if (textures)
+        d += " -DPATHCL_HAS_TEXTURES";
+    if (normal_maps)
+        d += " -DPATHCL_HAS_NORMAL_MAPS";
+    if (vertex_colors)
+        d += " -DPATHCL_HAS_VERTEX_COLORS";
     return d;
 }
 
@@ -36,7 +42,10 @@ SceneFeatures scene_features(const Scene& scene)
         // Exactly Lambertian: no metal, no specular layer (specularFactor 0), no transmission.
         f.glossy = f.glossy || m.metallic > 0.0f || m.specular > 0.0f;
         f.transmission = f.transmission || m.transmission > 0.0f;
+        f.textures = f.textures || m.has_textures();
+        f.normal_maps = f.normal_maps || m.normal_texture.present();
     }
+    f.vertex_colors = !scene.colors.empty();
     for (const SceneLight& l : scene.lights) {
         f.point_lights = f.point_lights || l.type == SceneLight::Type::Point;
         f.spot_lights = f.spot_lights || l.type == SceneLight::Type::Spot || l.type == SceneLight::Type::RectSpot;

@@ -5,6 +5,7 @@
 // from the world origin.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -13,6 +14,33 @@
 #include <glm/glm.hpp>
 
 namespace pathcl {
+
+// A decoded image: RGBA, row-major from the top row, 8 or 16 bits per channel (grey and
+// RGB images expanded: grey to RGB, missing alpha to opaque). Values are the file's,
+// still sRGB-encoded where the image holds colour; which slot reads it decides.
+struct SceneImage {
+    std::string name; // for messages: the glTF image's name or uri
+    std::uint32_t width = 0, height = 0;
+    int bits = 8;                      // 8 or 16
+    std::vector<std::uint8_t> rgba8;   // bits 8: width * height * 4 values
+    std::vector<std::uint16_t> rgba16; // bits 16: width * height * 4 values
+};
+
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// One texture slot of a material: which image, which TEXCOORD_n set, the sampler, and
+// the KHR_texture_transform. (u', v') = (dot(transform_u, (u, v, 1)), dot(transform_v, (u, v, 1))).
+struct SceneTexture {
+    int image = -1;   // index into Scene::images; -1: the slot has no texture
+    int texcoord = 0; // TEXCOORD_n set (KHR_texture_transform's texCoord already applied)
+    TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
+    bool nearest = false; // sampler magFilter NEAREST; otherwise bilinear
+    glm::vec3 transform_u{1.0f, 0.0f, 0.0f};
+    glm::vec3 transform_v{0.0f, 1.0f, 0.0f};
+
+    bool present() const { return image >= 0; }
+    bool operator==(const SceneTexture&) const = default;
+};
 
 struct SceneMaterial {
     std::string name;
@@ -27,7 +55,21 @@ struct SceneMaterial {
     float ior = 1.5f;                  // KHR_materials_ior
     bool thin_walled = true;           // no KHR_materials_volume with thicknessFactor > 0
 
+    // Textures (each multiplies its factor): base colour (RGB, sRGB), metallic-roughness
+    // (B metal, G rough), emissive (RGB, sRGB), normal (tangent space, scaled by
+    // normal_scale), KHR_materials_specular specularTexture (A) and specularColorTexture
+    // (RGB, sRGB), KHR_materials_transmission transmissionTexture (R).
+    SceneTexture base_color_texture, metallic_roughness_texture, emissive_texture, normal_texture;
+    SceneTexture specular_texture, specular_color_texture, transmission_texture;
+    float normal_scale = 1.0f;
+
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+    bool has_textures() const
+    {
+        return base_color_texture.present() || metallic_roughness_texture.present() || emissive_texture.present() ||
+               normal_texture.present() || specular_texture.present() || specular_color_texture.present() ||
+               transmission_texture.present();
+    }
 };
 
 struct SceneTriangle {
@@ -70,9 +112,22 @@ struct SceneCamera {
     bool from_file = false;
 };
 
+// Per-vertex attributes of one triangle (vertex k as in SceneTriangle::v[k]).
+using TriangleUv = std::array<glm::vec2, 3>;
+using TriangleTangent = std::array<glm::vec4, 3>; // xyz unit world tangent, w handedness (+-1)
+using TriangleColor = std::array<glm::vec3, 3>;   // COLOR_0 rgb
+
 struct Scene {
     std::vector<SceneTriangle> triangles;
     std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
+    std::vector<SceneImage> images;       // those some material's texture reads
+    // Optional per-vertex attributes, parallel to `triangles`; each empty unless used:
+    // texcoords[n] holds TEXCOORD_n when some texture reads set n (zero for triangles whose
+    // primitive lacks it); tangents when some material has a normal texture (zero for the
+    // other triangles); colors when some primitive has COLOR_0 (white for the others).
+    std::vector<std::vector<TriangleUv>> texcoords;
+    std::vector<TriangleTangent> tangents;
+    std::vector<TriangleColor> colors;
     std::vector<SceneLight> lights; // punctual lights; emissive triangles are area lights
     SceneEnvironment environment;
     SceneCamera camera;
@@ -91,6 +146,9 @@ struct SceneFeatures {
     bool environment = false;
     bool glossy = false;       // a material with a specular lobe (metal or dielectric layer)
     bool transmission = false; // a material with KHR_materials_transmission > 0
+    bool textures = false;      // a material with a texture
+    bool normal_maps = false;   // a material with a normal texture
+    bool vertex_colors = false; // a primitive with COLOR_0
 
     std::string build_defines() const;
 };

@@ -68,11 +68,15 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
 /* Light sampling through the real light_sample (kernels/lights.cl): one sample per
  * work-item from `ref`; writes the direction and pdf, or a zero vector when there is no
  * sample (the chi-square harness counts those as failures of the sampler), and the
- * radiance the sample carries (so weight = radiance / pdf can be checked). */
+ * radiance the sample carries (so weight = radiance / pdf can be checked). The texture
+ * buffers serve textured triangle lights (builds with PATHCL_HAS_TEXTURES). */
 __kernel void test_light_sample(__global const Light* lights, uint count, float4 ref, uint seed,
                                 __global const float4* env_texels, __global const float* env_marginal,
                                 __global const float* env_conditional, __global float4* out,
-                                __global float4* radiance_out)
+                                __global float4* radiance_out, __global const uint* texels,
+                                __global const TextureImage* texture_images,
+                                __global const TextureView* texture_views,
+                                __global const TriangleTexcoords* texcoords)
 {
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
@@ -80,7 +84,14 @@ __kernel void test_light_sample(__global const Light* lights, uint count, float4
     env.texels = env_texels;
     env.marginal = env_marginal;
     env.conditional = env_conditional;
-    LightSample ls = light_sample(lights, count, &env, ref.xyz, &s);
+    TextureBuffers tex;
+    tex.texels = texels;
+    tex.images = texture_images;
+    tex.views = texture_views;
+    tex.texcoords = texcoords;
+    tex.tangents = 0;
+    tex.colors = 0;
+    LightSample ls = light_sample(lights, count, &env, &tex, ref.xyz, &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <stdexcept>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
 
 namespace pathcl::test {
 
@@ -221,6 +225,78 @@ int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int mate
     for (const glm::vec3& v : p)
         n.push_back(glm::normalize(v) * (inward ? -1.0f : 1.0f));
     return add_mesh(pos, ind, material, 4, add_normals(n));
+}
+
+namespace {
+
+std::vector<unsigned char> encode_png(int width, int height, OIIO::TypeDesc type, const void* rgba)
+{
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput out_proxy(bytes);
+    auto out = OIIO::ImageOutput::create("png");
+    OIIO::ImageSpec spec(width, height, 4, type);
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!out || !out->set_ioproxy(&out_proxy) || !out->open("image.png", spec) || !out->write_image(type, rgba) ||
+        !out->close())
+        throw std::runtime_error("cannot encode a test PNG");
+    return bytes;
+}
+
+} // namespace
+
+int GltfBuilder::add_image_bytes(const std::vector<unsigned char>& bytes, const std::string& mime_type)
+{
+    tinygltf::Image img;
+    img.bufferView = add_view(bytes.data(), bytes.size());
+    img.mimeType = mime_type;
+    model.images.push_back(img);
+    return static_cast<int>(model.images.size()) - 1;
+}
+
+int GltfBuilder::add_png_image(int width, int height, const std::vector<std::uint8_t>& rgba8)
+{
+    return add_image_bytes(encode_png(width, height, OIIO::TypeDesc::UINT8, rgba8.data()), "image/png");
+}
+
+int GltfBuilder::add_png_image16(int width, int height, const std::vector<std::uint16_t>& rgba16)
+{
+    return add_image_bytes(encode_png(width, height, OIIO::TypeDesc::UINT16, rgba16.data()), "image/png");
+}
+
+int GltfBuilder::add_sampler(int mag_filter, int wrap_s, int wrap_t)
+{
+    tinygltf::Sampler s;
+    s.magFilter = mag_filter;
+    s.wrapS = wrap_s;
+    s.wrapT = wrap_t;
+    model.samplers.push_back(s);
+    return static_cast<int>(model.samplers.size()) - 1;
+}
+
+int GltfBuilder::add_texture(int image, int sampler)
+{
+    tinygltf::Texture t;
+    t.source = image;
+    t.sampler = sampler;
+    model.textures.push_back(t);
+    return static_cast<int>(model.textures.size()) - 1;
+}
+
+int GltfBuilder::add_texcoords(const std::vector<glm::vec2>& uv)
+{
+    int view = add_view(uv.data(), uv.size() * sizeof(glm::vec2));
+    return add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, uv.size());
+}
+
+int GltfBuilder::add_tangents(const std::vector<glm::vec4>& t)
+{
+    int view = add_view(t.data(), t.size() * sizeof(glm::vec4));
+    return add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, t.size());
+}
+
+void GltfBuilder::set_attribute(int mesh, const std::string& name, int accessor)
+{
+    model.meshes[static_cast<std::size_t>(mesh)].primitives[0].attributes[name] = accessor;
 }
 
 } // namespace pathcl::test

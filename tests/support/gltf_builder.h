@@ -58,6 +58,21 @@ public:
     int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward,
                         bool smooth_normals = false);
 
+    // Textures. Images are stored as PNG bytes in a bufferView (as in a .glb), encoded by
+    // OpenImageIO with alpha kept unassociated.
+    int add_png_image(int width, int height, const std::vector<std::uint8_t>& rgba8);
+    int add_png_image16(int width, int height, const std::vector<std::uint16_t>& rgba16);
+    // Raw (encoded) image bytes in a bufferView.
+    int add_image_bytes(const std::vector<unsigned char>& bytes, const std::string& mime_type);
+    // A sampler (-1: leave the glTF default); returns its index.
+    int add_sampler(int mag_filter, int wrap_s = 10497, int wrap_t = 10497);
+    int add_texture(int image, int sampler = -1);
+    // Float VEC2 texture coordinates, VEC4 tangents, VEC3 float colours: accessor indices.
+    int add_texcoords(const std::vector<glm::vec2>& uv);
+    int add_tangents(const std::vector<glm::vec4>& t);
+    // Sets attribute `name` of primitive 0 of `mesh`.
+    void set_attribute(int mesh, const std::string& name, int accessor);
+
     tinygltf::Model model;
 };
 

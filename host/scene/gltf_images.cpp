@@ -1,0 +1,185 @@
+#include "scene/gltf_images.h"
+
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <tiny_gltf.h>
+
+#include "common/error.h"
+
+namespace pathcl {
+namespace {
+
+// Largest image accepted: 2^28 texels (1 GiB of RGBA8), far beyond any glTF texture.
+constexpr std::size_t kMaxTexels = std::size_t(1) << 28;
+
+// The format plugin for the bytes' signature: glTF 2.0 images are PNG or JPEG.
+const char* image_format(const unsigned char* b, std::size_t size)
+{
+    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 8 && std::memcmp(b, png, 8) == 0)
+        return "png";
+    if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
+        return "jpeg";
+    return nullptr;
+}
+
+std::string one_line(std::string s)
+{
+    for (char& c : s)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    while (!s.empty() && s.back() == ' ')
+        s.pop_back();
+    return s;
+}
+
+void check_size(std::size_t width, std::size_t height, const std::string& what)
+{
+    if (width == 0 || height == 0 || width > kMaxTexels / height)
+        throw Error(what + ": unsupported image size " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+// Expands `channels` interleaved values per texel to RGBA: grey to (g, g, g), grey-alpha
+// to (g, g, g, a), missing alpha to opaque (`one`).
+template <typename T>
+std::vector<T> expand_to_rgba(const T* src, std::size_t texels, int channels, T one)
+{
+    std::vector<T> rgba(texels * 4);
+    for (std::size_t i = 0; i < texels; ++i) {
+        const T* s = src + i * static_cast<std::size_t>(channels);
+        T* d = &rgba[i * 4];
+        if (channels <= 2) {
+            d[0] = d[1] = d[2] = s[0];
+            d[3] = channels == 2 ? s[1] : one;
+        } else {
+            d[0] = s[0];
+            d[1] = s[1];
+            d[2] = s[2];
+            d[3] = channels == 4 ? s[3] : one;
+        }
+    }
+    return rgba;
+}
+
+} // namespace
+
+SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what)
+{
+    const char* format = image_format(bytes, size);
+    if (!format)
+        throw Error(what + ": not a PNG or JPEG image (the formats glTF 2.0 allows)");
+    OIIO::Filesystem::IOMemReader reader(bytes, size);
+    auto in = OIIO::ImageInput::create(format);
+    if (!in || !in->set_ioproxy(&reader))
+        throw Error(what + ": OpenImageIO cannot read " + format + " from memory");
+    OIIO::ImageSpec config, spec;
+    config.attribute("oiio:UnassociatedAlpha", 1); // keep colours as stored, not premultiplied
+    if (!in->open(std::string("image.") + format, spec, config))
+        throw Error(what + ": cannot decode the " + format + " image: " + one_line(in->geterror()));
+    int channels = spec.nchannels;
+    if (channels < 1 || channels > 4)
+        throw Error(what + ": has " + std::to_string(channels) + " channels (1 to 4 are supported)");
+    std::size_t w = static_cast<std::size_t>(std::max(spec.width, 0));
+    std::size_t h = static_cast<std::size_t>(std::max(spec.height, 0));
+    check_size(w, h, what);
+    SceneImage img;
+    img.name = what;
+    img.width = static_cast<std::uint32_t>(w);
+    img.height = static_cast<std::uint32_t>(h);
+    img.bits = spec.format.size() > 1 ? 16 : 8;
+    std::size_t values = w * h * static_cast<std::size_t>(channels);
+    bool ok;
+    if (img.bits == 16) {
+        std::vector<std::uint16_t> raw(values);
+        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT16, raw.data());
+        img.rgba16 = expand_to_rgba<std::uint16_t>(raw.data(), w * h, channels, 65535);
+    } else {
+        std::vector<std::uint8_t> raw(values);
+        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data());
+        img.rgba8 = expand_to_rgba<std::uint8_t>(raw.data(), w * h, channels, 255);
+    }
+    if (!ok)
+        throw Error(what + ": cannot decode the " + format + " image: " + one_line(in->geterror()));
+    return img;
+}
+
+SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what)
+{
+    int channels = image.component;
+    if (channels < 1 || channels > 4 || (image.bits != 8 && image.bits != 16))
+        throw Error(what + ": decoded pixels must have 1 to 4 channels of 8 or 16 bits");
+    std::size_t w = static_cast<std::size_t>(std::max(image.width, 0));
+    std::size_t h = static_cast<std::size_t>(std::max(image.height, 0));
+    check_size(w, h, what);
+    std::size_t values = w * h * static_cast<std::size_t>(channels);
+    if (image.image.size() != values * static_cast<std::size_t>(image.bits / 8))
+        throw Error(what + ": holds " + std::to_string(image.image.size()) + " bytes of pixels, not " +
+                    std::to_string(values * static_cast<std::size_t>(image.bits / 8)));
+    SceneImage img;
+    img.name = what;
+    img.width = static_cast<std::uint32_t>(w);
+    img.height = static_cast<std::uint32_t>(h);
+    img.bits = image.bits;
+    if (image.bits == 16) {
+        std::vector<std::uint16_t> raw(values);
+        std::memcpy(raw.data(), image.image.data(), values * 2);
+        img.rgba16 = expand_to_rgba<std::uint16_t>(raw.data(), w * h, channels, 65535);
+    } else {
+        img.rgba8 = expand_to_rgba<std::uint8_t>(image.image.data(), w * h, channels, 255);
+    }
+    return img;
+}
+
+void check_image_uri(const std::string& uri, const std::string& what)
+{
+    // A URI scheme is a letter followed by letters, digits, '+', '-' or '.', then ':'.
+    std::size_t colon = uri.find(':');
+    bool has_scheme = colon != std::string::npos && colon > 0 && std::isalpha(static_cast<unsigned char>(uri[0]));
+    for (std::size_t i = 0; has_scheme && i < colon; ++i) {
+        unsigned char c = static_cast<unsigned char>(uri[i]);
+        has_scheme = std::isalnum(c) || c == '+' || c == '-' || c == '.';
+    }
+    if (has_scheme) {
+        std::string scheme = uri.substr(0, colon);
+        if (scheme == "data")
+            throw Error(what + ": a data: URI with a media type other than image/png or image/jpeg");
+        throw Error(what + ": the URI scheme '" + scheme + ":' is not read (only relative paths and data: URIs)");
+    }
+    if (!uri.empty() && (uri[0] == '/' || uri[0] == '\\' || std::filesystem::path(uri).is_absolute()))
+        throw Error(what + ": the image path '" + uri + "' is absolute (image URIs are relative to the glTF file)");
+}
+
+bool load_gltf_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
+                     const unsigned char* bytes, int size, void*)
+{
+    if (image->bufferView >= 0)
+        return true; // decoded by the importer, which checks the view against its buffer first
+    std::string what = "image " + std::to_string(index) + (image->uri.empty() ? "" : " '" + image->uri + "'");
+    try {
+        if (!image->uri.empty())
+            check_image_uri(image->uri, what);
+        SceneImage img = decode_image(bytes, size > 0 ? static_cast<std::size_t>(size) : 0, what);
+        image->width = static_cast<int>(img.width);
+        image->height = static_cast<int>(img.height);
+        image->component = 4;
+        image->bits = img.bits;
+        image->pixel_type = img.bits == 16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+        if (img.bits == 16)
+            image->image.assign(reinterpret_cast<const unsigned char*>(img.rgba16.data()),
+                                reinterpret_cast<const unsigned char*>(img.rgba16.data() + img.rgba16.size()));
+        else
+            image->image = std::move(img.rgba8);
+        return true;
+    } catch (const Error& e) {
+        if (err)
+            *err += e.what();
+        return false;
+    }
+}
+
+} // namespace pathcl
