@@ -14,8 +14,9 @@ static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, materia
 static_assert(sizeof(Material) == 112 && offsetof(Material, metallic) == 48 &&
               offsetof(Material, base_color_texture) == 72 && offsetof(Material, pad0) == 100);
 static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64);
-static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
-static_assert(sizeof(FrameParams) == 48);
+static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
+              offsetof(Camera, focus_distance) == 72);
+static_assert(sizeof(FrameParams) == 48 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40);
 static_assert(sizeof(FilmPixel) == 64);
 
 } // namespace pathcl
