@@ -245,11 +245,26 @@ int main(int argc, char** argv)
     render->add_option("--strategy", opt.strategy, "light sampling: bsdf, nee, one-sample or mis")
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
+    // --sampler NAME: a readable message for a bad name (CheckedTransformer's lists the
+    // numeric values too).
+    const CLI::Validator sampler_check(
+        [](std::string& value) {
+            std::string lower = value;
+            std::transform(lower.begin(), lower.end(), lower.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            auto it = pathcl::sampler_names().find(lower);
+            if (it == pathcl::sampler_names().end())
+                return "unknown sampler '" + value +
+                       "' (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
+            value = std::to_string(it->second);
+            return std::string();
+        },
+        "SAMPLER");
     const std::string sampler_help =
         "sampler: independent, jittered, multi-jittered, n-rooks, sobol, halton or hammersley "
         "(jittered and multi-jittered round --spp up to a square, hammersley to a power of two)";
     render->add_option("--sampler", opt.sampler, sampler_help)
-        ->transform(CLI::CheckedTransformer(pathcl::sampler_names(), CLI::ignore_case))
+        ->transform(sampler_check)
         ->default_str("independent");
     RenderRequest rr;
     std::vector<double> look_from, look_at, up;
@@ -292,7 +307,7 @@ int main(int argc, char** argv)
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
     bench->add_option("--sampler", bench_opt.sampler, sampler_help)
-        ->transform(CLI::CheckedTransformer(pathcl::sampler_names(), CLI::ignore_case))
+        ->transform(sampler_check)
         ->default_str("independent");
 
     CLI::App* samples = app.add_subcommand(
@@ -300,7 +315,7 @@ int main(int argc, char** argv)
     SamplesRequest sq;
     samples->add_option("-o,--output", sq.output, "output PNG")->required();
     samples->add_option("--sampler", sq.sampler, sampler_help)
-        ->transform(CLI::CheckedTransformer(pathcl::sampler_names(), CLI::ignore_case))
+        ->transform(sampler_check)
         ->default_str("independent");
     samples->add_option("--spp", sq.spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 20));
     samples->add_option("--pixel", sq.pixel, "pixel X,Y (default 0,0)")->delimiter(',')->expected(2);
