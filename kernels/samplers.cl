@@ -27,7 +27,8 @@
  *                   permuted per set. For spp = 2^m each 2D set is a (0,m,2)-net.
  *   halton          dimension d is the radical inverse in the d-th prime base (256
  *                   bases, then they repeat with independent scrambles), each digit
- *                   Owen-scrambled with a hash of the digits above it (pbrt-v4); not
+ *                   permuted by a random permutation seeded by the digits above it
+ *                   (nested, Owen-style scrambling; base 2 by Burley's hash); not
  *                   padded: the sample index is used as is.
  *   hammersley      (i / spp, radical inverse base 2 of i), both Owen-scrambled; index
  *                   permuted per set. For spp = 2^m (the host rounds to it) a (0,m,2)-net.
@@ -218,11 +219,13 @@ __constant ushort HALTON_PRIMES[256] = {
     1523, 1531, 1543, 1549, 1553, 1559, 1567, 1571, 1579, 1583, 1597, 1601, 1607, 1609, 1613, 1619,
 };
 
-/* Radical inverse of a in `base` as the integer digits reversed / scale (scale = base^k).
- * Scrambled: every digit is permuted by a permutation seeded by `seed` and the digits
- * above it (Owen scrambling, as pbrt-v4's OwenScrambledRadicalInverse), and digits are
- * produced until base^k >= 2^24 (later ones cannot change a float). Unscrambled: only a's
- * own digits, so small values convert to float exactly. */
+/* Radical inverse of a in `base` (a prime) as the integer digits reversed / scale
+ * (scale = base^k). Scrambled: every digit is permuted by a random permutation chosen by
+ * `seed` and the digits above it (nested, Owen-style scrambling, like pbrt-v4's
+ * OwenScrambledRadicalInverse but with random affine permutations, which cost one hash
+ * per digit instead of a cycle-walked permutation), and digits are produced until
+ * base^k >= 2^24 (later ones cannot change a float). Unscrambled: only a's own digits,
+ * so small values convert to float exactly. */
 static inline void radical_inverse_digits(uint base, uint a, uint seed, bool scramble, ulong* reversed,
                                           ulong* scale)
 {
@@ -230,9 +233,15 @@ static inline void radical_inverse_digits(uint base, uint a, uint seed, bool scr
     for (uint level = 0u; scramble ? s < (1ul << 24) : a != 0u; ++level) {
         uint next = a / base;
         uint digit = a - next * base;
-        if (scramble) /* one permutation per node (level, digits above) of the digit tree */
-            digit = permute_element(digit, base,
-                                    hash_combine(hash_combine(hash_combine(seed, level), (uint)r), (uint)(r >> 32)));
+        /* One random permutation per node (level, digits above) of the digit tree: an
+         * affine map d -> (m d + o) mod base with m in [1, base) (a bijection: base is
+         * prime) and a uniform offset o, so each scrambled digit is uniform. The digits
+         * above are r < base^level < 2^24, so 32 bits of r name the node. */
+        if (scramble) {
+            uint h = hash_combine(seed + level * 0x9e3779b9u, (uint)r);
+            uint m = 1u + hash_u32(h ^ 0x2c1b3c6du) % (base - 1u);
+            digit = (digit * m + h % base) % base;
+        }
         r = r * base + digit;
         s *= base;
         a = next;
@@ -264,7 +273,12 @@ static inline uint sqrt_floor_u32(uint n)
 static inline float halton_value(const SamplerState* s, uint dim)
 {
     uint base = HALTON_PRIMES[dim % 256u];
-    return radical_inverse(base, s->sample, sampler_set_hash(s->seed, s->pixel, dim, 0u), true);
+    uint seed = sampler_set_hash(s->seed, s->pixel, dim, 0u);
+    /* Base 2: Burley's hash-based Owen scramble of the bit-reversed index does the same
+     * nested scrambling in one pass instead of one permutation per digit. */
+    if (base == 2u)
+        return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(s->sample), seed));
+    return radical_inverse(base, s->sample, seed, true);
 }
 
 static inline float sampler_value_1d(const SamplerState* s, uint dim)

@@ -245,8 +245,9 @@ TEST(Samplers, ScrambledHaltonKeepsTheDigitStrata)
     // b^k points of a scrambled radical inverse still have distinct leading k digits:
     // one point in each interval of length b^-k (exact, on the integer digits). And the
     // Halton sampler's (base 2, base 3) pair of dims 0, 1: each 2^a x 3^b box holds one
-    // of the first 2^a 3^b points. Broken variant seen to fail: a digit permutation
-    // seeded with the digit's own value (not a permutation).
+    // of the first 2^a 3^b points. Broken variants seen to fail: a digit map
+    // d -> (m d + o) mod b whose multiplier m may be 0; a Kensler permutation seeded with
+    // the digit's own value (neither is a permutation).
     ClDevice& dev = test::test_device();
     for (std::uint32_t base : {2u, 3u, 5u, 13u}) {
         std::uint32_t k = base == 2 ? 10 : base == 3 ? 6 : base == 5 ? 4 : 2;

@@ -127,9 +127,9 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
 
     const cl::NDRange global(round_up(opt.width, kTile), round_up(opt.height, kTile));
     const cl::NDRange local(kTile, kTile);
-    // Camera-ray log: pixels on an evenly spaced grid (their rays are read back after the
-    // camera pass of each logged sample index; that read is outside the timed passes'
-    // intent but inside render_seconds, so do not time renders that log rays).
+    // Camera-ray log: pixels on an evenly spaced grid, whose rays are read back after the
+    // camera pass of each logged sample index (a blocking read: renders that log rays
+    // are not for timing).
     std::vector<std::uint32_t> log_xs, log_ys;
     if (opt.ray_log_samples > 0) {
         auto axis = [&](std::uint32_t size) {
