@@ -265,6 +265,7 @@ int main(int argc, char** argv)
         "(jittered and multi-jittered round --spp up to a square, hammersley to a power of two)";
     render->add_option("--sampler", opt.sampler, sampler_help)
         ->transform(sampler_check)
+        ->type_name("NAME")
         ->default_str("independent");
     RenderRequest rr;
     std::vector<double> look_from, look_at, up;
@@ -308,6 +309,7 @@ int main(int argc, char** argv)
         ->default_str("mis");
     bench->add_option("--sampler", bench_opt.sampler, sampler_help)
         ->transform(sampler_check)
+        ->type_name("NAME")
         ->default_str("independent");
 
     CLI::App* samples = app.add_subcommand(
@@ -316,6 +318,7 @@ int main(int argc, char** argv)
     samples->add_option("-o,--output", sq.output, "output PNG")->required();
     samples->add_option("--sampler", sq.sampler, sampler_help)
         ->transform(sampler_check)
+        ->type_name("NAME")
         ->default_str("independent");
     samples->add_option("--spp", sq.spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 20));
     samples->add_option("--pixel", sq.pixel, "pixel X,Y (default 0,0)")->delimiter(',')->expected(2);
