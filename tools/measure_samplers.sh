@@ -14,22 +14,25 @@ BUILD=${2:-build}
 RUNS=${3:-5}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
+SAMPLERS="independent jittered multi-jittered n-rooks sobol halton hammersley"
 echo "sampler,seed,render_s,rmse,rmse_r,rmse_g,rmse_b"
-for sampler in independent jittered multi-jittered n-rooks sobol halton hammersley; do
-    seed=1
-    while [ "$seed" -le "$RUNS" ]; do
+# Samplers interleaved within each seed, so that other load on the machine affects all
+# of them alike.
+seed=1
+while [ "$seed" -le "$RUNS" ]; do
+    for sampler in $SAMPLERS; do
         line=$("$BUILD/pathcl" render scenes/cornell-box.gltf -o "$TMP/img.exr" --width 64 --height 64 \
             --spp 64 --max-bounces 8 --seed "$seed" --sampler "$sampler")
         secs=$(echo "$line" | sed -n 's/.*| render \([0-9.]*\) s |.*/\1/p')
         rmse=$("$BUILD/pathcl" compare "$TMP/img.exr" "$REF" | sed -n \
             's/^RMSE of A against B (\([^ ]*\) \([^ ]*\) \([^ ]*\)), all channels \(.*\)$/\4,\1,\2,\3/p' || true)
         echo "$sampler,$seed,$secs,$rmse"
-        seed=$((seed + 1))
     done
+    seed=$((seed + 1))
 done | tee "$TMP/rows.csv"
 echo
 echo "sampler,mean_rmse,render_s_min,render_s_median,render_s_max"
-for sampler in independent jittered multi-jittered n-rooks sobol halton hammersley; do
+for sampler in $SAMPLERS; do
     grep "^$sampler," "$TMP/rows.csv" | sort -t, -k3 -g | awk -F, -v s="$sampler" '
         { t[NR] = $3; r += $4 }
         END { printf "%s,%.6f,%.3f,%.3f,%.3f\n", s, r / NR, t[1], t[int((NR + 1) / 2)], t[NR] }'
