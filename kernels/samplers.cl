@@ -28,8 +28,9 @@
  *   halton          dimension d is the radical inverse in the d-th prime base (256
  *                   bases, then they repeat with independent scrambles), each digit
  *                   permuted by a random permutation seeded by the digits above it
- *                   (nested, Owen-style scrambling; base 2 by Burley's hash); not
- *                   padded: the sample index is used as is.
+ *                   (nested, Owen-style scrambling; base 2 by Burley's hash) down to
+ *                   the level that tells the spp points apart, then a uniform offset;
+ *                   not padded: the sample index is used as is.
  *   hammersley      (i / spp, radical inverse base 2 of i), both Owen-scrambled; index
  *                   permuted per set. For spp = 2^m (the host rounds to it) a (0,m,2)-net.
  * Owen scrambling and the index permutations are seeded per (seed, pixel, dimension), so
@@ -219,24 +220,29 @@ __constant ushort HALTON_PRIMES[256] = {
     1523, 1531, 1543, 1549, 1553, 1559, 1567, 1571, 1579, 1583, 1597, 1601, 1607, 1609, 1613, 1619,
 };
 
-/* Radical inverse of a in `base` (a prime) as the integer digits reversed / scale
- * (scale = base^k). Scrambled: every digit is permuted by a random permutation chosen by
- * `seed` and the digits above it (nested, Owen-style scrambling, like pbrt-v4's
- * OwenScrambledRadicalInverse but with random affine permutations, which cost one hash
- * per digit instead of a cycle-walked permutation), and digits are produced until
- * base^k >= 2^24 (later ones cannot change a float). Unscrambled: only a's own digits,
- * so small values convert to float exactly. */
-static inline void radical_inverse_digits(uint base, uint a, uint seed, bool scramble, ulong* reversed,
-                                          ulong* scale)
+/* Radical inverse of a in `base` (a prime), as the integer digits reversed / scale
+ * (scale = base^k): the nested (Owen-style) scrambling of pbrt-v4's
+ * OwenScrambledRadicalInverse, with random affine digit permutations (one hash per digit
+ * instead of a cycle-walked permutation).
+ *   Unscrambled: a's own digits, so small values convert to float exactly.
+ *   Scrambled: every digit is permuted by a random permutation chosen by `seed` and the
+ *   digits above it, for as many digits as it takes to tell the first n points apart
+ *   (base^k >= n; at most base^k <= 2^24, float resolution). Below that level every one
+ *   of the n points has digit-tree nodes of its own, so its remaining scrambled digits
+ *   are independent uniform digits: `rest` is the hash the caller turns into a uniform
+ *   offset inside [reversed / scale, (reversed + 1) / scale). */
+static inline void radical_inverse_digits(uint base, uint a, uint n, uint seed, bool scramble, ulong* reversed,
+                                          ulong* scale, uint* rest)
 {
     ulong r = 0ul, s = 1ul;
-    for (uint level = 0u; scramble ? s < (1ul << 24) : a != 0u; ++level) {
+    uint level = 0u;
+    for (; scramble ? (s < n && s * base <= (1ul << 24)) : a != 0u; ++level) {
         uint next = a / base;
         uint digit = a - next * base;
         /* One random permutation per node (level, digits above) of the digit tree: an
          * affine map d -> (m d + o) mod base with m in [1, base) (a bijection: base is
          * prime) and a uniform offset o, so each scrambled digit is uniform. The digits
-         * above are r < base^level < 2^24, so 32 bits of r name the node. */
+         * above are r < base^level <= 2^24, so 32 bits of r name the node. */
         if (scramble) {
             uint h = hash_combine(seed + level * 0x9e3779b9u, (uint)r);
             uint m = 1u + hash_u32(h ^ 0x2c1b3c6du) % (base - 1u);
@@ -248,12 +254,19 @@ static inline void radical_inverse_digits(uint base, uint a, uint seed, bool scr
     }
     *reversed = r;
     *scale = s;
+    /* The node below the last digit (a's remaining digits included: nonzero only past
+     * float resolution). */
+    *rest = hash_combine(hash_combine(seed + level * 0x9e3779b9u, (uint)r), a);
 }
 
-static inline float radical_inverse(uint base, uint a, uint seed, bool scramble)
+/* The radical inverse of point a of a set of n (n only matters when scrambled). */
+static inline float radical_inverse(uint base, uint a, uint n, uint seed, bool scramble)
 {
     ulong r, s;
-    radical_inverse_digits(base, a, seed, scramble, &r, &s);
+    uint rest;
+    radical_inverse_digits(base, a, n, seed, scramble, &r, &s, &rest);
+    if (scramble)
+        return stratum_point((uint)r, (uint)s, u32_to_unit_float(rest));
     return fmin((float)r / (float)s, ONE_MINUS_EPSILON);
 }
 
@@ -278,7 +291,7 @@ static inline float halton_value(const SamplerState* s, uint dim)
      * nested scrambling in one pass instead of one permutation per digit. */
     if (base == 2u)
         return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(s->sample), seed));
-    return radical_inverse(base, s->sample, seed, true);
+    return radical_inverse(base, s->sample, max(s->spp, 1u), seed, true);
 }
 
 static inline float sampler_value_1d(const SamplerState* s, uint dim)

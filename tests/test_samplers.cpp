@@ -241,13 +241,15 @@ TEST(Samplers, HaltonRadicalInversesOfTheFirstPointsAreExact)
 
 TEST(Samplers, ScrambledHaltonKeepsTheDigitStrata)
 {
-    // Owen scrambling permutes digits within each node of the digit tree, so the first
-    // b^k points of a scrambled radical inverse still have distinct leading k digits:
-    // one point in each interval of length b^-k (exact, on the integer digits). And the
-    // Halton sampler's (base 2, base 3) pair of dims 0, 1: each 2^a x 3^b box holds one
-    // of the first 2^a 3^b points. Broken variants seen to fail: a digit map
-    // d -> (m d + o) mod b whose multiplier m may be 0; a Kensler permutation seeded with
-    // the digit's own value (neither is a permutation).
+    // Nested scrambling permutes digits within each node of the digit tree, so the first
+    // n = b^k points of a scrambled radical inverse have k-digit prefixes that are a
+    // permutation of 0 .. n-1 (exact, on the integer digits), and each value lies in its
+    // prefix's interval [d / n, (d + 1) / n) (exact). Through the Halton sampler itself:
+    // the first b^k values of dims 0..3 (bases 2, 3, 5, 7) hold one point per interval
+    // of length b^-k, and the (base 2, base 3) pair of dims 0, 1 one point per
+    // 2^-a x 3^-b box of the first 2^a 3^b points. Broken variants seen to fail: a digit
+    // map d -> (m d + o) mod b whose multiplier m may be 0; a Kensler permutation seeded
+    // with the digit's own value (neither is a permutation).
     ClDevice& dev = test::test_device();
     for (std::uint32_t base : {2u, 3u, 5u, 13u}) {
         std::uint32_t k = base == 2 ? 10 : base == 3 ? 6 : base == 5 ? 4 : 2;
@@ -265,16 +267,30 @@ TEST(Samplers, ScrambledHaltonKeepsTheDigitStrata)
         kern.setArg(4, digits);
         kern.setArg(5, scale);
         dev.queue.enqueueNDRangeKernel(kern, cl::NullRange, cl::NDRange(n));
+        std::vector<float> v(n);
         std::vector<cl_ulong> d(n), s(n);
+        dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
         dev.queue.enqueueReadBuffer(digits, CL_TRUE, 0, n * sizeof(cl_ulong), d.data());
         dev.queue.enqueueReadBuffer(scale, CL_TRUE, 0, n * sizeof(cl_ulong), s.data());
-        std::set<std::uint64_t> leading;
+        std::set<std::uint64_t> prefixes;
         for (std::size_t i = 0; i < n; ++i) {
-            ASSERT_GE(s[i], 1ull << 24) << "scrambled digits stop before float precision";
+            ASSERT_EQ(s[i], n) << "base " << base;
             ASSERT_LT(d[i], s[i]);
-            leading.insert(d[i] / (s[i] / n)); // s is a power of base, n = base^k divides it
+            prefixes.insert(d[i]);
+            double x = static_cast<double>(v[i]) * static_cast<double>(n); // exact
+            ASSERT_TRUE(x >= static_cast<double>(d[i]) && x < static_cast<double>(d[i] + 1))
+                << "base " << base << " point " << i << " value " << v[i] << " prefix " << d[i];
         }
-        EXPECT_EQ(leading.size(), n) << "base " << base;
+        EXPECT_EQ(prefixes.size(), n) << "base " << base;
+    }
+    const std::uint32_t bases[4] = {2, 3, 5, 7}, ks[4] = {8, 5, 3, 3};
+    for (std::uint32_t dim = 0; dim < 4; ++dim) {
+        std::uint32_t n = 1;
+        for (std::uint32_t i = 0; i < ks[dim]; ++i)
+            n *= bases[dim];
+        std::vector<glm::vec2> p = points(SAMPLER_HALTON, n, pixel_range(40, 4), dim, /*one_d=*/true);
+        for (std::size_t px = 0; px < 4; ++px)
+            EXPECT_TRUE(one_per_stratum_1d(&p[px * n], n, 0)) << "dim " << dim;
     }
     for (std::uint32_t a : {1u, 3u})
         for (std::uint32_t b : {1u, 2u}) {
