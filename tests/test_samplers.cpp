@@ -384,7 +384,7 @@ TEST(Samplers, ConvergenceOrderOfSmooth2DIntegrals)
     // between rows: spp^-3 on the bump, but only about spp^-1.5 on exp(x y) (measured
     // -1.46; the original, uncorrelated multi-jittered construction of Chiu, Shirley and
     // Wang, simulated outside this repository, gave -2.1). Halton at dims 45, 46 (bases
-    // 199 and 211) is only reported: at these spp its high bases converge slowly (-1.3).
+    // 199 and 211) is only reported: at these spp its high bases converge slowly (-1.4).
     // Broken variant seen to fail: jittered with each sample's stratum drawn at random
     // (slope -1.0 on both integrands).
     double exp_xy = 0.0, term = 1.0;
