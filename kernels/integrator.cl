@@ -173,7 +173,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
             break;
 
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
-        SamplerState sampler = sampler_start(pixel, frame.sample_index, frame.seed, dims + DIM_TECHNIQUE);
+        SamplerState sampler = frame_sampler(&frame, pixel, dims + DIM_TECHNIQUE);
         bool technique_light = sampler_get_1d(&sampler) < 0.5f; /* used by one-sample only */
 
 #ifdef PATHCL_HAS_LIGHTS

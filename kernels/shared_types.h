@@ -209,19 +209,39 @@ typedef struct {
     pcl_int texture; /* TRIANGLE: the material's emissive TextureView or TEXTURE_NONE; other types: unused */
 } Light;
 
-/* Camera types */
-#define CAMERA_PINHOLE 0
+/* Camera projections */
+#define CAMERA_PERSPECTIVE 0  /* pinhole, or a thin lens when lens_radius > 0 */
+#define CAMERA_ORTHOGRAPHIC 1 /* parallel rays along forward (thin lens too if lens_radius > 0) */
 
-/* Camera in world space: 80 bytes. A film position (sx, sy) in [-1, 1]^2 (sy up) maps to
- * the direction forward + sx * right + sy * up, so right and up carry tan(fov / 2). */
+/* Camera in render space: 80 bytes. A film position (sx, sy) in [-1, 1]^2 (sy up) maps
+ *   perspective:  to the ray from position along forward + sx * right + sy * up, so right
+ *                 and up carry tan(yfov / 2) (times the aspect ratio for right);
+ *   orthographic: to the ray from position + sx * right + sy * up along forward, so right
+ *                 and up carry the half-width and half-height (glTF xmag, ymag).
+ * Thin lens (lens_radius > 0, compiled in only with PATHCL_HAS_THIN_LENS): the ray starts
+ * at a point of the disk of radius lens_radius around that origin in the right/up plane
+ * and passes through the point where the pinhole ray meets the plane of focus, at
+ * distance focus_distance along forward. */
 typedef struct {
     pcl_float4 position;
     pcl_float4 forward; /* unit */
-    pcl_float4 right;   /* length tan(yfov / 2) * aspect */
-    pcl_float4 up;      /* length tan(yfov / 2) */
-    pcl_int type;
-    pcl_int pad0, pad1, pad2;
+    pcl_float4 right;
+    pcl_float4 up;
+    pcl_int type;            /* CAMERA_* */
+    pcl_float lens_radius;    /* 0: pinhole */
+    pcl_float focus_distance; /* > 0 when lens_radius > 0 */
+    pcl_int pad0;
 } Camera;
+
+/* Samplers (--sampler); see kernels/samplers.cl. */
+#define SAMPLER_INDEPENDENT 0
+#define SAMPLER_JITTERED 1
+#define SAMPLER_MULTI_JITTERED 2
+#define SAMPLER_N_ROOKS 3
+#define SAMPLER_SOBOL 4
+#define SAMPLER_HALTON 5
+#define SAMPLER_HAMMERSLEY 6
+#define SAMPLER_COUNT 7
 
 /* Light-sampling strategies (--strategy); all converge to the same image. */
 #define STRATEGY_BSDF 0       /* BSDF sampling only: lights are found by chance */
@@ -239,7 +259,9 @@ typedef struct {
     pcl_uint strategy;
     pcl_uint sphere_count; /* lights[0 .. sphere_count) are spheres */
     pcl_int environment;   /* index of the environment light, -1 if none */
-    pcl_uint pad0, pad1, pad2;
+    pcl_uint sampler;      /* SAMPLER_* */
+    pcl_uint spp;          /* samples per pixel of the render (the samplers' set size) */
+    pcl_uint pad0;
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a
@@ -250,7 +272,11 @@ typedef struct {
     pcl_float4 sum_sq, sum_sq_compensation;
 } FilmPixel;
 
-/* Random-number dimensions the camera kernel consumes; the integrator starts after. */
+/* Sampler dimensions (kernels/samplers.cl). Every decision of a path has its own: a 1D
+ * decision one dimension, a 2D decision the pair (d, d + 1), drawn as one 2D point set.
+ * A bounce's decisions sit at fixed offsets, so a path's numbers never depend on which
+ * branches earlier bounces took. The camera kernel consumes the first four; the
+ * integrator's bounce k starts at DIM_PATH_START + k * DIMS_PER_BOUNCE. */
 #define DIM_PIXEL 0
 #define DIM_LENS 2
 #define DIM_PATH_START 4

@@ -205,6 +205,54 @@ TEST_F(Cli, ExistingOutputIsUnchangedWhenTheSceneIsInvalid)
     EXPECT_EQ(listing(work_), (std::set<std::string>{"needs-bin.gltf", "out.png"})) << "a stray file was created";
 }
 
+// Usage errors (CLI11's parse errors) follow the same contract.
+TEST_F(Cli, UnknownSamplerIsOneLineError)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --sampler bogus" + kTiny);
+    expect_clean_failure(r, "--sampler");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+// Camera flags that make no camera fail before rendering, naming the flag.
+TEST_F(Cli, ApertureWithoutFocusDistance)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --aperture 0.01" + kTiny);
+    expect_clean_failure(r, "--aperture");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+TEST_F(Cli, CameraIndexPastTheLastCameraNode)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --camera 1" + kTiny);
+    expect_clean_failure(r, "--camera 1");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+TEST_F(Cli, LookAtEqualToLookFrom)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --look-from 1,2,3 --look-at 1,2,3" + kTiny);
+    expect_clean_failure(r, "--look-at");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+TEST_F(Cli, RayLogMustBePly)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --ray-log rays.txt" + kTiny);
+    expect_clean_failure(r, "rays.txt");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+TEST_F(Cli, SamplePlotMustBePng)
+{
+    RunResult r = run("samples --sampler sobol --spp 16 -o points.jpg");
+    expect_clean_failure(r, "points.jpg");
+    r = run("samples --sampler sobol --spp 16 -o points.exr");
+    expect_clean_failure(r, "points.exr");
+    r = run("samples --sampler sobol --spp 16 --dims 3,3 -o points.png");
+    expect_clean_failure(r, "--dims");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
 TEST_F(Cli, RenderHelpExitsZero)
 {
     RunResult r = run("render --help");

@@ -881,10 +881,11 @@ TEST(GltfCamera, NodeScaleDoesNotChangeYfov)
     EXPECT_TRUE(s.camera.from_file);
 }
 
-TEST(GltfCamera, FirstPerspectiveCameraIsUsed)
+TEST(GltfCamera, FirstCameraNodeIsUsedAndCameraNPicksTheNth)
 {
-    // Tolerance: exact yfov. Root order: an orthographic camera, perspective A (yfov 0.5),
-    // perspective B (yfov 0.9): A is the first perspective camera.
+    // Tolerance: exact. Root order: an orthographic camera, perspective A (yfov 0.5),
+    // perspective B (yfov 0.9). By default the first camera node (the orthographic one);
+    // --camera N counts camera nodes of either type from 0.
     GltfBuilder b;
     b.add_root(b.add_node(b.add_mesh(b.add_positions(kTilted), -1, b.add_material(glm::vec3(0.5f)))));
     tinygltf::Camera ortho;
@@ -903,8 +904,17 @@ TEST(GltfCamera, FirstPerspectiveCameraIsUsed)
     b.add_root(a);
     b.add_root(c);
     Scene s = import(b);
-    EXPECT_EQ(s.camera.yfov, 0.5);
-    EXPECT_EQ(s.camera.position, glm::dvec3(0.0, 0.0, 5.0));
+    EXPECT_TRUE(s.camera.orthographic);
+    EXPECT_EQ(s.camera.ymag, 1.0);
+    EXPECT_EQ(s.camera.position, glm::dvec3(0.0, 0.0, 9.0));
+    Scene s1 = in_world_space(import_gltf(b.model, "test.gltf", "", 1));
+    EXPECT_FALSE(s1.camera.orthographic);
+    EXPECT_EQ(s1.camera.yfov, 0.5);
+    EXPECT_EQ(s1.camera.position, glm::dvec3(0.0, 0.0, 5.0));
+    Scene s2 = in_world_space(import_gltf(b.model, "test.gltf", "", 2));
+    EXPECT_EQ(s2.camera.yfov, 0.9);
+    EXPECT_EQ(s2.camera.position, glm::dvec3(0.0, 0.0, 7.0));
+    EXPECT_THROW(import_gltf(b.model, "test.gltf", "", 3), Error);
 }
 
 // Bounds (0..2, -1..1, 3..4) from two triangles; no camera in the file.

@@ -1,5 +1,6 @@
 // The statistical comparator itself: it must accept two independent estimates of the
 // same image and reject a small bias, so the render tests that rely on it can fail.
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -61,6 +62,26 @@ TEST(ImageCompare, OneWrongPixelOutOfFewFails)
     a.rgb[28] *= 3.0f;
     a.rgb[29] *= 3.0f;
     EXPECT_FALSE(compare_images(a, b).passed);
+}
+
+TEST(ImageCompare, RmseIsTheRootMeanSquarePixelDifferencePerChannel)
+{
+    // Exact (1e-12): two pixels, differences (0.3, 0, -1) and (0.4, 0, 1).
+    Image a, b;
+    a.width = 2;
+    a.height = 1;
+    a.spp = 1;
+    a.rgb = {1.3f, 0.5f, 0.0f, 2.4f, 0.5f, 3.0f};
+    a.variance.assign(6, 0.0f);
+    b = a;
+    b.rgb = {1.0f, 0.5f, 1.0f, 2.0f, 0.5f, 2.0f};
+    CompareReport r = compare_images(a, b);
+    auto d = [](float x, float y) { return static_cast<double>(x) - static_cast<double>(y); };
+    double r0 = std::sqrt((d(1.3f, 1.0f) * d(1.3f, 1.0f) + d(2.4f, 2.0f) * d(2.4f, 2.0f)) / 2.0);
+    EXPECT_NEAR(r.rmse[0], r0, 1e-12);
+    EXPECT_EQ(r.rmse[1], 0.0);
+    EXPECT_NEAR(r.rmse[2], 1.0, 1e-12);
+    EXPECT_NEAR(r.rmse_all, std::sqrt((2.0 * r0 * r0 + 2.0) / 6.0), 1e-12);
 }
 
 TEST(ImageCompare, SizeMismatchThrows)

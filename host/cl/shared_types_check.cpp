@@ -19,8 +19,9 @@ static_assert(sizeof(TextureView) == 64 && offsetof(TextureView, image) == 32 &&
 static_assert(sizeof(Material) == 112 && offsetof(Material, metallic) == 48 &&
               offsetof(Material, base_color_texture) == 72 && offsetof(Material, smooth_layer_average) == 100);
 static_assert(sizeof(Light) == 80 && offsetof(Light, type) == 64 && offsetof(Light, texture) == 76);
-static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64);
-static_assert(sizeof(FrameParams) == 48);
+static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
+              offsetof(Camera, focus_distance) == 72);
+static_assert(sizeof(FrameParams) == 48 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40);
 static_assert(sizeof(FilmPixel) == 64);
 
 } // namespace pathcl

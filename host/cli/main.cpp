@@ -1,8 +1,10 @@
-// pathcl command line: `render`, `devices`, `compare`. Every error is one line on stderr
-// ("pathcl: error: ...") and exit code 2; nothing is written unless the render succeeded.
+// pathcl command line: `render`, `devices`, `bench`, `compare`, `samples`. Every error is
+// one line on stderr ("pathcl: error: ...") and exit code 2; nothing is written unless
+// the command succeeded.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
@@ -14,7 +16,11 @@
 #include "common/error.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
+#include "render/ray_log.h"
 #include "render/renderer.h"
+#include "sampling/sample_plot.h"
+#include "sampling/samplers.h"
+#include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
 #include "shared_types.h"
 
@@ -63,25 +69,93 @@ void apply_environment_flags(pathcl::Scene& scene, const EnvironmentOverride& o)
     env.rotation_degrees = o.rotation_degrees;
 }
 
-int run_render(const std::string& scene_path, const std::vector<std::string>& outputs,
-               const pathcl::RenderOptions& opt, const EnvironmentOverride& env)
+struct RenderRequest {
+    std::string scene_path;
+    std::vector<std::string> outputs;
+    pathcl::RenderOptions options;
+    EnvironmentOverride env;
+    int camera = -1; // --camera N; -1: the first camera node
+    pathcl::CameraOverrides camera_overrides;
+    std::string ray_log; // --ray-log FILE.ply
+};
+
+int run_render(RenderRequest rq)
 {
-    for (const std::string& output : outputs)
+    for (const std::string& output : rq.outputs)
         pathcl::check_output_path(output); // fail before spending time on the render
-    pathcl::Scene scene = pathcl::load_gltf(scene_path);
-    apply_environment_flags(scene, env);
+    if (!rq.ray_log.empty())
+        pathcl::check_ray_log_path(rq.ray_log);
+    if (rq.camera < -1)
+        throw pathcl::Error("--camera must be >= 0");
+    pathcl::Scene scene = pathcl::load_gltf(rq.scene_path, rq.camera);
+    apply_environment_flags(scene, rq.env);
+    pathcl::apply_camera_overrides(scene, rq.camera_overrides);
+    pathcl::RenderOptions& opt = rq.options;
+    if (!rq.ray_log.empty())
+        opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
     pathcl::RenderResult r = pathcl::render(scene, opt);
-    for (const std::string& output : outputs)
+    for (const std::string& output : rq.outputs)
         pathcl::write_image(output, r.image);
+    if (!rq.ray_log.empty())
+        pathcl::write_ray_log(rq.ray_log, r.camera_rays);
     const pathcl::RenderStats& s = r.stats;
     std::string names;
-    for (const std::string& output : outputs)
+    for (const std::string& output : rq.outputs)
         names += (names.empty() ? "" : ", ") + output;
-    std::printf("%s: %zu triangles, %zu lights | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
+    if (!rq.ray_log.empty())
+        names += ", " + rq.ray_log + " (" + std::to_string(r.camera_rays.size()) + " rays)";
+    std::string spp = std::to_string(s.spp) + " spp " + pathcl::sampler_name(opt.sampler);
+    if (s.spp != opt.spp)
+        spp += " (rounded up from " + std::to_string(opt.spp) + ")";
+    std::printf("%s: %zu triangles, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
                 "%.3g samples/s | %llu NaN/Inf samples\n",
-                names.c_str(), s.triangles, s.lights, s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
+                names.c_str(), s.triangles, s.lights, spp.c_str(), s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
                 s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
                 static_cast<unsigned long long>(s.bad_samples));
+    return 0;
+}
+
+struct SamplesRequest {
+    std::string output;
+    std::uint32_t sampler = 0, spp = 16, seed = 0, width = 512;
+    std::vector<std::uint32_t> pixel{0, 0}, dims{0, 1};
+    bool spectrum = false;
+    int device = 0;
+};
+
+// `pathcl samples`: draws one pixel's point set (and the averaged power spectrum).
+int run_samples(const SamplesRequest& rq)
+{
+    pathcl::check_output_path(rq.output);
+    std::string ext = std::filesystem::path(rq.output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".png")
+        throw pathcl::Error(rq.output + ": the sample plot must be a .png");
+    if (rq.pixel[0] >= rq.width)
+        throw pathcl::Error("--pixel: x must be less than --width (" + std::to_string(rq.width) + ")");
+    pathcl::SamplePlotRequest plot;
+    plot.sampler = rq.sampler;
+    plot.spp = pathcl::sampler_spp(rq.sampler, rq.spp);
+    plot.seed = rq.seed;
+    plot.dim0 = rq.dims[0];
+    plot.dim1 = rq.dims[1];
+    plot.pixel = rq.pixel[1] * rq.width + rq.pixel[0];
+    plot.pixel_label = "(" + std::to_string(rq.pixel[0]) + ", " + std::to_string(rq.pixel[1]) + ")";
+    plot.spectrum = rq.spectrum;
+    if (plot.dim0 == plot.dim1)
+        throw pathcl::Error("--dims: the two dimensions must differ");
+    if (plot.spectrum && plot.spp > pathcl::kSpectrumMaxSpp)
+        throw pathcl::Error("--spectrum needs --spp at most " + std::to_string(pathcl::kSpectrumMaxSpp));
+    pathcl::ClDevice dev = pathcl::open_device(rq.device);
+    pathcl::ProgramBuild pb = pathcl::build_program(dev, "");
+    std::string note;
+    pathcl::Image img = pathcl::draw_sample_plot(dev, pb.program, plot, &note);
+    pathcl::write_image(rq.output, img);
+    std::string spp = std::to_string(plot.spp) + " spp";
+    if (plot.spp != rq.spp)
+        spp += " (rounded up from " + std::to_string(rq.spp) + ")";
+    std::printf("%s: %s, %s, pixel %s, dims %u,%u%s%s\n", rq.output.c_str(), pathcl::sampler_name(rq.sampler).c_str(),
+                spp.c_str(), plot.pixel_label.c_str(), plot.dim0, plot.dim1, note.empty() ? "" : " | ", note.c_str());
     return 0;
 }
 
@@ -129,6 +203,13 @@ int main(int argc, char** argv)
 {
     CLI::App app{"pathcl: a physically based OpenCL path tracer for glTF 2.0 scenes"};
     app.require_subcommand(1);
+    // Usage errors follow the same contract as every other error: one line, exit code 2.
+    // (Set before the subcommands are added: they inherit it.)
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        std::string what = e.what();
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        return "pathcl: error: " + what + "\n";
+    });
 
     CLI::App* render = app.add_subcommand("render", "Render a glTF scene to an EXR or PNG image");
     std::string scene_path;
@@ -167,6 +248,49 @@ int main(int argc, char** argv)
     render->add_option("--strategy", opt.strategy, "light sampling: bsdf, nee, one-sample or mis")
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
+    // --sampler NAME: a readable message for a bad name (CheckedTransformer's lists the
+    // numeric values too).
+    const CLI::Validator sampler_check(
+        [](std::string& value) {
+            std::string lower = value;
+            std::transform(lower.begin(), lower.end(), lower.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            auto it = pathcl::sampler_names().find(lower);
+            if (it == pathcl::sampler_names().end())
+                return "unknown sampler '" + value +
+                       "' (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
+            value = std::to_string(it->second);
+            return std::string();
+        },
+        "SAMPLER");
+    const std::string sampler_help =
+        "sampler: independent, jittered, multi-jittered, n-rooks, sobol, halton or hammersley "
+        "(jittered and multi-jittered round --spp up to a square, hammersley to a power of two)";
+    render->add_option("--sampler", opt.sampler, sampler_help)
+        ->transform(sampler_check)
+        ->type_name("NAME")
+        ->default_str("independent");
+    RenderRequest rr;
+    std::vector<double> look_from, look_at, up;
+    double fov = 0.0, aperture = 0.0, focus_distance = 0.0;
+    render->add_option("--camera", rr.camera,
+                       "camera node to render from: N-th camera node (perspective or orthographic) in depth-first "
+                       "node order, from 0 (default: the first)");
+    CLI::Option* fov_opt = render->add_option("--fov", fov, "vertical field of view in degrees (perspective camera)");
+    render->add_option("--look-from", look_from, "camera position X,Y,Z (world space)")->delimiter(',')->expected(3);
+    render->add_option("--look-at", look_at, "point the camera looks at X,Y,Z (world space)")
+        ->delimiter(',')
+        ->expected(3);
+    render->add_option("--up", up, "up direction X,Y,Z for --look-at (default: the camera's up)")
+        ->delimiter(',')
+        ->expected(3);
+    CLI::Option* aperture_opt =
+        render->add_option("--aperture", aperture, "thin-lens radius in world units (0: pinhole)");
+    CLI::Option* focus_opt =
+        render->add_option("--focus-distance", focus_distance, "distance of the plane of focus along the view");
+    render->add_option("--ray-log", rr.ray_log,
+                       "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
+                       "directions as normals");
 
     bool single_scattering = false;
     render->add_flag("--single-scattering", single_scattering,
@@ -191,6 +315,32 @@ int main(int argc, char** argv)
     bench->add_option("--strategy", bench_opt.strategy, "light sampling: bsdf, nee, one-sample or mis")
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
+    bench->add_option("--sampler", bench_opt.sampler, sampler_help)
+        ->transform(sampler_check)
+        ->type_name("NAME")
+        ->default_str("independent");
+
+    CLI::App* samples = app.add_subcommand(
+        "samples", "Draw one pixel's sample points for a dimension pair (and their power spectrum) to a PNG");
+    SamplesRequest sq;
+    samples->add_option("-o,--output", sq.output, "output PNG")->required();
+    samples->add_option("--sampler", sq.sampler, sampler_help)
+        ->transform(sampler_check)
+        ->type_name("NAME")
+        ->default_str("independent");
+    samples->add_option("--spp", sq.spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 20));
+    samples->add_option("--pixel", sq.pixel, "pixel X,Y (default 0,0)")->delimiter(',')->expected(2);
+    samples->add_option("--width", sq.width, "image width the pixel index y * width + x refers to")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 32768u));
+    samples->add_option("--dims", sq.dims,
+                        "dimensions D0,D1 (default 0,1: the film position); D1 = D0 + 1 is the 2D decision at D0, "
+                        "other pairs are two 1D decisions")
+        ->delimiter(',')
+        ->expected(2);
+    samples->add_option("--seed", sq.seed, "random seed")->capture_default_str();
+    samples->add_flag("--spectrum", sq.spectrum, "add the power spectrum averaged over many pixels");
+    samples->add_option("--device", sq.device, "OpenCL device index")->capture_default_str();
 
     CLI::App* compare = app.add_subcommand(
         "compare", "Statistically compare two EXR renders (per-pixel, tile and image z-tests); exit 1 if they differ");
@@ -218,9 +368,28 @@ int main(int argc, char** argv)
             opt.devices = {device};
             if (single_scattering)
                 opt.extra_build_options += " -DPATHCL_SINGLE_SCATTERING";
-            EnvironmentOverride env{env_file, env_strength, env_rotation, background};
-            return run_render(scene_path, outputs, opt, env);
+            rr.scene_path = scene_path;
+            rr.outputs = outputs;
+            rr.options = opt;
+            rr.env = EnvironmentOverride{env_file, env_strength, env_rotation, background};
+            pathcl::CameraOverrides& co = rr.camera_overrides;
+            auto vec = [](const std::vector<double>& v) { return glm::dvec3(v[0], v[1], v[2]); };
+            if (fov_opt->count())
+                co.fov_degrees = fov;
+            if (!look_from.empty())
+                co.look_from = vec(look_from);
+            if (!look_at.empty())
+                co.look_at = vec(look_at);
+            if (!up.empty())
+                co.up = vec(up);
+            if (aperture_opt->count())
+                co.aperture = aperture;
+            if (focus_opt->count())
+                co.focus_distance = focus_distance;
+            return run_render(rr);
         }
+        if (samples->parsed())
+            return run_samples(sq);
         if (bench->parsed()) {
             bench_opt.devices = {bench_device};
             return run_bench(bench_scene, bench_opt, bench_runs);

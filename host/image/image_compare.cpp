@@ -94,6 +94,14 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
     // render alone underestimates the variance of pixels whose rare bright paths it
     // missed. Separate (Welch): each render's own variance.
     const double na = a.spp, nb = b.spp;
+    double sq[3] = {0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < n * 3; ++i) {
+        double d = static_cast<double>(a.rgb[i]) - static_cast<double>(b.rgb[i]);
+        sq[i % 3] += d * d;
+    }
+    for (int c = 0; c < 3; ++c)
+        r.rmse[c] = std::sqrt(sq[c] / static_cast<double>(n));
+    r.rmse_all = std::sqrt((sq[0] + sq[1] + sq[2]) / (3.0 * static_cast<double>(n)));
     Image pooled_a = a, pooled_b = b;
     for (std::size_t i = 0; i < n * 3 && opt.pooled_variance; ++i) {
         double pooled = ((na - 1.0) * a.variance[i] + (nb - 1.0) * b.variance[i]) / std::max(na + nb - 2.0, 1.0);
@@ -141,6 +149,9 @@ std::string CompareReport::summary() const
                   "image mean A (%.5f %.5f %.5f)  B (%.5f %.5f %.5f)  std. error of difference (%.5f %.5f %.5f)\n",
                   mean_a[0], mean_a[1], mean_a[2], mean_b[0], mean_b[1], mean_b[2], stderr_diff[0], stderr_diff[1],
                   stderr_diff[2]);
+    out += line;
+    std::snprintf(line, sizeof line, "RMSE of A against B (%.6g %.6g %.6g), all channels %.6g\n", rmse[0], rmse[1],
+                  rmse[2], rmse_all);
     out += line;
     out += passed ? "PASS\n" : "FAIL\n";
     return out;

@@ -39,6 +39,9 @@ struct CompareScale {
 struct CompareReport {
     std::vector<CompareScale> scales;
     double mean_a[3] = {}, mean_b[3] = {}, stderr_diff[3] = {};
+    // Root-mean-square pixel difference per channel, and over all channels (the error of
+    // A when B is a converged reference).
+    double rmse[3] = {}, rmse_all = 0.0;
     bool passed = false;
     std::string summary() const;
 };

@@ -253,14 +253,20 @@ DeviceScene make_device_scene(const Scene& scene)
 
 Camera make_device_camera(const SceneCamera& cam, std::uint32_t width, std::uint32_t height)
 {
-    double tan_half = std::tan(0.5 * cam.yfov);
+    // The image's aspect ratio wins over the file's: the vertical extent (yfov, or ymag)
+    // is kept and the horizontal one follows the image.
+    double half_height = cam.orthographic ? cam.ymag : std::tan(0.5 * cam.yfov);
     double aspect = static_cast<double>(width) / static_cast<double>(height);
     Camera c{};
-    c.type = CAMERA_PINHOLE;
+    c.type = cam.orthographic ? CAMERA_ORTHOGRAPHIC : CAMERA_PERSPECTIVE;
     c.position = f4(cam.position);
     c.forward = f4(glm::normalize(cam.forward));
-    c.right = f4(glm::normalize(cam.right) * (tan_half * aspect));
-    c.up = f4(glm::normalize(cam.up) * tan_half);
+    c.right = f4(glm::normalize(cam.right) * (half_height * aspect));
+    c.up = f4(glm::normalize(cam.up) * half_height);
+    if (cam.aperture > 0.0) {
+        c.lens_radius = static_cast<float>(cam.aperture);
+        c.focus_distance = static_cast<float>(cam.focus_distance);
+    }
     return c;
 }
 

@@ -37,8 +37,8 @@ DeviceScene make_device_scene(const Scene& scene);
 // Fills the alias-table fields and pmf (radiance.w) of `lights` from their powers.
 void build_light_alias_table(std::vector<Light>& lights, const std::vector<double>& power);
 
-// Camera for an image of the given size: yfov is kept; the horizontal extent follows
-// the image's aspect ratio.
+// Camera for an image of the given size: yfov (orthographic: ymag) is kept; the
+// horizontal extent follows the image's aspect ratio.
 Camera make_device_camera(const SceneCamera& cam, std::uint32_t width, std::uint32_t height);
 
 } // namespace pathcl

@@ -6,6 +6,7 @@
 #include "cl/cl_runtime.h"
 #include "common/error.h"
 #include "render/device_scene.h"
+#include "sampling/samplers.h"
 #include "shared_types.h"
 
 namespace pathcl {
@@ -58,6 +59,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
         throw Error("no device selected");
     if (opt.strategy > STRATEGY_MIS)
         throw Error("unknown light-sampling strategy " + std::to_string(opt.strategy));
+    const std::uint32_t spp = sampler_spp(opt.sampler, opt.spp); // throws for an unknown sampler
 
     RenderResult result;
     RenderStats& stats = result.stats;
@@ -142,9 +144,25 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
 
     const cl::NDRange global(round_up(opt.width, kTile), round_up(opt.height, kTile));
     const cl::NDRange local(kTile, kTile);
+    // Camera-ray log: pixels on an evenly spaced grid, whose rays are read back after the
+    // camera pass of each logged sample index (a blocking read: renders that log rays
+    // are not for timing).
+    std::vector<std::uint32_t> log_xs, log_ys;
+    if (opt.ray_log_samples > 0) {
+        auto axis = [&](std::uint32_t size) {
+            std::uint32_t n = std::min(std::max(opt.ray_log_grid, 1u), size);
+            std::vector<std::uint32_t> v;
+            for (std::uint32_t i = 0; i < n; ++i)
+                v.push_back(static_cast<std::uint32_t>((2ull * i + 1) * size / (2ull * n)));
+            return v;
+        };
+        log_xs = axis(opt.width);
+        log_ys = axis(opt.height);
+    }
+    std::vector<Ray> logged(opt.ray_log_samples > 0 ? pixels : 0);
     auto start = std::chrono::steady_clock::now();
     try {
-        for (std::uint32_t s = 0; s < opt.spp; ++s) {
+        for (std::uint32_t s = 0; s < spp; ++s) {
             DeviceRender& dr = *devices[s % devices.size()];
             FrameParams frame{};
             frame.width = opt.width;
@@ -156,9 +174,21 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             frame.strategy = opt.strategy;
             frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
             frame.environment = ds.environment_light;
+            frame.sampler = opt.sampler;
+            frame.spp = spp;
             dr.camera_kernel.setArg(2, frame);
             dr.path_kernel.setArg(kPathFrameArg, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
+            if (s < opt.ray_log_samples) {
+                dr.dev.queue.enqueueReadBuffer(dr.rays, CL_TRUE, 0, pixels * sizeof(Ray), logged.data());
+                for (std::uint32_t y : log_ys)
+                    for (std::uint32_t x : log_xs) {
+                        const Ray& r = logged[static_cast<std::size_t>(y) * opt.width + x];
+                        result.camera_rays.push_back(
+                            {glm::dvec3(r.origin.x, r.origin.y, r.origin.z) + scene.render_origin,
+                             glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
+                    }
+            }
             dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
             if (s % 16 == 15)
                 dr.dev.queue.flush();
@@ -194,12 +224,13 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
         throw Error("reading the film failed: " + cl_error_text(e));
     }
     stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stats.samples_per_second = static_cast<double>(pixels) * opt.spp / std::max(stats.render_seconds, 1e-9);
+    stats.samples_per_second = static_cast<double>(pixels) * spp / std::max(stats.render_seconds, 1e-9);
+    stats.spp = spp;
 
     Image& img = result.image;
     img.width = opt.width;
     img.height = opt.height;
-    img.spp = opt.spp;
+    img.spp = spp;
     img.rgb.resize(pixels * 3);
     img.variance.resize(pixels * 3);
     for (std::size_t i = 0; i < pixels; ++i) {

@@ -316,6 +316,7 @@ struct Importer {
     bool tangents_used = false;
     std::vector<std::array<glm::dvec4, 3>> pending_tangents;
     std::vector<TriangleColor> pending_colors;
+    int camera_choice = -1; // camera node to use (depth-first order); -1: the first, if any
 
     int material_for(int gltf_material)
     {
@@ -640,6 +641,8 @@ struct Importer {
         import_environment(model.scenes[static_cast<std::size_t>(scene_index)].extras);
 
         bool have_camera = false;
+        int camera_nodes = 0; // camera nodes seen so far, in depth-first order
+        const int wanted_camera = std::max(camera_choice, 0);
         struct Item {
             int node;
             glm::dmat4 parent;
@@ -673,18 +676,21 @@ struct Importer {
             auto light_ext = node.extensions.find("KHR_lights_punctual");
             if (light_ext != node.extensions.end() && light_ext->second.Has("light"))
                 import_light(light_ext->second.Get("light"), world, what);
-            if (node.camera >= 0 && !have_camera) {
+            if (node.camera >= 0) {
                 if (node.camera >= static_cast<int>(model.cameras.size()))
                     throw Error(source + ": " + what + ": camera " + std::to_string(node.camera) + " does not exist");
-                const tinygltf::Camera& cam = model.cameras[static_cast<std::size_t>(node.camera)];
-                if (cam.type == "perspective") {
-                    import_camera(cam, world, what);
+                if (camera_nodes++ == wanted_camera) {
+                    import_camera(model.cameras[static_cast<std::size_t>(node.camera)], node.extras, world, what);
                     have_camera = true;
                 }
             }
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
                 stack.push_back({*it, world, item.depth + 1});
         }
+        if (camera_choice >= 0 && !have_camera)
+            throw Error(source + ": --camera " + std::to_string(camera_choice) + ": the scene has " +
+                        std::to_string(camera_nodes) + " camera node" + (camera_nodes == 1 ? "" : "s") +
+                        " (counted from 0)");
         // Render space: world space translated so that the camera (else the centre of the
         // geometry) is the origin. Positions are composed in double and only then rounded
         // to float, so a scene 1e5 from the world origin keeps its full float precision.
@@ -806,37 +812,71 @@ struct Importer {
         scene.lights.push_back(out);
     }
 
-    void import_camera(const tinygltf::Camera& cam, const glm::dmat4& world, const std::string& what)
+    // A perspective or orthographic camera on a node with world transform `world`; the
+    // node's extras may give a thin lens: {"aperture": R, "focusDistance": D}.
+    void import_camera(const tinygltf::Camera& cam, const tinygltf::Value& extras, const glm::dmat4& world,
+                       const std::string& what)
     {
-        double yfov = cam.perspective.yfov;
-        if (!(yfov > 0.0 && yfov < std::numbers::pi))
-            throw Error(source + ": " + what + ": perspective yfov must be in (0, pi)");
+        SceneCamera& c = scene.camera;
+        if (cam.type == "perspective") {
+            double yfov = cam.perspective.yfov;
+            if (!(yfov > 0.0 && yfov < std::numbers::pi))
+                throw Error(source + ": " + what + ": perspective yfov must be in (0, pi)");
+            c.yfov = yfov;
+            c.orthographic = false;
+        } else if (cam.type == "orthographic") {
+            double ymag = cam.orthographic.ymag;
+            if (!(ymag > 0.0 && std::isfinite(ymag)))
+                throw Error(source + ": " + what + ": orthographic ymag must be positive");
+            c.ymag = ymag;
+            c.orthographic = true;
+        } else {
+            throw Error(source + ": " + what + ": unknown camera type '" + cam.type + "'");
+        }
         glm::dmat3 m3(world);
         glm::dvec3 forward = m3 * glm::dvec3(0.0, 0.0, -1.0);
         glm::dvec3 up = m3 * glm::dvec3(0.0, 1.0, 0.0);
         glm::dvec3 right = glm::cross(forward, up);
         if (!(glm::length(forward) > 0.0) || !(glm::length(right) > 0.0))
             throw Error(source + ": " + what + ": the camera transform is degenerate");
-        SceneCamera& c = scene.camera;
         c.position = glm::dvec3(world[3]);
         c.forward = glm::normalize(forward); // node scale does not change the projection
         c.right = glm::normalize(right);
         c.up = glm::cross(c.right, c.forward);
-        c.yfov = yfov;
         c.from_file = true;
+        // Thin lens, in world units (node scale does not change them).
+        auto number = [&](const char* key) {
+            const tinygltf::Value& v = extras.Get(key);
+            if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
+                throw Error(source + ": " + what + ": extras." + key + " must be a number");
+            return v.GetNumberAsDouble();
+        };
+        if (extras.IsObject() && extras.Has("aperture")) {
+            c.aperture = number("aperture");
+            if (c.aperture < 0.0)
+                throw Error(source + ": " + what + ": extras.aperture must be >= 0");
+            if (c.aperture > 0.0 && !extras.Has("focusDistance"))
+                throw Error(source + ": " + what + ": extras.aperture needs extras.focusDistance");
+        }
+        if (extras.IsObject() && extras.Has("focusDistance")) {
+            c.focus_distance = number("focusDistance");
+            if (!(c.focus_distance > 0.0))
+                throw Error(source + ": " + what + ": extras.focusDistance must be positive");
+        }
     }
 };
 
 } // namespace
 
-Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir)
+Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir, int camera)
 {
     Importer importer(model, source, base_dir);
+    importer.camera_choice = camera;
     importer.run();
     return std::move(importer.scene);
 }
 
-Scene load_gltf(const std::string& path)
+Scene load_gltf(const std::string& path, int camera)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
@@ -850,7 +890,7 @@ Scene load_gltf(const std::string& path)
                      : loader.LoadASCIIFromFile(&model, &err, &warning, path);
     if (!ok)
         throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
-    return import_gltf(model, path, std::filesystem::path(path).parent_path().string());
+    return import_gltf(model, path, std::filesystem::path(path).parent_path().string(), camera);
 }
 
 } // namespace pathcl

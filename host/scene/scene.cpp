@@ -30,6 +30,8 @@ std::string SceneFeatures::build_defines() const
         d += " -DPATHCL_HAS_NORMAL_MAPS";
     if (vertex_colors)
         d += " -DPATHCL_HAS_VERTEX_COLORS";
+    if (thin_lens)
+        d += " -DPATHCL_HAS_THIN_LENS";
     return d;
 }
 
@@ -53,6 +55,7 @@ SceneFeatures scene_features(const Scene& scene)
         f.sphere_lights = f.sphere_lights || l.type == SceneLight::Type::Sphere;
     }
     f.environment = scene.environment.present;
+    f.thin_lens = scene.camera.aperture > 0.0;
     return f;
 }
 

@@ -108,7 +108,13 @@ struct SceneCamera {
     glm::dvec3 forward{0.0, 0.0, -1.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
     glm::dvec3 right{1.0, 0.0, 0.0};
-    double yfov = 0.8; // full vertical field of view, radians
+    double yfov = 0.8; // perspective: full vertical field of view, radians
+    bool orthographic = false;
+    double ymag = 1.0; // orthographic: half the view's height (glTF ymag), world units
+    // Thin lens: radius of the lens disk (0: pinhole) and distance of the plane of focus
+    // along forward, world units (CONVENTIONS.md; node extras aperture, focusDistance).
+    double aperture = 0.0;
+    double focus_distance = 0.0;
     bool from_file = false;
 };
 
@@ -149,6 +155,7 @@ struct SceneFeatures {
     bool textures = false;      // a material with a texture
     bool normal_maps = false;   // a material with a normal texture
     bool vertex_colors = false; // a primitive with COLOR_0
+    bool thin_lens = false;    // the camera has an aperture (depth of field)
 
     std::string build_defines() const;
 };

@@ -1,0 +1,63 @@
+#include "render/ray_log.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "common/error.h"
+
+namespace pathcl {
+
+namespace fs = std::filesystem;
+
+void check_ray_log_path(const std::string& path)
+{
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".ply")
+        throw Error(path + ": --ray-log must be a .ply file");
+    fs::path dir = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        throw Error(path + ": directory " + dir.string() + " does not exist");
+    if (fs::is_directory(path, ec))
+        throw Error(path + ": is a directory");
+}
+
+void write_ray_log(const std::string& path, const std::vector<CameraRayRecord>& rays)
+{
+    check_ray_log_path(path);
+    fs::path target(path);
+    fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << "ply\nformat ascii 1.0\ncomment pathcl camera rays: origin (world space), unit direction as normal\n"
+            << "element vertex " << rays.size() << "\n"
+            << "property double x\nproperty double y\nproperty double z\n"
+            << "property float nx\nproperty float ny\nproperty float nz\n"
+            << "property uint pixel_x\nproperty uint pixel_y\nproperty uint sample\nend_header\n";
+        char line[256];
+        for (const CameraRayRecord& r : rays) {
+            std::snprintf(line, sizeof line, "%.17g %.17g %.17g %.9g %.9g %.9g %u %u %u\n", r.origin.x, r.origin.y,
+                          r.origin.z, static_cast<double>(r.direction.x), static_cast<double>(r.direction.y),
+                          static_cast<double>(r.direction.z), r.x, r.y, r.sample);
+            out << line;
+        }
+        out.flush();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            throw Error(path + ": cannot write");
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw Error(path + ": cannot write: " + ec.message());
+    }
+}
+
+} // namespace pathcl

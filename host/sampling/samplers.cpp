@@ -1,0 +1,119 @@
+#include "sampling/samplers.h"
+
+#include <cmath>
+
+#include "common/error.h"
+#include "shared_types.h"
+
+namespace pathcl {
+
+const std::map<std::string, std::uint32_t>& sampler_names()
+{
+    static const std::map<std::string, std::uint32_t> names = {
+        {"independent", SAMPLER_INDEPENDENT}, {"jittered", SAMPLER_JITTERED},
+        {"multi-jittered", SAMPLER_MULTI_JITTERED}, {"n-rooks", SAMPLER_N_ROOKS},
+        {"sobol", SAMPLER_SOBOL}, {"halton", SAMPLER_HALTON},
+        {"hammersley", SAMPLER_HAMMERSLEY}};
+    return names;
+}
+
+std::string sampler_name(std::uint32_t sampler)
+{
+    for (const auto& [name, value] : sampler_names())
+        if (value == sampler)
+            return name;
+    throw Error("unknown sampler " + std::to_string(sampler));
+}
+
+std::uint32_t sampler_spp(std::uint32_t sampler, std::uint32_t requested)
+{
+    std::uint64_t n = std::max<std::uint32_t>(requested, 1u);
+    switch (sampler) {
+    case SAMPLER_JITTERED:
+    case SAMPLER_MULTI_JITTERED: {
+        auto r = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(n)));
+        while (r * r < n)
+            ++r;
+        while (r > 1 && (r - 1) * (r - 1) >= n)
+            --r;
+        return static_cast<std::uint32_t>(r * r);
+    }
+    case SAMPLER_HAMMERSLEY: {
+        std::uint64_t p = 1;
+        while (p < n)
+            p <<= 1;
+        return static_cast<std::uint32_t>(p);
+    }
+    case SAMPLER_INDEPENDENT:
+    case SAMPLER_N_ROOKS:
+    case SAMPLER_SOBOL:
+    case SAMPLER_HALTON:
+        return static_cast<std::uint32_t>(n);
+    default:
+        throw Error("unknown sampler " + std::to_string(sampler));
+    }
+}
+
+StrataGrid sampler_strata(std::uint32_t sampler, std::uint32_t spp)
+{
+    StrataGrid g;
+    // The kernel's grid: cols = floor(sqrt(spp)), rows = ceil(spp / cols).
+    auto cols = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(spp)));
+    while (static_cast<std::uint64_t>(cols) * cols > spp)
+        --cols;
+    while (static_cast<std::uint64_t>(cols + 1) * (cols + 1) <= spp)
+        ++cols;
+    cols = std::max(cols, 1u);
+    std::uint32_t rows = (spp + cols - 1) / cols;
+    switch (sampler) {
+    case SAMPLER_JITTERED:
+        g.cols = cols;
+        g.rows = rows;
+        break;
+    case SAMPLER_MULTI_JITTERED:
+        g.cols = cols;
+        g.rows = rows;
+        g.fine = cols * rows;
+        break;
+    case SAMPLER_N_ROOKS:
+        g.cols = g.rows = spp;
+        break;
+    default:
+        break;
+    }
+    return g;
+}
+
+std::vector<glm::vec2> compute_sampler_points(const ClDevice& dev, const cl::Program& program,
+                                              const SamplerPointsRequest& rq)
+{
+    if (rq.pixels.empty())
+        return {};
+    const std::uint32_t count = rq.count ? rq.count : rq.spp;
+    const std::size_t n = static_cast<std::size_t>(count) * rq.pixels.size();
+    std::vector<glm::vec2> points(n);
+    try {
+        cl::Buffer pixels(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                          rq.pixels.size() * sizeof(std::uint32_t), const_cast<std::uint32_t*>(rq.pixels.data()));
+        cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float) * 2);
+        cl::Kernel k(program, "sampler_points");
+        int a = 0;
+        k.setArg(a++, static_cast<cl_uint>(rq.sampler));
+        k.setArg(a++, static_cast<cl_uint>(rq.spp));
+        k.setArg(a++, static_cast<cl_uint>(rq.seed));
+        k.setArg(a++, static_cast<cl_uint>(rq.dim0));
+        k.setArg(a++, static_cast<cl_uint>(rq.dim1));
+        k.setArg(a++, pixels);
+        k.setArg(a++, static_cast<cl_uint>(rq.first_sample));
+        k.setArg(a++, static_cast<cl_uint>(count));
+        k.setArg(a++, out);
+        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(count, rq.pixels.size()));
+        dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float) * 2, points.data());
+    } catch (const cl::Error& e) {
+        throw Error(std::string("sampler_points kernel failed: ") + e.what() + " (OpenCL error " +
+                    std::to_string(e.err()) + ")");
+    }
+    return points;
+}
+
+} // namespace pathcl
