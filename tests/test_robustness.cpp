@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "bvh/bvh_builder.h"
+#include "image/image_compare.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "shared_types.h"
@@ -63,10 +64,10 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
     // Rays against a sliver (height 1e-7 over a unit base) and triangles with two
     // identical vertices: barycentrics stay finite, degenerate triangles are never hit,
     // and the sliver is hit only inside its (tiny) extent. In the watertight test a
-    // degenerate triangle has t x det = 0 and is rejected by the t range check; a
-    // Moller-Trumbore test without a determinant check would return NaN barycentrics
-    // here. (Not yet shown failing on a naive variant: the two mutants tried inside the
-    // watertight test, no det check and NaN-blind range checks, still pass it.)
+    // degenerate triangle has t x det = 0 and is rejected by the t range check. Naive
+    // variant that fails (run here too, below): Moller-Trumbore without a determinant
+    // check and with "reject if outside" range checks, which let NaN through: it
+    // reports hits with NaN barycentrics on the degenerate triangles.
     static cl::Program program = test::build_test_program("trace_test_kernels.cl");
     ClDevice& dev = test::test_device();
     std::vector<Triangle> tris = {
@@ -89,26 +90,31 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
     cl::Buffer bd(dev.context, CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), d.data());
     cl::Buffer bt(dev.context, CL_MEM_COPY_HOST_PTR, tris.size() * sizeof(Triangle), tris.data());
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl::Kernel k(program, "test_trace_brute_force");
-    k.setArg(0, bo);
-    k.setArg(1, bd);
-    k.setArg(2, bt);
-    k.setArg(3, static_cast<cl_uint>(tris.size()));
-    k.setArg(4, out);
-    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    std::vector<pcl_float4> h(n);
-    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), h.data());
-    for (std::size_t i = 0; i < n; ++i) {
-        int tri = std::bit_cast<int>(h[i].w);
-        if (tri < 0)
-            continue;
-        ASSERT_EQ(tri, 0) << "ray " << i << " hit degenerate triangle " << tri;
-        ASSERT_TRUE(std::isfinite(h[i].x) && std::isfinite(h[i].y) && std::isfinite(h[i].z)) << "ray " << i;
-        EXPECT_NEAR(h[i].x, 1.0f, 1e-6f);
-        EXPECT_GE(o[i].x, 0.0f);
-        EXPECT_LE(o[i].x, 1.0f);
-        EXPECT_LE(std::fabs(o[i].y), 1.01e-7f) << "hit outside the sliver's extent";
-    }
+    // Hits that break the rules: on a degenerate triangle, non-finite, at the wrong t,
+    // or outside the sliver's extent.
+    auto violations = [&](const char* kernel) {
+        cl::Kernel k(program, kernel);
+        k.setArg(0, bo);
+        k.setArg(1, bd);
+        k.setArg(2, bt);
+        k.setArg(3, static_cast<cl_uint>(tris.size()));
+        k.setArg(4, out);
+        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+        std::vector<pcl_float4> h(n);
+        dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), h.data());
+        std::size_t bad = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            int tri = std::bit_cast<int>(h[i].w);
+            if (tri < 0)
+                continue;
+            bool finite = std::isfinite(h[i].x) && std::isfinite(h[i].y) && std::isfinite(h[i].z);
+            bool inside = o[i].x >= 0.0f && o[i].x <= 1.0f && std::fabs(o[i].y) <= 1.01e-7f;
+            bad += tri != 0 || !finite || std::fabs(h[i].x - 1.0f) > 1e-6f || !inside;
+        }
+        return bad;
+    };
+    EXPECT_EQ(violations("test_trace_brute_force"), 0u);
+    EXPECT_GT(violations("test_trace_brute_force_naive"), 0u) << "the checks above must catch a naive test";
 }
 
 } // namespace
@@ -233,6 +239,66 @@ TEST(Robustness, ShadowTerminatorOfALowPolySphereMatchesAFineOne)
         }
     ASSERT_GT(n, 50);
     EXPECT_NEAR(sum_coarse / n, sum_fine / n, 0.05 * sum_fine / n);
+}
+
+} // namespace
+} // namespace pathcl
+
+namespace pathcl {
+namespace {
+
+TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
+{
+    // A closed sphere whose inside emits 0.5 and reflects half (Lambertian): radiance 1
+    // everywhere in equilibrium. Lossless objects inside (white glass, smooth and rough;
+    // white metal, smooth and rough; white rough plastic) see radiance 1 from every
+    // direction and so return 1 in every direction: the whole image is 1, to the layer
+    // tables' accuracy. Any energy gain or loss in those BSDFs shows as a tile that is
+    // not 1. Naive variant that fails: rough lobes without multiple-scattering
+    // compensation (the rough glass and metal tiles darken).
+    test::GltfBuilder b;
+    int wall = b.add_material(glm::vec3(0.5f), glm::vec3(0.5f));
+    b.add_root(b.add_node(b.add_sphere_mesh(4.0, 24, 48, wall, /*inward=*/true)));
+    auto object = [&](test::GltfBuilder::Pbr pbr, std::vector<double> at) {
+        int mat = b.add_pbr_material(pbr);
+        b.add_root(b.add_node(b.add_sphere_mesh(0.6, 24, 48, mat, /*inward=*/false, /*smooth_normals=*/true), {}, at));
+    };
+    test::GltfBuilder::Pbr glass;
+    glass.transmission = 1.0;
+    glass.thickness = 1.0;
+    object(glass, {-1.4, 0.7, 0.0});
+    glass.roughness = 0.6;
+    object(glass, {0.0, 0.7, 0.0});
+    test::GltfBuilder::Pbr metal;
+    metal.metallic = 1.0;
+    object(metal, {1.4, 0.7, 0.0});
+    metal.roughness = 0.6;
+    object(metal, {-0.7, -0.7, 0.0});
+    test::GltfBuilder::Pbr plastic;
+    plastic.roughness = 0.4;
+    object(plastic, {0.7, -0.7, 0.0});
+    b.add_camera_node(b.add_perspective_camera(1.2), {0.0, 0.0, 3.0});
+    RenderOptions o;
+    o.width = o.height = 32;
+    o.spp = 512;
+    o.max_bounces = 1000;
+    RenderResult r = render(import_gltf(b.model, "closed-furnace"), o);
+    EXPECT_EQ(r.stats.bad_samples, 0u);
+    // 8x8 tiles against 1, with a Šidák-corrected threshold for the 16 tiles.
+    const double z_max = sidak_z_threshold(0.01, 16);
+    for (int ty = 0; ty < 4; ++ty)
+        for (int tx = 0; tx < 4; ++tx) {
+            double sum = 0.0, var = 0.0;
+            for (int y = ty * 8; y < ty * 8 + 8; ++y)
+                for (int x = tx * 8; x < tx * 8 + 8; ++x) {
+                    std::size_t i = (static_cast<std::size_t>(y) * 32 + x) * 3 + 1;
+                    sum += r.image.rgb[i];
+                    var += r.image.variance[i] / static_cast<double>(o.spp);
+                }
+            double mean = sum / 64.0, se = std::sqrt(var) / 64.0;
+            EXPECT_LT(se, 0.01) << "tile " << tx << "," << ty;
+            EXPECT_LE(std::abs(mean - 1.0), z_max * se + 1e-3) << "tile " << tx << "," << ty << ": " << mean;
+        }
 }
 
 } // namespace

@@ -95,3 +95,36 @@ __kernel void test_light_sample(__global const Light* lights, uint count, float4
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }
+
+/* A naive ray/triangle test for the robustness test to show that its checks catch one:
+ * Moller-Trumbore without a determinant check, its range checks written as "reject if
+ * outside", which lets NaN through. Never used for rendering. */
+__kernel void test_trace_brute_force_naive(__global const float4* origins, __global const float4* dirs,
+                                           __global const Triangle* triangles, uint count, __global float4* out)
+{
+    uint i = get_global_id(0);
+    float3 o = origins[i].xyz, d = dirs[i].xyz;
+    float best = INFINITY, best_b1 = 0.0f, best_b2 = 0.0f;
+    int best_tri = -1;
+    for (uint k = 0; k < count; ++k) {
+        float3 v0 = triangles[k].v0.xyz, e1 = triangles[k].v1.xyz - v0, e2 = triangles[k].v2.xyz - v0;
+        float3 pv = cross(d, e2);
+        float inv_det = 1.0f / dot(e1, pv);
+        float3 tv = o - v0;
+        float u = dot(tv, pv) * inv_det;
+        if (u < 0.0f || u > 1.0f)
+            continue;
+        float3 qv = cross(tv, e1);
+        float v = dot(d, qv) * inv_det;
+        if (v < 0.0f || u + v > 1.0f)
+            continue;
+        float t = dot(e2, qv) * inv_det;
+        if (t < 0.0f || t > best)
+            continue;
+        best = t;
+        best_b1 = u;
+        best_b2 = v;
+        best_tri = (int)k;
+    }
+    out[i] = (float4)(best, best_b1, best_b2, as_float(best_tri));
+}
