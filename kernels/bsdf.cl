@@ -497,7 +497,7 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     float3 one_minus_avg = 1.0f - layer_average(&p, m);
     float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
     /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
-    p.diffuse_scale = select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, 1e-6f));
+    p.diffuse_scale = select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
     p.lobes = choose_lobes(&p);
 #endif
     return p;

@@ -138,6 +138,7 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
     hit.triangle = -1;
 
     int2 stack[BVH_STACK_SIZE];
+    float stack_entry[BVH_STACK_SIZE]; /* where the ray enters each pushed child's box */
     int sp = 0;
     int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
     for (;;) {
@@ -163,8 +164,10 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
             if (hl && hr) {
                 int2 near_child = (tl <= tr) ? left : right;
                 int2 far_child = (tl <= tr) ? right : left;
-                if (sp < BVH_STACK_SIZE)
+                if (sp < BVH_STACK_SIZE) {
+                    stack_entry[sp] = fmax(tl, tr);
                     stack[sp++] = far_child;
+                }
                 cur = near_child;
                 continue;
             }
@@ -177,11 +180,16 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
                 continue;
             }
         }
-        if (sp == 0)
-            break;
-        cur = stack[--sp];
+        /* The next pushed child the ray still reaches before its closest hit so far (with
+         * the box test's own allowance for rounding, so no box that a closer hit could lie
+         * in is skipped). */
+        do {
+            if (sp == 0)
+                return hit;
+            --sp;
+        } while (stack_entry[sp] > hit.t * (1.0f + 2.0f * FLOAT_GAMMA(3)));
+        cur = stack[sp];
     }
-    return hit;
 }
 
 #pragma OPENCL FP_CONTRACT ON

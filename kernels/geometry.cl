@@ -99,9 +99,11 @@ static inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float
     return po;
 }
 
-/* The part of a shadow ray's segment that is tested, as a fraction of its length:
- * stops short of the offset end point so the light's own surface is never hit. */
-#define SHADOW_RAY_EXTENT (1.0f - 1.0e-4f)
+/* The part of a shadow ray's segment that is tested, as a fraction of its length. The
+ * end point on an area or sphere light is already pushed off its surface by its error
+ * bound, and a point light has no surface, so only a few ulps are left out: an occluder
+ * 1e-4 of the way from the light (a lamp shade) still casts its shadow. */
+#define SHADOW_RAY_EXTENT (1.0f - 8.0f * 0x1.0p-24f)
 
 /* Whether a direction on the shading normal's side (cos_ig = its cosine with ng) counts
  * as leaving on wo's side. Above the geometric surface it does. Below it only where the

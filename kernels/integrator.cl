@@ -46,7 +46,9 @@ static inline float bsdf_hit_weight(uint strategy, bool technique_was_bsdf, floa
     case STRATEGY_BSDF:
         return 1.0f;
     case STRATEGY_NEE:
-        return 0.0f;
+        /* Light sampling carries this light, unless it cannot produce this direction
+         * (a zero-width cell of a float CDF, say): then only the BSDF finds it. */
+        return light_pdf > 0.0f ? 0.0f : 1.0f;
     case STRATEGY_ONE_SAMPLE:
         /* beta already holds f cos / p_bsdf: this turns it into f cos / p_mixture. */
         return technique_was_bsdf ? bsdf_pdf / (0.5f * (bsdf_pdf + light_pdf)) : 0.0f;
@@ -182,7 +184,9 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
                             (frame.strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&bp);
         if (sample_light) {
             sampler.dimension = dims + DIM_LIGHT;
-            LightSample ls = light_sample(lights, frame.light_count, &env, &tex, sp.p, &sampler);
+            /* From where reflected rays (shadow rays included) leave, so that the light's
+             * pdf here and on BSDF hits, which is measured from there, agree. */
+            LightSample ls = light_sample(lights, frame.light_count, &env, &tex, sp.lifted ? sp.p_smooth : sp.p, &sampler);
             if (ls.pdf > 0.0f) {
                 BsdfEval e = bsdf_eval(&bp, &sp, wo, ls.wi);
                 if (max_component(e.f_cos) > 0.0f) {

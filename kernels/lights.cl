@@ -85,10 +85,15 @@ typedef struct {
     bool at_infinity; /* directional: the shadow ray is unbounded */
 } LightSample;
 
+/* The slot and the coin, each an integer on the LIGHT_PICK_GRID: every sampler's numbers
+ * fall on it the same way, and build_light_alias_table gives each light's pmf (radiance.w)
+ * exactly as this picks it, down to lights far rarer than one grid step. */
 static inline int light_pick(__global const Light* lights, uint count, float u_index, float u_alias)
 {
-    int i = min((int)(u_index * (float)count), (int)count - 1);
-    return (u_alias < lights[i].alias_threshold) ? i : lights[i].alias;
+    uint k = min((uint)(u_index * (float)LIGHT_PICK_GRID), LIGHT_PICK_GRID - 1u);
+    int i = (int)(((ulong)k * count) >> 24);
+    uint coin = min((uint)(u_alias * (float)LIGHT_PICK_GRID), LIGHT_PICK_GRID - 1u);
+    return (coin < lights[i].alias_threshold) ? i : lights[i].alias;
 }
 
 /* Solid-angle pdf of reaching a point on triangle light `light` from a point dist away,
@@ -133,6 +138,7 @@ static inline LightSample light_sample(__global const Light* lights, uint count,
     ls.at_infinity = false;
     ls.p_error = (float3)(0.0f);
     ls.radiance = (float3)(0.0f);
+    ls.wi = ls.n = ls.p = (float3)(0.0f);
     float u_index = sampler_get_1d(sampler);
     float u_alias = sampler_get_1d(sampler);
     float2 u = sampler_get_2d(sampler);

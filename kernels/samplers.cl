@@ -43,6 +43,8 @@ typedef struct {
     uint dimension; /* next dimension to hand out */
     uint type;      /* SAMPLER_* */
     uint spp;       /* size of the point sets (the render's samples per pixel) */
+    uint sample_key; /* hash of (seed, pixel, sample): every draw extends it by the dimension */
+    uint set_key;    /* hash of (seed, pixel): the point sets' seeds extend it */
 } SamplerState;
 
 /* A full-avalanche 32-bit mix (the "lowbias32" hash by Chris Wellons). */
@@ -80,6 +82,12 @@ static inline SamplerState sampler_start_typed(uint type, uint spp, uint pixel, 
     s.dimension = dimension;
     s.type = type;
     s.spp = spp;
+    /* The fixed part of every hash this state draws, computed once. The independent
+     * sampler's number for dimension d (also the jitter inside the stratified samplers'
+     * strata) is hash_combine(sample_key, d); the point set of (seed, pixel, d) is seeded
+     * by hash_combine(hash_combine(set_key, d), k), k picking one of several. */
+    s.sample_key = hash_combine(hash_combine(hash_u32(seed), pixel), sample);
+    s.set_key = hash_combine(hash_u32(seed ^ 0x5bd1e995u), pixel);
     return s;
 }
 
@@ -97,19 +105,6 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
 }
 
 /* ---- building blocks ---- */
-
-/* The independent sampler's number for one dimension; the stratified samplers use it as
- * the jitter inside a stratum. */
-static inline uint sampler_random_u32(uint seed, uint pixel, uint sample, uint dim)
-{
-    return hash_combine(hash_combine(hash_combine(hash_u32(seed), pixel), sample), dim);
-}
-
-/* A seed for the point set of (seed, pixel, dimension); k picks one of several. */
-static inline uint sampler_set_hash(uint seed, uint pixel, uint dim, uint k)
-{
-    return hash_combine(hash_combine(hash_combine(hash_u32(seed ^ 0x5bd1e995u), pixel), dim), k);
-}
 
 /* Element i of a random permutation of [0, l) chosen by p (Kensler 2013, "Correlated
  * Multi-Jittered Sampling"): a hash that is a bijection on the next power of two, cycle
@@ -286,7 +281,7 @@ static inline uint sqrt_floor_u32(uint n)
 static inline float halton_value(const SamplerState* s, uint dim)
 {
     uint base = HALTON_PRIMES[dim % 256u];
-    uint seed = sampler_set_hash(s->seed, s->pixel, dim, 0u);
+    uint seed = hash_combine(hash_combine(s->set_key, dim), 0u);
     /* Base 2: Burley's hash-based Owen scramble of the bit-reversed index does the same
      * nested scrambling in one pass instead of one permutation per digit. */
     if (base == 2u)
@@ -297,22 +292,22 @@ static inline float halton_value(const SamplerState* s, uint dim)
 static inline float sampler_value_1d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
-    uint xi = sampler_random_u32(s->seed, s->pixel, s->sample, dim);
+    uint xi = hash_combine(s->sample_key, dim);
     switch (s->type) {
     case SAMPLER_JITTERED:
     case SAMPLER_MULTI_JITTERED:
     case SAMPLER_N_ROOKS:
         /* One sample in each of spp strata. */
-        return stratum_point(permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u)), n,
+        return stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u)), n,
                              u32_to_unit_float(xi));
     case SAMPLER_SOBOL: {
-        uint index = permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u));
-        return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), sampler_set_hash(s->seed, s->pixel, dim, 1u)));
+        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
+        return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), hash_combine(hash_combine(s->set_key, dim), 1u)));
     }
     case SAMPLER_HAMMERSLEY: {
-        uint index = permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u));
+        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
         uint x = (uint)(((ulong)index << 32) / n); /* index / n as a 32-bit fraction */
-        return u32_to_unit_float(owen_scramble_u32(x, sampler_set_hash(s->seed, s->pixel, dim, 1u)));
+        return u32_to_unit_float(owen_scramble_u32(x, hash_combine(hash_combine(s->set_key, dim), 1u)));
     }
     case SAMPLER_HALTON:
         return halton_value(s, dim);
@@ -324,15 +319,15 @@ static inline float sampler_value_1d(const SamplerState* s, uint dim)
 static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
-    float2 xi = (float2)(u32_to_unit_float(sampler_random_u32(s->seed, s->pixel, s->sample, dim)),
-                         u32_to_unit_float(sampler_random_u32(s->seed, s->pixel, s->sample, dim + 1u)));
+    float2 xi = (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
+                         u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));
     switch (s->type) {
     case SAMPLER_JITTERED: {
         /* A random stratum of the cols x rows grid per sample index (a permutation, so each
          * stratum once); with fewer samples than strata the unused strata are random too,
          * which keeps the estimate unbiased. */
         uint cols = max(sqrt_floor_u32(n), 1u), rows = (n + cols - 1u) / cols;
-        uint cell = permute_element(s->sample, cols * rows, sampler_set_hash(s->seed, s->pixel, dim, 0u));
+        uint cell = permute_element(s->sample, cols * rows, hash_combine(hash_combine(s->set_key, dim), 0u));
         return (float2)(stratum_point(cell % cols, cols, xi.x), stratum_point(cell / cols, rows, xi.y));
     }
     case SAMPLER_MULTI_JITTERED: {
@@ -342,28 +337,28 @@ static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
          * and likewise for rows. Every coarse cell, every one of the cols*rows fine
          * columns and every fine row holds one sample. */
         uint cols = max(sqrt_floor_u32(n), 1u), rows = (n + cols - 1u) / cols, cells = cols * rows;
-        uint cell = permute_element(s->sample, cells, sampler_set_hash(s->seed, s->pixel, dim, 0u));
+        uint cell = permute_element(s->sample, cells, hash_combine(hash_combine(s->set_key, dim), 0u));
         uint cx = cell % cols, cy = cell / cols;
-        uint sx = permute_element(cx, cols, sampler_set_hash(s->seed, s->pixel, dim, 1u));
-        uint sy = permute_element(cy, rows, sampler_set_hash(s->seed, s->pixel, dim, 2u));
+        uint sx = permute_element(cx, cols, hash_combine(hash_combine(s->set_key, dim), 1u));
+        uint sy = permute_element(cy, rows, hash_combine(hash_combine(s->set_key, dim), 2u));
         return (float2)(stratum_point(cx * rows + sy, cells, xi.x), stratum_point(cy * cols + sx, cells, xi.y));
     }
     case SAMPLER_N_ROOKS:
         return (float2)(
-            stratum_point(permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u)), n, xi.x),
-            stratum_point(permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 1u)), n, xi.y));
+            stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u)), n, xi.x),
+            stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 1u)), n, xi.y));
     case SAMPLER_SOBOL: {
-        uint index = permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u));
+        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
         return (float2)(
-            u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), sampler_set_hash(s->seed, s->pixel, dim, 1u))),
-            u32_to_unit_float(owen_scramble_u32(sobol_dimension1_u32(index), sampler_set_hash(s->seed, s->pixel, dim, 2u))));
+            u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), hash_combine(hash_combine(s->set_key, dim), 1u))),
+            u32_to_unit_float(owen_scramble_u32(sobol_dimension1_u32(index), hash_combine(hash_combine(s->set_key, dim), 2u))));
     }
     case SAMPLER_HAMMERSLEY: {
-        uint index = permute_element(s->sample, n, sampler_set_hash(s->seed, s->pixel, dim, 0u));
+        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
         uint x = (uint)(((ulong)index << 32) / n);
-        return (float2)(u32_to_unit_float(owen_scramble_u32(x, sampler_set_hash(s->seed, s->pixel, dim, 1u))),
+        return (float2)(u32_to_unit_float(owen_scramble_u32(x, hash_combine(hash_combine(s->set_key, dim), 1u))),
                         u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index),
-                                                            sampler_set_hash(s->seed, s->pixel, dim, 2u))));
+                                                            hash_combine(hash_combine(s->set_key, dim), 2u))));
     }
     case SAMPLER_HALTON:
         return (float2)(halton_value(s, dim), halton_value(s, dim + 1u));
@@ -375,17 +370,22 @@ static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
 /* The value for the decision at s->dimension; advances by one dimension. */
 static inline float sampler_get_1d(SamplerState* s)
 {
-    float v = sampler_value_1d(s, s->dimension);
+    uint dim = s->dimension;
     s->dimension += 1u;
-    return v;
+    if (s->type == SAMPLER_INDEPENDENT) /* the common case, kept small enough to inline */
+        return u32_to_unit_float(hash_combine(s->sample_key, dim));
+    return sampler_value_1d(s, dim);
 }
 
 /* The pair for the 2D decision at (s->dimension, s->dimension + 1); advances by two. */
 static inline float2 sampler_get_2d(SamplerState* s)
 {
-    float2 v = sampler_value_2d(s, s->dimension);
+    uint dim = s->dimension;
     s->dimension += 2u;
-    return v;
+    if (s->type == SAMPLER_INDEPENDENT)
+        return (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
+                        u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));
+    return sampler_value_2d(s, dim);
 }
 
 /* The sample visualizer's and the sampler tests' view of the samplers: out[p * count + k]

@@ -173,6 +173,10 @@ typedef struct {
 #define LAYER_TABLE_GLASS_IN (LAYER_TABLE_GLASS_OUT + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_SIZE (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 
+/* Light picking draws the slot and the alias coin on a grid of 2^24 steps, so that the
+ * host can give each light the exact probability the kernel picks it with. */
+#define LIGHT_PICK_GRID 16777216u
+
 /* Light types */
 #define LIGHT_TRIANGLE 0    /* an emissive triangle (area light) */
 #define LIGHT_POINT 1       /* KHR_lights_punctual point */
@@ -204,7 +208,7 @@ typedef struct {
     pcl_float4 p0, p1, p2;
     pcl_float4 radiance;
     pcl_int type;
-    pcl_float alias_threshold; /* keep this light if u < threshold, else take alias */
+    pcl_uint alias_threshold; /* keep this light if the coin < threshold (of LIGHT_PICK_GRID), else alias */
     pcl_int alias;
     pcl_int texture; /* TRIANGLE: the material's emissive TextureView or TEXTURE_NONE; other types: unused */
 } Light;

@@ -206,6 +206,18 @@ TEST_F(Cli, ExistingOutputIsUnchangedWhenTheSceneIsInvalid)
 }
 
 // Usage errors (CLI11's parse errors) follow the same contract.
+// A write that fails after the render (the second -o lands in /proc, where no file can
+// be created): one line naming it, and the first output, which was complete, still does
+// not replace the user's existing file: outputs are committed together or not at all.
+TEST_F(Cli, FailedSecondWriteLeavesTheFirstOutputUntouched)
+{
+    write_file(work_ / "keep.exr", "the user's earlier render");
+    RunResult r = run("render " + quoted(kCornell) + " -o keep.exr -o /proc/pathcl-cannot-write.png" + kTiny);
+    expect_clean_failure(r, "pathcl-cannot-write.png");
+    EXPECT_EQ(read_file(work_ / "keep.exr"), "the user's earlier render");
+    EXPECT_EQ(listing(work_), std::set<std::string>{"keep.exr"}) << "a temporary file was left behind";
+}
+
 TEST_F(Cli, UnknownSamplerIsOneLineError)
 {
     RunResult r = run("render " + quoted(kCornell) + " -o out.exr --sampler bogus" + kTiny);

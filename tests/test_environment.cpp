@@ -111,7 +111,7 @@ std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotat
     l.p0 = {static_cast<float>(m.width), static_cast<float>(m.height), static_cast<float>(std::cos(rotation)),
             static_cast<float>(std::sin(rotation))};
     l.radiance.w = 1.0f;
-    l.alias_threshold = 2.0f;
+    l.alias_threshold = LIGHT_PICK_GRID;
     return test::sample_lights_on_device(program, {l}, &m, glm::vec3(0.0f), 77u, n, radiance);
 }
 

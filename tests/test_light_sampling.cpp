@@ -88,7 +88,7 @@ TEST(LightSampling, SphereSamplesCarryItsRadiance)
         "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
     Light l = sphere_light(glm::vec3(0.0f, 0.0f, 3.0f), 1.0f);
     l.radiance = {2.5f, 1.5f, 0.5f, 1.0f};
-    l.alias_threshold = 2.0f;
+    l.alias_threshold = LIGHT_PICK_GRID;
     std::vector<pcl_float4> radiance;
     auto s = test::sample_lights_on_device(program, {l}, nullptr, glm::vec3(0.0f), 5u, 10000, &radiance);
     for (std::size_t i = 0; i < s.size(); ++i) {

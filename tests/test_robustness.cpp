@@ -303,3 +303,37 @@ TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
 
 } // namespace
 } // namespace pathcl
+
+namespace pathcl {
+namespace {
+
+TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
+{
+    // A point light 100 above a plane and a small shade 5e-3 below the light (5e-5 of the
+    // way): the point under it is in shadow. Naive variant that fails: shadow rays cut
+    // short by a fixed 1e-4 of their length (1 cm here), which skips the shade entirely.
+    test::GltfBuilder b;
+    int floor_mat = b.add_material(glm::vec3(0.5f));
+    int shade_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), /*double_sided=*/true);
+    auto quad = [&](std::vector<glm::vec3> q, int mat) {
+        b.add_root(b.add_node(b.add_mesh(b.add_positions(q),
+                                         b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
+    };
+    quad({{-200, 0, -200}, {-200, 0, 200}, {200, 0, 200}, {200, 0, -200}}, floor_mat);
+    quad({{-0.01f, 99.995f, -0.01f}, {-0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, -0.01f}},
+         shade_mat);
+    b.add_light_node(b.add_light("point", glm::vec3(1.0f), 1e4), {0.0, 100.0, 0.0});
+    const std::vector<double> look_down = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
+    b.add_camera_node(b.add_perspective_camera(1e-3), {0.0, 3.0, 0.0}, look_down);
+    RenderOptions o;
+    o.width = o.height = 4;
+    o.spp = 1;
+    o.max_bounces = 1;
+    RenderResult r = render(import_gltf(b.model, "lamp-shade"), o);
+    EXPECT_EQ(r.stats.bad_samples, 0u);
+    for (float v : r.image.rgb)
+        EXPECT_EQ(v, 0.0f) << "light passed the shade";
+}
+
+} // namespace
+} // namespace pathcl

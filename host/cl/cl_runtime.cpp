@@ -1,6 +1,10 @@
 #include "cl/cl_runtime.h"
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
 
 #include "cl/embedded_kernels.h"
 #include "cl/program_cache.h"
@@ -63,6 +67,30 @@ std::string strip_nuls(std::string s)
     while (!s.empty() && s.back() == '\0')
         s.pop_back();
     return s;
+}
+
+// The first line of a compiler log that reports an error (else its first line), so the
+// CLI's error stays one line.
+std::string first_error_line(const std::string& log)
+{
+    std::istringstream in(log);
+    std::string line, first;
+    while (std::getline(in, line)) {
+        if (first.empty() && !line.empty())
+            first = line;
+        if (line.find("error") != std::string::npos)
+            return line;
+    }
+    return first.empty() ? "(empty build log)" : first;
+}
+
+// Writes a build log to a file in the temporary directory; returns its path.
+std::string save_build_log(const std::string& log)
+{
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("pathcl-build-log-" + std::to_string(::getpid()) + ".txt");
+    std::ofstream(path) << log;
+    return path.string();
 }
 
 } // namespace
@@ -140,7 +168,8 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options,
             program.build({dev.device}, full_options.c_str());
         } catch (const cl::Error&) {
             std::string log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(dev.device);
-            throw Error("kernel build failed on " + strip_nuls(dev.info.name) + ":\n" + log);
+            throw Error("kernel build failed on " + strip_nuls(dev.info.name) + ": " + first_error_line(log) +
+                        " (full build log: " + save_build_log(log) + ")");
         }
         result.program = program;
         try {

@@ -14,6 +14,7 @@
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
+#include "common/staged_files.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "render/ray_log.h"
@@ -94,10 +95,13 @@ int run_render(RenderRequest rq)
     if (!rq.ray_log.empty())
         opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
     pathcl::RenderResult r = pathcl::render(scene, opt);
+    // Every output complete before any replaces what the user has.
+    pathcl::StagedFiles staged;
     for (const std::string& output : rq.outputs)
-        pathcl::write_image(output, r.image);
+        pathcl::write_image_file(staged.stage(output), output, r.image);
     if (!rq.ray_log.empty())
-        pathcl::write_ray_log(rq.ray_log, r.camera_rays);
+        pathcl::write_ray_log_file(staged.stage(rq.ray_log), rq.ray_log, r.camera_rays);
+    staged.commit();
     const pathcl::RenderStats& s = r.stats;
     std::string names;
     for (const std::string& output : rq.outputs)
@@ -306,10 +310,12 @@ int main(int argc, char** argv)
     bench_opt.spp = 16;
     int bench_runs = 5, bench_device = 0;
     bench->add_option("scene", bench_scene, "glTF 2.0 scene")->required();
-    bench->add_option("--spp", bench_opt.spp, "samples per pixel per run")->capture_default_str();
-    bench->add_option("--width", bench_opt.width, "image width")->capture_default_str();
-    bench->add_option("--height", bench_opt.height, "image height")->capture_default_str();
-    bench->add_option("--max-bounces", bench_opt.max_bounces, "scattering events per path")->capture_default_str();
+    bench->add_option("--spp", bench_opt.spp, "samples per pixel per run")->capture_default_str()->check(CLI::Range(1u, 1u << 30));
+    bench->add_option("--width", bench_opt.width, "image width")->capture_default_str()->check(CLI::Range(1u, 32768u));
+    bench->add_option("--height", bench_opt.height, "image height")->capture_default_str()->check(CLI::Range(1u, 32768u));
+    bench->add_option("--max-bounces", bench_opt.max_bounces, "scattering events per path")
+        ->capture_default_str()
+        ->check(CLI::Range(0u, 1u << 16));
     bench->add_option("--runs", bench_runs, "timed runs after one warm-up")->capture_default_str()->check(CLI::Range(1, 1000));
     bench->add_option("--device", bench_device, "OpenCL device index")->capture_default_str();
     bench->add_option("--strategy", bench_opt.strategy, "light sampling: bsdf, nee, one-sample or mis")

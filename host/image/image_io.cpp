@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <unistd.h>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include "common/error.h"
+#include "common/staged_files.h"
 
 namespace pathcl {
 namespace {
@@ -40,7 +40,7 @@ void check_output_path(const std::string& path)
         throw Error(path + ": is a directory");
 }
 
-void write_image(const std::string& path, const Image& img)
+void write_image_file(const std::string& file, const std::string& path, const Image& img)
 {
     check_output_path(path);
     const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
@@ -74,20 +74,18 @@ void write_image(const std::string& path, const Image& img)
     if (out.has_error())
         throw Error(path + ": cannot prepare image: " + out.geterror());
 
-    fs::path target(path);
-    fs::path tmp = target.parent_path() /
-                   ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + target.extension().string());
-    if (!out.write(tmp.string())) {
+    if (!out.write(file)) {
         std::error_code ec;
-        fs::remove(tmp, ec);
+        fs::remove(file, ec);
         throw Error(path + ": cannot write: " + out.geterror());
     }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw Error(path + ": cannot write: " + ec.message());
-    }
+}
+
+void write_image(const std::string& path, const Image& img)
+{
+    StagedFiles staged;
+    write_image_file(staged.stage(path), path, img);
+    staged.commit();
 }
 
 Image read_image(const std::string& path)

@@ -16,6 +16,10 @@ void check_output_path(const std::string& path);
 
 void write_image(const std::string& path, const Image& image);
 
+// The image for `path` written to `file` (a temporary name from StagedFiles: the caller
+// renames it), in the format path's extension names.
+void write_image_file(const std::string& file, const std::string& path, const Image& image);
+
 // Reads an EXR written by write_image (variance channels optional: zero if absent).
 Image read_image(const std::string& path);
 

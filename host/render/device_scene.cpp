@@ -36,14 +36,19 @@ void build_light_alias_table(std::vector<Light>& lights, const std::vector<doubl
     std::vector<std::size_t> small, large;
     for (std::size_t i = 0; i < n; ++i) {
         double pmf = total > 0.0 ? power[i] / total : 1.0 / static_cast<double>(n);
-        lights[i].radiance.w = static_cast<float>(pmf);
         scaled[i] = pmf * static_cast<double>(n);
+        lights[i].alias = static_cast<pcl_int>(i);
         (scaled[i] < 1.0 ? small : large).push_back(i);
     }
+    // Thresholds on the kernel's coin grid (light_pick); a light that has a slot of its
+    // own keeps at least one grid step of it, so even a powerless light stays pickable.
+    const double grid = static_cast<double>(LIGHT_PICK_GRID);
+    std::vector<std::uint32_t> threshold(n, LIGHT_PICK_GRID); // leftovers: always keep
     while (!small.empty() && !large.empty()) {
         std::size_t s = small.back(), l = large.back();
         small.pop_back();
-        lights[s].alias_threshold = static_cast<float>(scaled[s]);
+        threshold[s] = static_cast<std::uint32_t>(std::clamp(std::llround(scaled[s] * grid), 1LL,
+                                                             static_cast<long long>(LIGHT_PICK_GRID)));
         lights[s].alias = static_cast<pcl_int>(l);
         scaled[l] = (scaled[l] + scaled[s]) - 1.0;
         if (scaled[l] < 1.0) {
@@ -51,14 +56,19 @@ void build_light_alias_table(std::vector<Light>& lights, const std::vector<doubl
             small.push_back(l);
         }
     }
-    for (std::size_t i : small) { // leftovers are 1 up to rounding
-        lights[i].alias_threshold = 2.0f; // always keep
-        lights[i].alias = static_cast<pcl_int>(i);
+    // Each light's pmf as the kernel realizes it: slot j comes up for the grid steps k
+    // with (k n) >> 24 == j, and keeps its light for `threshold` of the coin's steps.
+    std::vector<double> pmf(n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+        auto first_step = [&](std::uint64_t slot) { return (slot * LIGHT_PICK_GRID + n - 1) / n; };
+        double slot = static_cast<double>(first_step(j + 1) - first_step(j)) / grid;
+        double keep = static_cast<double>(threshold[j]) / grid;
+        pmf[j] += slot * keep;
+        pmf[static_cast<std::size_t>(lights[j].alias)] += slot * (1.0 - keep);
+        lights[j].alias_threshold = threshold[j];
     }
-    for (std::size_t i : large) {
-        lights[i].alias_threshold = 2.0f;
-        lights[i].alias = static_cast<pcl_int>(i);
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        lights[i].radiance.w = static_cast<float>(pmf[i]);
 }
 
 namespace {

@@ -17,4 +17,7 @@ void check_ray_log_path(const std::string& path);
 // ASCII PLY, written under a temporary name and renamed (never a partial file).
 void write_ray_log(const std::string& path, const std::vector<CameraRayRecord>& rays);
 
+// The log for `path` written to `file` (a temporary name from StagedFiles).
+void write_ray_log_file(const std::string& file, const std::string& path, const std::vector<CameraRayRecord>& rays);
+
 } // namespace pathcl

@@ -12,8 +12,20 @@
 namespace pathcl {
 namespace {
 
-// Fixed work-group shape for the 2D image kernels (a multiple of every SIMD width).
-constexpr std::uint32_t kTile = 8;
+// Work-group shape for the 2D image kernels: 8 x 8 (a multiple of every SIMD width) where
+// the device allows 64 work-items for both kernels, else the largest of 8 x 4, 4 x 4,
+// 4 x 2, 2 x 2, 1 x 1 it allows (a GPU can cap a kernel with a deep private stack lower).
+struct Tile {
+    std::uint32_t x, y;
+};
+
+Tile work_group_tile(std::size_t max_items)
+{
+    for (Tile t : {Tile{8, 8}, Tile{8, 4}, Tile{4, 4}, Tile{4, 2}, Tile{2, 2}})
+        if (t.x * t.y <= max_items)
+            return t;
+    return {1, 1};
+}
 constexpr cl_uint kPathFrameArg = 12; // trace_paths' FrameParams argument (the texture buffers follow it)
 
 std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
@@ -30,6 +42,8 @@ struct DeviceRender {
         rays, film, bad;
     cl::Buffer texels, texture_images, texture_views, texcoords, tangents, colors; // dummies when unused
     std::size_t pixels = 0;
+    Tile tile{8, 8};
+    std::uint32_t passes = 0; // enqueued so far (the queue is flushed every 16)
 
     template <typename T>
     cl::Buffer make(const std::vector<T>& data)
@@ -106,12 +120,17 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
             dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
             dr->bad = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_uint));
+            auto max_items = [&](const cl::Kernel& k) {
+                return k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dr->dev.device);
+            };
+            dr->tile = work_group_tile(std::min(max_items(dr->camera_kernel), max_items(dr->path_kernel)));
+            std::uint32_t clear_items = static_cast<std::uint32_t>(std::min<std::size_t>(64, max_items(dr->clear_kernel)));
             dr->clear_kernel.setArg(0, dr->film);
             dr->clear_kernel.setArg(1, dr->bad);
             dr->clear_kernel.setArg(2, static_cast<cl_uint>(pixels));
             dr->dev.queue.enqueueNDRangeKernel(dr->clear_kernel, cl::NullRange,
-                                               cl::NDRange(round_up(static_cast<std::uint32_t>(pixels), 64)),
-                                               cl::NDRange(64));
+                                               cl::NDRange(round_up(static_cast<std::uint32_t>(pixels), clear_items)),
+                                               cl::NDRange(clear_items));
             dr->camera_kernel.setArg(0, dr->rays);
             dr->camera_kernel.setArg(1, camera);
             int a = 0;
@@ -142,8 +161,6 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
         devices.push_back(std::move(dr));
     }
 
-    const cl::NDRange global(round_up(opt.width, kTile), round_up(opt.height, kTile));
-    const cl::NDRange local(kTile, kTile);
     // Camera-ray log: pixels on an evenly spaced grid, whose rays are read back after the
     // camera pass of each logged sample index (a blocking read: renders that log rays
     // are not for timing).
@@ -178,6 +195,8 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
             frame.spp = spp;
             dr.camera_kernel.setArg(2, frame);
             dr.path_kernel.setArg(kPathFrameArg, frame);
+            const cl::NDRange global(round_up(opt.width, dr.tile.x), round_up(opt.height, dr.tile.y));
+            const cl::NDRange local(dr.tile.x, dr.tile.y);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
             if (s < opt.ray_log_samples) {
                 dr.dev.queue.enqueueReadBuffer(dr.rays, CL_TRUE, 0, pixels * sizeof(Ray), logged.data());
@@ -190,7 +209,7 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
                     }
             }
             dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
-            if (s % 16 == 15)
+            if (++dr.passes % 16 == 0) // each device's queue starts working early
                 dr.dev.queue.flush();
         }
         for (auto& dr : devices)

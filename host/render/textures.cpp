@@ -106,7 +106,8 @@ DeviceTextures pack_textures(const Scene& scene, const std::vector<std::uint32_t
         std::size_t texels = static_cast<std::size_t>(img.width) * img.height;
         std::size_t words = texels * (img.bits == 16 ? 2 : 1);
         if (dt.texels.size() + words > std::numeric_limits<pcl_uint>::max())
-            throw Error("the scene's textures exceed 16 GiB of texels");
+            throw Error(img.name + ": the scene's textures exceed 16 GiB of texels (the device buffer's limit) at "
+                                   "this image");
         if (img.bits == 16) {
             ti.format = TEXTURE_FORMAT_RGBA16;
             for (std::size_t i = 0; i < texels; ++i) {

@@ -36,12 +36,18 @@ std::uint32_t sampler_spp(std::uint32_t sampler, std::uint32_t requested)
             ++r;
         while (r > 1 && (r - 1) * (r - 1) >= n)
             --r;
+        if (r * r > (1u << 30))
+            throw Error("--spp " + std::to_string(requested) + " rounds up to " + std::to_string(r * r) +
+                        " for this sampler, more than the 2^30 allowed");
         return static_cast<std::uint32_t>(r * r);
     }
     case SAMPLER_HAMMERSLEY: {
         std::uint64_t p = 1;
         while (p < n)
             p <<= 1;
+        if (p > (1u << 30))
+            throw Error("--spp " + std::to_string(requested) + " rounds up to " + std::to_string(p) +
+                        " for hammersley, more than the 2^30 allowed");
         return static_cast<std::uint32_t>(p);
     }
     case SAMPLER_INDEPENDENT:

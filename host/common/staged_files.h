@@ -1,0 +1,30 @@
+// Output files written under temporary names beside their targets and renamed into place
+// only when every one of them is complete, so a failure anywhere (a full disk, the second
+// of two -o files) leaves every existing file the user has untouched and no partial file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pathcl {
+
+class StagedFiles {
+public:
+    StagedFiles() = default;
+    StagedFiles(const StagedFiles&) = delete;
+    StagedFiles& operator=(const StagedFiles&) = delete;
+    ~StagedFiles(); // removes whatever was staged and not committed
+
+    // A temporary path in target's directory, ending in target's extension (so writers
+    // that choose the format by extension see the right one).
+    std::string stage(const std::string& target);
+
+    // Renames every staged file onto its target; throws pathcl::Error naming the file if
+    // a rename fails (the files renamed before it stay renamed).
+    void commit();
+
+private:
+    std::vector<std::pair<std::string, std::string>> files_; // (temporary, target)
+};
+
+} // namespace pathcl
