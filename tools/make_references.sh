@@ -9,5 +9,5 @@ BUILD=${1:-build}
 SCENES=${*:-"cornell-box cornell-box-point cornell-box-sphere cornell-box-spot cornell-box-rect-spot cornell-box-directional sky-spheres cornell-box-glass-mirror material-spheres textured"}
 for scene in $SCENES; do
     "$BUILD/pathcl" render "scenes/$scene.gltf" -o "tests/references/$scene-64.exr" \
-        --width 64 --height 64 --spp 8192 --max-bounces 8 --seed 12345
+        --width 64 --height 64 --spp 8192 --max-bounces 8 --seed 12345 --sampler independent
 done

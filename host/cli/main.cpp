@@ -219,6 +219,9 @@ int main(int argc, char** argv)
     std::string scene_path;
     std::vector<std::string> outputs;
     pathcl::RenderOptions opt;
+    // Owen-scrambled Sobol by default: on the Cornell box at 64 spp it has a quarter of
+    // the independent sampler's RMSE for about 1.2 times the time per sample (README).
+    opt.sampler = SAMPLER_SOBOL;
     int device = 0;
     render->add_option("scene", scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
     render->add_option("-o,--output", outputs,
@@ -273,7 +276,7 @@ int main(int argc, char** argv)
     render->add_option("--sampler", opt.sampler, sampler_help)
         ->transform(sampler_check)
         ->type_name("NAME")
-        ->default_str("independent");
+        ->default_str("sobol");
     RenderRequest rr;
     std::vector<double> look_from, look_at, up;
     double fov = 0.0, aperture = 0.0, focus_distance = 0.0;
@@ -306,6 +309,7 @@ int main(int argc, char** argv)
     CLI::App* bench = app.add_subcommand("bench", "Time repeated renders of a scene (min/median/max samples/s)");
     std::string bench_scene;
     pathcl::RenderOptions bench_opt;
+    bench_opt.sampler = SAMPLER_SOBOL;
     bench_opt.width = bench_opt.height = 256;
     bench_opt.spp = 16;
     int bench_runs = 5, bench_device = 0;
@@ -324,7 +328,7 @@ int main(int argc, char** argv)
     bench->add_option("--sampler", bench_opt.sampler, sampler_help)
         ->transform(sampler_check)
         ->type_name("NAME")
-        ->default_str("independent");
+        ->default_str("sobol");
 
     CLI::App* samples = app.add_subcommand(
         "samples", "Draw one pixel's sample points for a dimension pair (and their power spectrum) to a PNG");
