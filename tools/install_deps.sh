@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="build-essential cmake ninja-build pkg-config
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers
-  libopenimageio-dev libtinygltf-dev libglm-dev libcli11-dev libgtest-dev
+  libopenimageio-dev libtinygltf-dev libglm-dev libcli11-dev libgtest-dev libembree-dev
   fonts-dejavu-core"
 missing=""
 for p in $PACKAGES; do
