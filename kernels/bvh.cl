@@ -1,4 +1,4 @@
-/* Closest-hit and any-hit traversal of the two-wide BVH, with the watertight ray/triangle
+/* Closest-hit and any-hit traversal of the four-wide BVH, with the watertight ray/triangle
  * test of Woop, Benthin and Wald (JCGT 2013). Needs: shared_types.h.
  *
  * Watertightness needs each edge function computed identically by both triangles that
@@ -11,7 +11,8 @@
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
 
-#define BVH_STACK_SIZE 64
+/* host/bvh/bvh_builder.h kBvhStackSize: the builder checks every tree fits. */
+#define BVH_STACK_SIZE 96
 
 /* pbrt's gamma(n): bound on the relative error of n chained float operations. */
 #define FLOAT_GAMMA(n) ((float)(n) * 0x1.0p-24f / (1.0f - (float)(n) * 0x1.0p-24f))
@@ -52,18 +53,20 @@ static inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
     return r;
 }
 
-/* Slab test against an AABB, with the far distance enlarged by 1 + 2 gamma(3) so that
- * rounding never culls a box the ray touches (Ize 2013). Returns the entry distance or
- * INFINITY on a miss. */
-static inline float ray_box_entry(const RayTraversal* r, float3 bmin, float3 bmax, float tmax)
+/* Slab tests against the four child boxes of a node at once (float4 lanes), with the far
+ * distance enlarged by 1 + 2 gamma(3) so that rounding never culls a box the ray touches
+ * (Ize 2013). Returns each child's entry distance, INFINITY where the ray misses it. */
+static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, float tmax)
 {
-    float3 t0 = (bmin - r->origin) * r->inv_dir;
-    float3 t1 = (bmax - r->origin) * r->inv_dir;
-    float3 tn = fmin(t0, t1);
-    float3 tf = fmax(t0, t1);
-    float tnear = fmax(fmax(tn.x, tn.y), fmax(tn.z, 0.0f));
-    float tfar = fmin(fmin(tf.x, tf.y), fmin(tf.z, tmax)) * (1.0f + 2.0f * FLOAT_GAMMA(3));
-    return (tnear <= tfar) ? tnear : INFINITY;
+    float4 ox = (float4)(r->origin.x), oy = (float4)(r->origin.y), oz = (float4)(r->origin.z);
+    float4 ix = (float4)(r->inv_dir.x), iy = (float4)(r->inv_dir.y), iz = (float4)(r->inv_dir.z);
+    float4 t0x = (node->lo_x - ox) * ix, t1x = (node->hi_x - ox) * ix;
+    float4 t0y = (node->lo_y - oy) * iy, t1y = (node->hi_y - oy) * iy;
+    float4 t0z = (node->lo_z - oz) * iz, t1z = (node->hi_z - oz) * iz;
+    float4 tnear = fmax(fmax(fmin(t0x, t1x), fmin(t0y, t1y)), fmax(fmin(t0z, t1z), (float4)(0.0f)));
+    float4 tfar = fmin(fmin(fmax(t0x, t1x), fmax(t0y, t1y)), fmin(fmax(t0z, t1z), (float4)(tmax)));
+    tfar *= 1.0f + 2.0f * FLOAT_GAMMA(3);
+    return select((float4)(INFINITY), tnear, islessequal(tnear, tfar));
 }
 
 /* Watertight ray/triangle test. On a hit closer than *t_max, updates hit and *t_max. */
@@ -126,9 +129,10 @@ static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* 
 }
 
 /* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
- * (shadow rays). */
+ * (shadow rays). Children are visited nearest entry first; the others wait on the stack
+ * with their entry distance and are dropped once a closer hit is known. */
 static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
-                     float3 origin, float3 dir, float t_max, bool any_hit)
+                            float3 origin, float3 dir, float t_max, bool any_hit)
 {
     RayTraversal r = ray_traversal_setup(origin, dir);
     Hit hit;
@@ -138,7 +142,7 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
     hit.triangle = -1;
 
     int2 stack[BVH_STACK_SIZE];
-    float stack_entry[BVH_STACK_SIZE]; /* where the ray enters each pushed child's box */
+    float stack_entry[BVH_STACK_SIZE];
     int sp = 0;
     int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
     for (;;) {
@@ -156,33 +160,29 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
             }
         } else {
             BvhNode node = nodes[cur.x];
-            float tl = ray_box_entry(&r, node.left_min.xyz, node.left_max.xyz, hit.t);
-            float tr = ray_box_entry(&r, node.right_min.xyz, node.right_max.xyz, hit.t);
-            int2 left = (int2)(as_int(node.left_min.w), as_int(node.left_max.w));
-            int2 right = (int2)(as_int(node.right_min.w), as_int(node.right_max.w));
-            bool hl = tl != INFINITY && left.x >= 0, hr = tr != INFINITY && right.x >= 0;
-            if (hl && hr) {
-                int2 near_child = (tl <= tr) ? left : right;
-                int2 far_child = (tl <= tr) ? right : left;
-                if (sp < BVH_STACK_SIZE) {
-                    stack_entry[sp] = fmax(tl, tr);
-                    stack[sp++] = far_child;
+            float4 entry = ray_box_entry4(&r, &node, hit.t);
+            float e[4] = {entry.x, entry.y, entry.z, entry.w};
+            int index[4] = {node.index.x, node.index.y, node.index.z, node.index.w};
+            int count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
+            /* Push every child the ray enters, farthest first, and continue with the
+             * nearest (popped at once): a small insertion sort on the entry distance. */
+            int base = sp;
+            for (int j = 0; j < 4; ++j) {
+                if (e[j] == INFINITY || index[j] < 0)
+                    continue;
+                int k = sp++;
+                while (k > base && stack_entry[k - 1] < e[j]) {
+                    stack[k] = stack[k - 1];
+                    stack_entry[k] = stack_entry[k - 1];
+                    --k;
                 }
-                cur = near_child;
-                continue;
-            }
-            if (hl) {
-                cur = left;
-                continue;
-            }
-            if (hr) {
-                cur = right;
-                continue;
+                stack[k] = (int2)(index[j], count[j]);
+                stack_entry[k] = e[j];
             }
         }
-        /* The next pushed child the ray still reaches before its closest hit so far (with
-         * the box test's own allowance for rounding, so no box that a closer hit could lie
-         * in is skipped). */
+        /* The next child the ray still reaches before its closest hit so far (with the
+         * box test's own allowance for rounding, so no box that a closer hit could lie in
+         * is skipped). */
         do {
             if (sp == 0)
                 return hit;

@@ -84,11 +84,12 @@ static inline float3 environment_sample(const Light* env, const EnvironmentBuffe
     float v = sample_cdf(buf->marginal, h, u.y, &row, &pdf_v);
     float uu = sample_cdf(buf->conditional + row * (w + 1u), w, u.x, &col, &pdf_u);
     float theta = PI_F * v, phi = 2.0f * PI_F * uu;
-    float sin_theta = sin(theta);
+    float cos_theta, sin_theta = sincos(theta, &cos_theta);
+    float cos_phi, sin_phi = sincos(phi, &cos_phi);
     *pdf = 0.0f;
     if (!(sin_theta > 0.0f) || !(pdf_u * pdf_v > 0.0f))
         return (float3)(0.0f);
-    float3 d = (float3)(sin_theta * sin(phi), cos(theta), -sin_theta * cos(phi));
+    float3 d = (float3)(sin_theta * sin_phi, cos_theta, -sin_theta * cos_phi);
     *world_dir = environment_to_world(env, d);
     *pdf = env->radiance.w * pdf_u * pdf_v / (2.0f * PI_F * PI_F * sin_theta);
     return buf->texels[row * w + col].xyz;

@@ -171,7 +171,8 @@ static inline LightSample light_sample(__global const Light* lights, uint count,
         float phi = 2.0f * PI_F * u.y;
         float3 axis = to_centre / dc, t, b;
         make_basis(axis, &t, &b);
-        ls.wi = normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * axis);
+        float cos_phi, sin_phi = sincos(phi, &cos_phi);
+        ls.wi = normalize(sin_theta * cos_phi * t + sin_theta * sin_phi * b + cos_theta * axis);
         /* Distance to the near side of the sphere along wi. */
         float ds = dc * cos_theta - sqrt(fmax(0.0f, r * r - dc2 * sin2_theta));
         ls.p = ref + ds * ls.wi;

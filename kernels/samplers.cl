@@ -184,6 +184,28 @@ static inline uint owen_scramble_u32(uint x, uint seed)
     return reverse_bits_u32(x);
 }
 
+/* owen_scramble_u32(reverse_bits_u32(r), seed): for a value at hand in bit-reversed
+ * order (a van der Corput index), two of the three reversals cancel. */
+static inline uint owen_scramble_reversed_u32(uint r, uint seed)
+{
+    uint x = r + seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverse_bits_u32(x);
+}
+
+/* reverse_bits_u32(sobol_dimension1_u32(a)), built directly in reversed order. */
+static inline uint sobol_dimension1_reversed_u32(uint a)
+{
+    uint v = 1u, r = 0u;
+    for (; a != 0u; a >>= 1, v ^= v << 1)
+        if (a & 1u)
+            r ^= v;
+    return r;
+}
+
 /* Sobol' dimension 1 (generator matrix: Pascal's triangle mod 2) as a 32-bit fraction.
  * Dimension 0 is the van der Corput sequence, reverse_bits_u32(a). */
 static inline uint sobol_dimension1_u32(uint a)
@@ -267,6 +289,13 @@ static inline float radical_inverse(uint base, uint a, uint n, uint seed, bool s
 
 /* ---- the samplers ---- */
 
+/* The independent sampler's pair at (dim, dim + 1): also the jitter inside a stratum. */
+static inline float2 sampler_jitter_2d(const SamplerState* s, uint dim)
+{
+    return (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
+                    u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));
+}
+
 /* floor(sqrt(n)) exactly. */
 static inline uint sqrt_floor_u32(uint n)
 {
@@ -285,49 +314,49 @@ static inline float halton_value(const SamplerState* s, uint dim)
     /* Base 2: Burley's hash-based Owen scramble of the bit-reversed index does the same
      * nested scrambling in one pass instead of one permutation per digit. */
     if (base == 2u)
-        return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(s->sample), seed));
+        return u32_to_unit_float(owen_scramble_reversed_u32(s->sample, seed));
     return radical_inverse(base, s->sample, max(s->spp, 1u), seed, true);
 }
 
 static inline float sampler_value_1d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
-    uint xi = hash_combine(s->sample_key, dim);
+    uint set = hash_combine(s->set_key, dim); /* this decision's point set */
     switch (s->type) {
     case SAMPLER_JITTERED:
     case SAMPLER_MULTI_JITTERED:
     case SAMPLER_N_ROOKS:
         /* One sample in each of spp strata. */
-        return stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u)), n,
-                             u32_to_unit_float(xi));
+        return stratum_point(permute_element(s->sample, n, hash_combine(set, 0u)), n,
+                             u32_to_unit_float(hash_combine(s->sample_key, dim)));
     case SAMPLER_SOBOL: {
-        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
-        return u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), hash_combine(hash_combine(s->set_key, dim), 1u)));
+        uint index = permute_element(s->sample, n, hash_combine(set, 0u));
+        return u32_to_unit_float(owen_scramble_reversed_u32(index, hash_combine(set, 1u)));
     }
     case SAMPLER_HAMMERSLEY: {
-        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
+        uint index = permute_element(s->sample, n, hash_combine(set, 0u));
         uint x = (uint)(((ulong)index << 32) / n); /* index / n as a 32-bit fraction */
-        return u32_to_unit_float(owen_scramble_u32(x, hash_combine(hash_combine(s->set_key, dim), 1u)));
+        return u32_to_unit_float(owen_scramble_u32(x, hash_combine(set, 1u)));
     }
     case SAMPLER_HALTON:
         return halton_value(s, dim);
     default: /* SAMPLER_INDEPENDENT */
-        return u32_to_unit_float(xi);
+        return u32_to_unit_float(hash_combine(s->sample_key, dim));
     }
 }
 
 static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
-    float2 xi = (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
-                         u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));
+    uint set = hash_combine(s->set_key, dim); /* this decision's point set */
     switch (s->type) {
     case SAMPLER_JITTERED: {
         /* A random stratum of the cols x rows grid per sample index (a permutation, so each
          * stratum once); with fewer samples than strata the unused strata are random too,
          * which keeps the estimate unbiased. */
         uint cols = max(sqrt_floor_u32(n), 1u), rows = (n + cols - 1u) / cols;
-        uint cell = permute_element(s->sample, cols * rows, hash_combine(hash_combine(s->set_key, dim), 0u));
+        uint cell = permute_element(s->sample, cols * rows, hash_combine(set, 0u));
+        float2 xi = sampler_jitter_2d(s, dim);
         return (float2)(stratum_point(cell % cols, cols, xi.x), stratum_point(cell / cols, rows, xi.y));
     }
     case SAMPLER_MULTI_JITTERED: {
@@ -337,33 +366,34 @@ static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
          * and likewise for rows. Every coarse cell, every one of the cols*rows fine
          * columns and every fine row holds one sample. */
         uint cols = max(sqrt_floor_u32(n), 1u), rows = (n + cols - 1u) / cols, cells = cols * rows;
-        uint cell = permute_element(s->sample, cells, hash_combine(hash_combine(s->set_key, dim), 0u));
+        uint cell = permute_element(s->sample, cells, hash_combine(set, 0u));
         uint cx = cell % cols, cy = cell / cols;
-        uint sx = permute_element(cx, cols, hash_combine(hash_combine(s->set_key, dim), 1u));
-        uint sy = permute_element(cy, rows, hash_combine(hash_combine(s->set_key, dim), 2u));
+        uint sx = permute_element(cx, cols, hash_combine(set, 1u));
+        uint sy = permute_element(cy, rows, hash_combine(set, 2u));
+        float2 xi = sampler_jitter_2d(s, dim);
         return (float2)(stratum_point(cx * rows + sy, cells, xi.x), stratum_point(cy * cols + sx, cells, xi.y));
     }
-    case SAMPLER_N_ROOKS:
-        return (float2)(
-            stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u)), n, xi.x),
-            stratum_point(permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 1u)), n, xi.y));
+    case SAMPLER_N_ROOKS: {
+        float2 xi = sampler_jitter_2d(s, dim);
+        return (float2)(stratum_point(permute_element(s->sample, n, hash_combine(set, 0u)), n, xi.x),
+                        stratum_point(permute_element(s->sample, n, hash_combine(set, 1u)), n, xi.y));
+    }
     case SAMPLER_SOBOL: {
-        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
+        uint index = permute_element(s->sample, n, hash_combine(set, 0u));
         return (float2)(
-            u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index), hash_combine(hash_combine(s->set_key, dim), 1u))),
-            u32_to_unit_float(owen_scramble_u32(sobol_dimension1_u32(index), hash_combine(hash_combine(s->set_key, dim), 2u))));
+            u32_to_unit_float(owen_scramble_reversed_u32(index, hash_combine(set, 1u))),
+            u32_to_unit_float(owen_scramble_reversed_u32(sobol_dimension1_reversed_u32(index), hash_combine(set, 2u))));
     }
     case SAMPLER_HAMMERSLEY: {
-        uint index = permute_element(s->sample, n, hash_combine(hash_combine(s->set_key, dim), 0u));
+        uint index = permute_element(s->sample, n, hash_combine(set, 0u));
         uint x = (uint)(((ulong)index << 32) / n);
-        return (float2)(u32_to_unit_float(owen_scramble_u32(x, hash_combine(hash_combine(s->set_key, dim), 1u))),
-                        u32_to_unit_float(owen_scramble_u32(reverse_bits_u32(index),
-                                                            hash_combine(hash_combine(s->set_key, dim), 2u))));
+        return (float2)(u32_to_unit_float(owen_scramble_u32(x, hash_combine(set, 1u))),
+                        u32_to_unit_float(owen_scramble_reversed_u32(index, hash_combine(set, 2u))));
     }
     case SAMPLER_HALTON:
         return (float2)(halton_value(s, dim), halton_value(s, dim + 1u));
     default: /* SAMPLER_INDEPENDENT */
-        return xi;
+        return sampler_jitter_2d(s, dim);
     }
 }
 
@@ -430,5 +460,6 @@ static inline float2 sample_concentric_disk(float2 u)
         r = o.y;
         theta = (PI_F / 2.0f) - (PI_F / 4.0f) * (o.x / o.y);
     }
-    return r * (float2)(cos(theta), sin(theta));
+    float c, s = sincos(theta, &c); /* one argument reduction for both */
+    return r * (float2)(c, s);
 }

@@ -12,6 +12,7 @@
 
 #ifdef __OPENCL_C_VERSION__
 typedef float4 pcl_float4;
+typedef int4 pcl_int4;
 typedef int pcl_int;
 typedef uint pcl_uint;
 typedef float pcl_float;
@@ -20,6 +21,9 @@ typedef float pcl_float;
 namespace pathcl {
 struct alignas(16) pcl_float4 {
     float x, y, z, w;
+};
+struct alignas(16) pcl_int4 {
+    std::int32_t x, y, z, w;
 };
 typedef std::int32_t pcl_int;
 typedef std::uint32_t pcl_uint;
@@ -32,15 +36,14 @@ typedef struct {
     pcl_float4 direction; /* xyz normalized; w unused */
 } Ray;
 
-/* Two-wide BVH node holding both children's boxes, so one 64-byte fetch decides which
- * children a ray enters. A child is either an inner node (count == 0, index = node) or a
- * leaf (count > 0, index = first triangle, count triangles). An empty child has count
- * 0 and index -1 and an inverted box. 64 bytes. */
+/* Four-wide BVH node: the four children's boxes stored axis by axis, so that one float4
+ * operation slab-tests all four (SIMD on CPUs, and one node fetch decides all children).
+ * A child is an inner node (count 0, index = node), a leaf (count > 0: triangles index ..
+ * index + count - 1) or empty (index -1, count 0, inverted box). 128 bytes. */
 typedef struct {
-    pcl_float4 left_min;  /* w: as_float(left index) */
-    pcl_float4 left_max;  /* w: as_float(left count) */
-    pcl_float4 right_min; /* w: as_float(right index) */
-    pcl_float4 right_max; /* w: as_float(right count) */
+    pcl_float4 lo_x, hi_x, lo_y, hi_y, lo_z, hi_z; /* lane k: child k's box */
+    pcl_int4 index;
+    pcl_int4 count;
 } BvhNode;
 
 /* Triangle positions in BVH leaf order, for intersection only: 48 bytes. */

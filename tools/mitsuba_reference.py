@@ -340,7 +340,7 @@ def make_light(mi, light):
     return {"type": "directional", "direction": [float(c) for c in d], "irradiance": rgb}
 
 
-def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=()):
+def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=(), sampler="independent"):
     scene = {
         "type": "scene",
         "integrator": {"type": "path", "max_depth": max_bounces + 1, "hide_emitters": False},
@@ -351,8 +351,9 @@ def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=()):
             "near_clip": float(camera.get("znear", 0.01)),
             "far_clip": float(camera.get("zfar", 1e4)),
             "to_world": camera_to_world(mi, camera),
-            # Independent samples so that separately seeded runs are independent too.
-            "sampler": {"type": "independent", "sample_count": spp},
+            # Independent samples (the default) so that separately seeded runs are
+            # independent too; tools/mitsuba_efficiency.py also times Mitsuba's others.
+            "sampler": {"type": sampler, "sample_count": spp},
             "film": {"type": "hdrfilm", "width": width, "height": height,
                      "rfilter": {"type": "box"}, "pixel_format": "rgb",
                      "component_format": "float32"},

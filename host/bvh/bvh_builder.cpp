@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace pathcl {
 namespace {
@@ -33,14 +34,17 @@ struct Builder {
     const BvhBuildInput& in;
     std::vector<glm::vec3> centroid;
     std::vector<std::uint32_t> order;
-    std::vector<BvhNode> nodes;
     Bvh* out;
 
     struct Child {
         Box box;
-        int index; // node index, or first triangle for a leaf
+        int index; // binary node index, or first triangle for a leaf; -1: empty
         int count; // 0: inner node
     };
+    struct BinaryNode {
+        Child child[2];
+    };
+    std::vector<BinaryNode> nodes; // the binary SAH tree, collapsed afterwards
 
     // Builds the subtree over order[begin, end) and returns it as a child reference.
     Child build(std::size_t begin, std::size_t end, int depth)
@@ -135,18 +139,67 @@ struct Builder {
         nodes.emplace_back();
         Child left = build(begin, mid, depth + 1);
         Child right = build(mid, end, depth + 1);
-        nodes[self] = make_node(left, right);
+        nodes[self] = BinaryNode{{left, right}};
         return Child{bounds, static_cast<int>(self), 0};
     }
 
-    static BvhNode make_node(const Child& l, const Child& r)
+    // The four-wide tree: each node takes the grandchildren of a binary node (a child
+    // that is a leaf stands for itself), so every four-wide level spans two binary
+    // levels; that bounds the traversal stack (stack_needed). Returns the node's index.
+    std::vector<BvhNode> wide;
+
+    int collapse(int binary)
     {
-        BvhNode node;
-        node.left_min = {l.box.lo.x, l.box.lo.y, l.box.lo.z, std::bit_cast<float>(l.index)};
-        node.left_max = {l.box.hi.x, l.box.hi.y, l.box.hi.z, std::bit_cast<float>(l.count)};
-        node.right_min = {r.box.lo.x, r.box.lo.y, r.box.lo.z, std::bit_cast<float>(r.index)};
-        node.right_max = {r.box.hi.x, r.box.hi.y, r.box.hi.z, std::bit_cast<float>(r.count)};
-        return node;
+        Child kids[4];
+        int k = 0;
+        for (const Child& c : nodes[static_cast<std::size_t>(binary)].child) {
+            if (c.index < 0)
+                continue; // empty (only under the root of a scene with one leaf or none)
+            if (c.count == 0) {
+                for (const Child& g : nodes[static_cast<std::size_t>(c.index)].child)
+                    if (g.index >= 0)
+                        kids[k++] = g;
+            } else {
+                kids[k++] = c;
+            }
+        }
+        int self = static_cast<int>(wide.size());
+        wide.emplace_back();
+        BvhNode node{};
+        float* lo[3] = {&node.lo_x.x, &node.lo_y.x, &node.lo_z.x};
+        float* hi[3] = {&node.hi_x.x, &node.hi_y.x, &node.hi_z.x};
+        std::int32_t* index = &node.index.x;
+        std::int32_t* count = &node.count.x;
+        for (int j = 0; j < 4; ++j) {
+            const bool used = j < k;
+            for (int a = 0; a < 3; ++a) { // an empty slot gets an inverted box
+                lo[a][j] = used ? kids[j].box.lo[a] : std::numeric_limits<float>::infinity();
+                hi[a][j] = used ? kids[j].box.hi[a] : -std::numeric_limits<float>::infinity();
+            }
+            count[j] = used ? kids[j].count : 0;
+            index[j] = used ? (kids[j].count > 0 ? kids[j].index : collapse(kids[j].index)) : -1;
+        }
+        wide[static_cast<std::size_t>(self)] = node;
+        return self;
+    }
+
+    // Stack entries traversal may need below node i: it pushes all but one of the
+    // children it enters.
+    int stack_needed(int i, int depth)
+    {
+        const BvhNode& n = wide[static_cast<std::size_t>(i)];
+        const std::int32_t* index = &n.index.x;
+        const std::int32_t* count = &n.count.x;
+        int children = 0, deepest = 0;
+        out->wide_depth = std::max(out->wide_depth, depth);
+        for (int j = 0; j < 4; ++j) {
+            if (index[j] < 0)
+                continue;
+            ++children;
+            if (count[j] == 0)
+                deepest = std::max(deepest, stack_needed(index[j], depth + 1));
+        }
+        return std::max(children - 1, 0) + deepest;
     }
 };
 
@@ -169,7 +222,7 @@ Bvh build_bvh(const BvhBuildInput& input)
 {
     Bvh bvh;
     std::size_t n = input.box_min.size();
-    Builder b{input, {}, {}, {}, &bvh};
+    Builder b{input, {}, {}, &bvh, {}, {}};
     b.centroid.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         b.centroid[i] = 0.5f * (input.box_min[i] + input.box_max[i]);
@@ -178,14 +231,18 @@ Bvh build_bvh(const BvhBuildInput& input)
 
     Builder::Child empty{Box{}, -1, 0};
     if (n == 0) {
-        b.nodes.push_back(Builder::make_node(empty, empty));
+        b.nodes.push_back(Builder::BinaryNode{{empty, empty}});
     } else {
-        // The first node build() allocates is the root, index 0.
+        // The first node build() allocates is the binary root, index 0.
         Builder::Child top = b.build(0, n, 1);
         if (top.count > 0) // the whole scene is one leaf: hang it under an inner root
-            b.nodes.push_back(Builder::make_node(top, empty));
+            b.nodes.push_back(Builder::BinaryNode{{top, empty}});
     }
-    bvh.nodes = std::move(b.nodes);
+    b.collapse(0); // the four-wide root is node 0
+    bvh.stack_needed = b.stack_needed(0, 1);
+    if (bvh.stack_needed + 1 > kBvhStackSize) // + 1: a node's children are all pushed before one is popped
+        throw std::logic_error("BVH needs a traversal stack of " + std::to_string(bvh.stack_needed));
+    bvh.nodes = std::move(b.wide);
     bvh.triangle_order = std::move(b.order);
     return bvh;
 }

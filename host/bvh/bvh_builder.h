@@ -1,5 +1,6 @@
-// Binned SAH BVH over triangles, flattened to the two-wide BvhNode array the kernels
-// traverse with a fixed stack (kernels/bvh.cl). Node 0 is the root and is always an inner
+// Binned SAH BVH over triangles: built binary, then collapsed to the four-wide BvhNode
+// array the kernels traverse with a fixed stack (kernels/bvh.cl), every four-wide node
+// taking the grandchildren of a binary one. Node 0 is the root and is always an inner
 // node; leaves live inside their parent as (first triangle, count).
 #pragma once
 
@@ -20,13 +21,17 @@ struct Bvh {
     std::vector<BvhNode> nodes;
     // Leaf order: triangle_order[i] is the input triangle stored at position i.
     std::vector<std::uint32_t> triangle_order;
-    int depth = 0;       // longest root-to-leaf path, in nodes
+    int depth = 0;       // longest root-to-leaf path of the binary tree, in nodes
+    int wide_depth = 0;  // the same in the four-wide tree
+    int stack_needed = 0; // most traversal stack entries any ray can need
     int leaf_count = 0;
     int max_leaf_size = 0;
 };
 
-// Depth never exceeds the kernels' traversal stack (BVH_STACK_SIZE in bvh.cl).
+// The binary depth bound keeps the four-wide tree within the kernels' traversal stack:
+// at most 30 four-wide levels, each pushing at most 3 entries (BVH_STACK_SIZE in bvh.cl).
 constexpr int kBvhMaxDepth = 60;
+constexpr int kBvhStackSize = 96;
 constexpr int kBvhMaxLeafSize = 8;
 
 Bvh build_bvh(const BvhBuildInput& input);
