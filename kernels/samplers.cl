@@ -113,13 +113,16 @@ static inline uint permute_element(uint i, uint l, uint p)
 {
     if (l <= 1u)
         return 0u;
-    i %= l;
     uint w = l - 1u;
     w |= w >> 1;
     w |= w >> 2;
     w |= w >> 4;
     w |= w >> 8;
     w |= w >> 16;
+    /* A power of two (every Sobol', Hammersley and square-jittered spp of 4^k) needs no
+     * integer division, the slowest instruction here: the same values by masks. */
+    bool pow2 = (l & w) == 0u;
+    i = pow2 ? (i & w) : (i % l);
     do {
         i ^= p;
         i *= 0xe170893du;
@@ -140,7 +143,7 @@ static inline uint permute_element(uint i, uint l, uint p)
         i &= w;
         i ^= i >> 5;
     } while (i >= l);
-    return (i + p) % l;
+    return pow2 ? ((i + p) & w) : ((i + p) % l);
 }
 
 /* A uniform point of stratum j of n equal strata of [0, 1), exactly inside it:
