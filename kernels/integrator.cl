@@ -176,7 +176,8 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
 
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
         SamplerState sampler = frame_sampler(&frame, pixel, dims + DIM_TECHNIQUE);
-        bool technique_light = sampler_get_1d(&sampler) < 0.5f; /* used by one-sample only */
+        /* One-sample MIS's coin (its own dimension, drawn only by that strategy). */
+        bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
 
 #ifdef PATHCL_HAS_LIGHTS
         /* Next event estimation: one shadow ray to a point on a light. */
