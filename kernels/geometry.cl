@@ -81,6 +81,10 @@ static inline SurfacePoint surface_point(__global const Triangle* triangles,
         sp.p_smooth = sp.p - side * lift;
         sp.lifted = -side * dot(lift, ng) > 4.0f * dot(fabs(ng), sp.p_error);
     }
+#ifdef PATHCL_FAULT_SHADING_NORMAL_ONLY /* a naive renderer, for the thin-gap test: no lift */
+    sp.p_smooth = sp.p;
+    sp.lifted = false;
+#endif
     sp.material = sh.material;
     sp.emitter = sh.emitter;
     return sp;
@@ -113,6 +117,9 @@ static inline float3 offset_ray_origin(float3 p, float3 p_error, float3 n, float
  * ray below the triangle would start behind it and could leak light through it. */
 static inline bool above_surface(const SurfacePoint* sp, float cos_ig)
 {
+#ifdef PATHCL_FAULT_SHADING_NORMAL_ONLY /* the shading normal alone decides */
+    return true;
+#endif
     return cos_ig > 0.0f || sp->lifted;
 }
 
@@ -121,6 +128,9 @@ static inline bool above_surface(const SurfacePoint* sp, float cos_ig)
  * a transmitted one from the triangle, pushed off its far side. */
 static inline float3 spawn_ray_origin(const SurfacePoint* sp, float3 w)
 {
+#ifdef PATHCL_FAULT_SHADING_NORMAL_ONLY /* a naive renderer: no lift, offset to w's side */
+    return offset_ray_origin(sp->p, sp->p_error, sp->ng, w);
+#endif
     if (dot(w, sp->ns) > 0.0f && above_surface(sp, dot(w, sp->ng)))
         return offset_ray_origin(sp->p_smooth, sp->p_error, sp->ng, sp->ng);
     return offset_ray_origin(sp->p, sp->p_error, sp->ng, w);
