@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <ostream>
 #include <limits>
+#include <ostream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -435,6 +435,29 @@ TEST(GltfNormals, AbsentNormalsGiveTheGeometricNormal)
     for (int k = 0; k < 3; ++k)
         EXPECT_TRUE(near_rel(d3(scene.triangles[0].n[k]), kTiltedNormal, 1e-6))
             << "vertex " << k << ": " << str(d3(scene.triangles[0].n[k]));
+}
+
+TEST(GltfNormals, ZeroLengthAndNanNormalsAreReplacedByTheGeometricNormalAndCounted)
+{
+    // A zero-length and a NaN normal would give the kernels a NaN shading frame; they
+    // become the geometric normal (exact: the same float computation), the valid one is
+    // kept (normalized), and the two are counted for the load warning. Naive variant
+    // that fails: normalizing every normal unchecked (NaN shading normals).
+    GltfBuilder b;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    int normals = b.add_normals({{0.0f, 0.0f, 0.0f}, {nan, 0.0f, 1.0f}, {2.0f, 0.0f, 0.0f}});
+    int mesh = b.add_mesh(b.add_positions(kTilted), -1, b.add_material(glm::vec3(0.5f)), 4, normals);
+    b.add_root(b.add_node(mesh));
+    Scene scene = import(b);
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    const SceneTriangle& t = scene.triangles[0];
+    glm::vec3 c = glm::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]);
+    glm::vec3 ng = c / glm::length(c);
+    EXPECT_EQ(t.n[0], ng);
+    EXPECT_EQ(t.n[1], ng);
+    EXPECT_EQ(t.n[2], glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(scene.repaired_normals, 2u);
+    EXPECT_EQ(import(one_triangle(kTilted)).repaired_normals, 0u);
 }
 
 TEST(GltfNormals, NonUniformScaleTransformsNormalsByTheInverseTranspose)

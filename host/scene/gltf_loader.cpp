@@ -297,7 +297,6 @@ struct Importer {
     Scene scene;
     int default_material = -1;
     std::size_t skipped_points_lines = 0;
-    std::size_t repaired_normals = 0;
 
     // Triangles in double-precision world space, until the render-space origin is known.
     struct PendingTriangle {
@@ -584,7 +583,7 @@ struct Importer {
                     if (l > 0.0 && std::isfinite(l))
                         sn = glm::vec3(pt.n[k] / l);
                     else
-                        ++repaired_normals;
+                        ++scene.repaired_normals;
                 }
                 tri.n[k] = sn;
             }
@@ -723,8 +722,8 @@ struct Importer {
         if (scene.dropped_degenerate)
             warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
                  " degenerate (zero-area) triangles");
-        if (repaired_normals)
-            warn(source + ": replaced " + std::to_string(repaired_normals) +
+        if (scene.repaired_normals)
+            warn(source + ": replaced " + std::to_string(scene.repaired_normals) +
                  " zero-length or NaN normals by the geometric normal");
     }
 

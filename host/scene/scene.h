@@ -138,6 +138,7 @@ struct Scene {
     SceneEnvironment environment;
     SceneCamera camera;
     std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
+    std::size_t repaired_normals = 0;   // zero-length or NaN vertex normals replaced by the geometric one
     glm::dvec3 render_origin{0.0};      // world position of the render-space origin
 };
 
