@@ -300,10 +300,9 @@ static inline float ggx_visible_pdf(float3 wo, float3 wm, float a2)
 static inline float3 ggx_sample_visible(float3 wo, float alpha, float2 u)
 {
     float3 w = normalize((float3)(wo.x * alpha, wo.y * alpha, wo.z));
-    float phi = 2.0f * PI_F * u.x;
     float z = fma(1.0f - u.y, 1.0f + w.z, -w.z);
     float sin_theta = sqrt(clamp(1.0f - z * z, 0.0f, 1.0f));
-    float cos_phi, sin_phi = sincos(phi, &cos_phi); /* one argument reduction for both */
+    float cos_phi, sin_phi = sin_cos_turns(u.x, &cos_phi); /* phi = 2 pi u.x */
     float3 h = (float3)(sin_theta * cos_phi, sin_theta * sin_phi, z) + w;
     float3 wm = (float3)(h.x * alpha, h.y * alpha, fmax(h.z, 0.0f));
     float len = length(wm);

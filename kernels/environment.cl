@@ -83,9 +83,8 @@ static inline float3 environment_sample(const Light* env, const EnvironmentBuffe
     float pdf_v, pdf_u;
     float v = sample_cdf(buf->marginal, h, u.y, &row, &pdf_v);
     float uu = sample_cdf(buf->conditional + row * (w + 1u), w, u.x, &col, &pdf_u);
-    float theta = PI_F * v, phi = 2.0f * PI_F * uu;
-    float cos_theta, sin_theta = sincos(theta, &cos_theta);
-    float cos_phi, sin_phi = sincos(phi, &cos_phi);
+    float cos_theta, sin_theta = sin_cos_turns(0.5f * v, &cos_theta); /* theta = pi v */
+    float cos_phi, sin_phi = sin_cos_turns(uu, &cos_phi);            /* phi = 2 pi uu */
     *pdf = 0.0f;
     if (!(sin_theta > 0.0f) || !(pdf_u * pdf_v > 0.0f))
         return (float3)(0.0f);

@@ -168,10 +168,9 @@ static inline LightSample light_sample(__global const Light* lights, uint count,
         float cos_theta = 1.0f - one_minus_cos_theta;
         float sin2_theta = one_minus_cos_theta * (2.0f - one_minus_cos_theta);
         float sin_theta = sqrt(fmax(0.0f, sin2_theta));
-        float phi = 2.0f * PI_F * u.y;
         float3 axis = to_centre / dc, t, b;
         make_basis(axis, &t, &b);
-        float cos_phi, sin_phi = sincos(phi, &cos_phi);
+        float cos_phi, sin_phi = sin_cos_turns(u.y, &cos_phi); /* phi = 2 pi u.y */
         ls.wi = normalize(sin_theta * cos_phi * t + sin_theta * sin_phi * b + cos_theta * axis);
         /* Distance to the near side of the sphere along wi. */
         float ds = dc * cos_theta - sqrt(fmax(0.0f, r * r - dc2 * sin2_theta));

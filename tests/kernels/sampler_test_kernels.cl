@@ -12,3 +12,14 @@ __kernel void test_radical_inverse(uint base, uint scramble, uint seed, __global
     digits[i] = r;
     scale[i] = s;
 }
+
+/* The warps' sine and cosine: out[i] = (sin, cos) of in[i] radians (turns == 0, |x| <=
+ * pi/4) or of 2 pi in[i] (turns != 0); the built-in sincos alongside for comparison. */
+__kernel void test_sin_cos(__global const float* in, uint turns, __global float2* out, __global float2* builtin)
+{
+    uint i = get_global_id(0);
+    float x = in[i], c, s = turns ? sin_cos_turns(x, &c) : sin_cos_small(x, &c);
+    out[i] = (float2)(s, c);
+    float bc, bs = sincos(turns ? 2.0f * PI_F * x : x, &bc);
+    builtin[i] = (float2)(bs, bc);
+}
