@@ -21,6 +21,7 @@
 #include "common/error.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
+#include "support/expect_error.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {
@@ -136,21 +137,8 @@ GltfBuilder one_triangle(const std::vector<glm::vec3>& p, const std::vector<doub
 }
 
 // Runs `f`, expecting pathcl::Error; returns its message ("" and a failure otherwise).
-std::string error_of(const std::function<void()>& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "threw a std::exception that is not pathcl::Error: " << e.what();
-        return "";
-    }
-    ADD_FAILURE() << "did not throw";
-    return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using test::contains;
+using test::error_of;
 
 // ---------------------------------------------------------------------------------------
 // Node hierarchy and instancing

@@ -24,6 +24,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
 #include "scene/tangents.h"
+#include "support/expect_error.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {
@@ -71,21 +72,8 @@ const std::vector<unsigned char> kPngGreyAlpha8 = {
     0xae, 0x42, 0x60, 0x82,
 };
 
-std::string error_of(const std::function<void()>& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "threw a std::exception that is not pathcl::Error: " << e.what();
-        return "";
-    }
-    ADD_FAILURE() << "did not throw";
-    return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using test::contains;
+using test::error_of;
 
 // A unit quad (two triangles) in the z = 0 plane facing +z, with normals, TEXCOORD_0 =
 // (x, 1 - y) and TEXCOORD_1 = (y, x); one material (index `material`), one mesh.

@@ -212,6 +212,21 @@ TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
     }
 }
 
+// scenes/NAME.gltf rendered at spp (the reference's size and options) against
+// tests/references/NAME-64.exr, with no NaN/Inf sample.
+void expect_scene_matches_its_reference(const std::string& name, std::uint32_t spp)
+{
+    Scene scene = load_gltf(kSource + "/scenes/" + name + ".gltf");
+    RenderOptions o = cornell_test_options();
+    o.spp = spp;
+    RenderResult r = render(scene, o);
+    EXPECT_EQ(r.stats.bad_samples, 0u) << name;
+    Image ref = read_image(kSource + "/tests/references/" + name + "-64.exr");
+    CompareReport cmp = compare_images(r.image, ref);
+    std::cout << name << "\n" << cmp.summary();
+    EXPECT_TRUE(cmp.passed) << name << "\n" << cmp.summary();
+}
+
 TEST(Render, EachLightTypeSceneMatchesItsCommittedReference)
 {
     // One scene per light type besides the area light (tools/make_scenes.sh), against its
@@ -221,15 +236,7 @@ TEST(Render, EachLightTypeSceneMatchesItsCommittedReference)
     // 0.2-0.4 % of pixels and, for seed 7, 3 of 192 tiles; at 256 spp 0.07-0.12 % and none).
     for (const char* name : {"cornell-box-point", "cornell-box-sphere", "cornell-box-spot", "cornell-box-rect-spot",
                              "cornell-box-directional", "sky-spheres"}) {
-        Scene scene = load_gltf(kSource + "/scenes/" + name + ".gltf");
-        RenderOptions o = cornell_test_options();
-        o.spp = 256;
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u) << name;
-        Image ref = read_image(kSource + "/tests/references/" + name + "-64.exr");
-        CompareReport cmp = compare_images(r.image, ref);
-        std::cout << name << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << name << "\n" << cmp.summary();
+        expect_scene_matches_its_reference(name, 256);
     }
 }
 
@@ -241,15 +248,7 @@ TEST(Render, MaterialScenesMatchTheirCommittedReferences)
     // roughness under an environment map, each against its 8192-spp reference. 256 spp:
     // caustics reached only by BSDF sampling make single pixels heavy-tailed.
     for (const char* name : {"cornell-box-glass-mirror", "material-spheres"}) {
-        Scene scene = load_gltf(kSource + "/scenes/" + name + ".gltf");
-        RenderOptions o = cornell_test_options();
-        o.spp = 256;
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u) << name;
-        Image ref = read_image(kSource + "/tests/references/" + name + "-64.exr");
-        CompareReport cmp = compare_images(r.image, ref);
-        std::cout << name << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << name << "\n" << cmp.summary();
+        expect_scene_matches_its_reference(name, 256);
     }
 }
 

@@ -190,30 +190,44 @@ TEST(Samplers, PixelsGetDifferentPointSets)
     }
 }
 
+// The kernel's radical inverses of points 0..n-1 in `base` (test_radical_inverse): the
+// float values and the digit prefixes digits / scale they come from.
+struct RadicalInverses {
+    std::vector<float> value;
+    std::vector<cl_ulong> digits, scale;
+};
+
+RadicalInverses radical_inverses(std::uint32_t base, std::size_t n, bool scramble, std::uint32_t seed)
+{
+    ClDevice& dev = test::test_device();
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Buffer digits(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
+    cl::Buffer scale(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
+    cl::Kernel k(sampler_program(), "test_radical_inverse");
+    k.setArg(0, static_cast<cl_uint>(base));
+    k.setArg(1, static_cast<cl_uint>(scramble));
+    k.setArg(2, static_cast<cl_uint>(seed));
+    k.setArg(3, out);
+    k.setArg(4, digits);
+    k.setArg(5, scale);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    RadicalInverses r{std::vector<float>(n), std::vector<cl_ulong>(n), std::vector<cl_ulong>(n)};
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), r.value.data());
+    dev.queue.enqueueReadBuffer(digits, CL_TRUE, 0, n * sizeof(cl_ulong), r.digits.data());
+    dev.queue.enqueueReadBuffer(scale, CL_TRUE, 0, n * sizeof(cl_ulong), r.scale.data());
+    return r;
+}
+
 TEST(Samplers, HaltonRadicalInversesOfTheFirstPointsAreExact)
 {
     // The unscrambled digit code gives the exact radical inverse (as a rational, and as
     // the float nearest to it) for the first 1000 indices in bases 2, 3, 5, 7 and 1619.
     // Broken variant seen to fail: the digits appended most significant first.
-    ClDevice& dev = test::test_device();
     const std::size_t n = 1000;
     for (std::uint32_t base : {2u, 3u, 5u, 7u, 1619u}) {
-        cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
-        cl::Buffer digits(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
-        cl::Buffer scale(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
-        cl::Kernel k(sampler_program(), "test_radical_inverse");
-        k.setArg(0, static_cast<cl_uint>(base));
-        k.setArg(1, static_cast<cl_uint>(0));
-        k.setArg(2, static_cast<cl_uint>(0));
-        k.setArg(3, out);
-        k.setArg(4, digits);
-        k.setArg(5, scale);
-        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-        std::vector<float> v(n);
-        std::vector<cl_ulong> d(n), s(n);
-        dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
-        dev.queue.enqueueReadBuffer(digits, CL_TRUE, 0, n * sizeof(cl_ulong), d.data());
-        dev.queue.enqueueReadBuffer(scale, CL_TRUE, 0, n * sizeof(cl_ulong), s.data());
+        RadicalInverses ri = radical_inverses(base, n, false, 0);
+        const std::vector<float>& v = ri.value;
+        const std::vector<cl_ulong>&d = ri.digits, &s = ri.scale;
         for (std::uint64_t i = 0; i < n; ++i) {
             // Reference: phi_b(i) = sum_k d_k b^-(k+1) as r / b^K.
             std::uint64_t r = 0, bk = 1;
@@ -335,28 +349,14 @@ TEST(Samplers, ScrambledHaltonKeepsTheDigitStrata)
     // 2^-a x 3^-b box of the first 2^a 3^b points. Broken variants seen to fail: a digit
     // map d -> (m d + o) mod b whose multiplier m may be 0; a Kensler permutation seeded
     // with the digit's own value (neither is a permutation).
-    ClDevice& dev = test::test_device();
     for (std::uint32_t base : {2u, 3u, 5u, 13u}) {
         std::uint32_t k = base == 2 ? 10 : base == 3 ? 6 : base == 5 ? 4 : 2;
         std::size_t n = 1;
         for (std::uint32_t i = 0; i < k; ++i)
             n *= base;
-        cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
-        cl::Buffer digits(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
-        cl::Buffer scale(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
-        cl::Kernel kern(sampler_program(), "test_radical_inverse");
-        kern.setArg(0, static_cast<cl_uint>(base));
-        kern.setArg(1, static_cast<cl_uint>(1));
-        kern.setArg(2, static_cast<cl_uint>(0x1234567));
-        kern.setArg(3, out);
-        kern.setArg(4, digits);
-        kern.setArg(5, scale);
-        dev.queue.enqueueNDRangeKernel(kern, cl::NullRange, cl::NDRange(n));
-        std::vector<float> v(n);
-        std::vector<cl_ulong> d(n), s(n);
-        dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
-        dev.queue.enqueueReadBuffer(digits, CL_TRUE, 0, n * sizeof(cl_ulong), d.data());
-        dev.queue.enqueueReadBuffer(scale, CL_TRUE, 0, n * sizeof(cl_ulong), s.data());
+        RadicalInverses ri = radical_inverses(base, n, true, 0x1234567);
+        const std::vector<float>& v = ri.value;
+        const std::vector<cl_ulong>&d = ri.digits, &s = ri.scale;
         std::set<std::uint64_t> prefixes;
         for (std::size_t i = 0; i < n; ++i) {
             ASSERT_EQ(s[i], n) << "base " << base;

@@ -58,74 +58,63 @@ def to8(x):
     return int(round(clamp01(x) * 255.0))
 
 
+def texels(size, texel):
+    """A size x size image, row by row from the top: texel(i, j, u, v) at column i, row j,
+    with (u, v) the texel centre in [0, 1]^2."""
+    return [[texel(i, j, (i + 0.5) / size, (j + 0.5) / size) for i in range(size)] for j in range(size)]
+
+
+def srgb8(rgb):
+    """Linear colour to opaque 8-bit sRGB-encoded texels (the way images hold colour)."""
+    return tuple(to8(c ** (1 / 2.2)) for c in rgb) + (255,)
+
+
 def normal_map(size, height, scale, bits=8):
     """Tangent-space normals of a height field h(u, v) (u right, v down the image), as glTF
     encodes them: +X along +u, +Y up the image (along -v), +Z out of the surface."""
     top = 255 if bits == 8 else 65535
-    rows = []
     d = 1.0 / size
-    for j in range(size):
-        row = []
-        for i in range(size):
-            u, v = (i + 0.5) / size, (j + 0.5) / size
-            dh_du = (height(u + d, v) - height(u - d, v)) / (2 * d)
-            dh_dv = (height(u, v + d) - height(u, v - d)) / (2 * d)
-            n = (-scale * dh_du, scale * dh_dv, 1.0)
-            length = math.sqrt(sum(c * c for c in n))
-            row.append(tuple(int(round((c / length * 0.5 + 0.5) * top)) for c in n) + (top,))
-        rows.append(row)
-    return rows
+
+    def texel(i, j, u, v):
+        dh_du = (height(u + d, v) - height(u - d, v)) / (2 * d)
+        dh_dv = (height(u, v + d) - height(u, v - d)) / (2 * d)
+        n = (-scale * dh_du, scale * dh_dv, 1.0)
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(int(round((c / length * 0.5 + 0.5) * top)) for c in n) + (top,)
+    return texels(size, texel)
+
+
+def tiles_grout(u, v):
+    """Distance to the nearest grout line of the 2 x 2 tiles, in tile widths."""
+    tu, tv = (u * 2) % 1.0, (v * 2) % 1.0
+    return min(tu, tv, 1 - tu, 1 - tv)
 
 
 def tiles_base(size):
     """Four tiles per texture (2 x 2) in two terracotta tones, with light grout."""
-    rows = []
-    for j in range(size):
-        row = []
-        for i in range(size):
-            u, v = (i + 0.5) / size, (j + 0.5) / size
-            tu, tv = (u * 2) % 1.0, (v * 2) % 1.0
-            if min(tu, tv, 1 - tu, 1 - tv) < 0.06:
-                rgb = (0.82, 0.80, 0.74)
-            elif (int(u * 2) + int(v * 2)) % 2 == 0:
-                rgb = (0.70, 0.36, 0.22)
-            else:
-                rgb = (0.52, 0.30, 0.20)
-            # sRGB-encode (the file holds colour the way images do)
-            row.append(tuple(to8(c ** (1 / 2.2)) for c in rgb) + (255,))
-        rows.append(row)
-    return rows
+    def texel(i, j, u, v):
+        if tiles_grout(u, v) < 0.06:
+            return srgb8((0.82, 0.80, 0.74))
+        if (int(u * 2) + int(v * 2)) % 2 == 0:
+            return srgb8((0.70, 0.36, 0.22))
+        return srgb8((0.52, 0.30, 0.20))
+    return texels(size, texel)
 
 
 def tiles_height(u, v):
-    tu, tv = (u * 2) % 1.0, (v * 2) % 1.0
-    edge = min(tu, tv, 1 - tu, 1 - tv)
-    return -0.02 * clamp01(1.0 - edge / 0.06)  # grooves sink towards the grout lines
+    return -0.02 * clamp01(1.0 - tiles_grout(u, v) / 0.06)  # grooves sink towards the grout lines
 
 
 def tiles_metallic_roughness(size):
     """G = roughness (tiles 0.3, grout 1), B = metallic (0); R unused."""
-    rows = []
-    for j in range(size):
-        row = []
-        for i in range(size):
-            u, v = (i + 0.5) / size, (j + 0.5) / size
-            tu, tv = (u * 2) % 1.0, (v * 2) % 1.0
-            grout = min(tu, tv, 1 - tu, 1 - tv) < 0.06
-            row.append((0, to8(1.0 if grout else 0.3), 0, 255))
-        rows.append(row)
-    return rows
+    return texels(size, lambda i, j, u, v: (0, to8(1.0 if tiles_grout(u, v) < 0.06 else 0.3), 0, 255))
 
 
 def wall_pattern(size):
-    rows = []
-    for j in range(size):
-        row = []
-        for i in range(size):
-            dark = (i + j) % 3 == 0 or (i == j)
-            row.append((90, 90, 96, 255) if dark else (235, 230, 220, 255))
-        rows.append(row)
-    return rows
+    def texel(i, j, u, v):
+        dark = (i + j) % 3 == 0 or (i == j)
+        return (90, 90, 96, 255) if dark else (235, 230, 220, 255)
+    return texels(size, texel)
 
 
 def hammered_height(u, v):
@@ -141,11 +130,10 @@ def hammered_height(u, v):
 
 
 def sphere_metallic_roughness(size):
-    rows = []
-    for j in range(size):
+    def texel(i, j, u, v):
         band = (j * 6 // size) % 2
-        rows.append([(0, to8(0.25 if band else 0.5), 255 if band else 0, 255)] * size)
-    return rows
+        return (0, to8(0.25 if band else 0.5), 255 if band else 0, 255)
+    return texels(size, texel)
 
 
 def rivets_height(u, v):
@@ -160,33 +148,18 @@ def rivets_height(u, v):
 
 
 def box_base(size):
-    rows = []
-    for j in range(size):
-        row = []
-        for i in range(size):
-            stripe = ((i + j) // 4) % 2
-            row.append((40, 70, 140, 255) if stripe else (60, 110, 190, 255))
-        rows.append(row)
-    return rows
+    return texels(size, lambda i, j, u, v: (40, 70, 140, 255) if ((i + j) // 4) % 2 else (60, 110, 190, 255))
 
 
 def light_emission(size):
     """A warm disc on a dim grid; the edge texels are dark so CLAMP_TO_EDGE shows."""
-    rows = []
-    for j in range(size):
-        row = []
-        for i in range(size):
-            u, v = (i + 0.5) / size, (j + 0.5) / size
-            r = math.hypot(u - 0.5, v - 0.5)
-            if r < 0.3:
-                rgb = (1.0, 0.85, 0.6)
-            elif i % 8 == 0 or j % 8 == 0:
-                rgb = (0.35, 0.35, 0.4)
-            else:
-                rgb = (0.12, 0.12, 0.15)
-            row.append(tuple(to8(c ** (1 / 2.2)) for c in rgb) + (255,))
-        rows.append(row)
-    return rows
+    def texel(i, j, u, v):
+        if math.hypot(u - 0.5, v - 0.5) < 0.3:
+            return srgb8((1.0, 0.85, 0.6))
+        if i % 8 == 0 or j % 8 == 0:
+            return srgb8((0.35, 0.35, 0.4))
+        return srgb8((0.12, 0.12, 0.15))
+    return texels(size, texel)
 
 
 # ---------------------------------------------------------------------------------------

@@ -1,5 +1,7 @@
 #include "common/staged_files.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <unistd.h>
 
@@ -8,6 +10,23 @@
 namespace pathcl {
 
 namespace fs = std::filesystem;
+
+std::string lowercase_extension(const std::string& path)
+{
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+void check_output_location(const std::string& path)
+{
+    fs::path dir = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        throw Error(path + ": directory " + dir.string() + " does not exist");
+    if (fs::is_directory(path, ec))
+        throw Error(path + ": is a directory");
+}
 
 StagedFiles::~StagedFiles()
 {

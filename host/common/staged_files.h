@@ -8,6 +8,13 @@
 
 namespace pathcl {
 
+// The extension of path in lower case, with its dot (".exr"); "" when it has none.
+std::string lowercase_extension(const std::string& path);
+
+// Throws pathcl::Error naming path when its directory does not exist or path itself is
+// a directory: the checks every output makes before any work is done.
+void check_output_location(const std::string& path);
+
 class StagedFiles {
 public:
     StagedFiles() = default;

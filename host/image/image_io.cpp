@@ -1,6 +1,5 @@
 #include "image/image_io.h"
 
-#include <algorithm>
 #include <filesystem>
 
 #include <OpenImageIO/imagebuf.h>
@@ -18,26 +17,14 @@ using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
-std::string extension_of(const std::string& path)
-{
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 } // namespace
 
 void check_output_path(const std::string& path)
 {
-    std::string ext = extension_of(path);
+    std::string ext = lowercase_extension(path);
     if (ext != ".exr" && ext != ".png")
         throw Error(path + ": output must be .exr or .png");
-    fs::path dir = fs::path(path).parent_path();
-    std::error_code ec;
-    if (!dir.empty() && !fs::is_directory(dir, ec))
-        throw Error(path + ": directory " + dir.string() + " does not exist");
-    if (fs::is_directory(path, ec))
-        throw Error(path + ": is a directory");
+    check_output_location(path);
 }
 
 void write_image_file(const std::string& file, const std::string& path, const Image& img)
@@ -47,7 +34,7 @@ void write_image_file(const std::string& file, const std::string& path, const Im
     if (pixels == 0 || img.rgb.size() != pixels * 3 || img.variance.size() != pixels * 3)
         throw Error(path + ": internal error: image buffers do not match " + std::to_string(img.width) + "x" +
                     std::to_string(img.height));
-    const bool exr = extension_of(path) == ".exr";
+    const bool exr = lowercase_extension(path) == ".exr";
     const int w = static_cast<int>(img.width), h = static_cast<int>(img.height);
 
     ImageBuf out;

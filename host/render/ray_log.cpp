@@ -1,8 +1,6 @@
 #include "render/ray_log.h"
 
-#include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 
 #include "common/error.h"
@@ -10,20 +8,11 @@
 
 namespace pathcl {
 
-namespace fs = std::filesystem;
-
 void check_ray_log_path(const std::string& path)
 {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext != ".ply")
+    if (lowercase_extension(path) != ".ply")
         throw Error(path + ": --ray-log must be a .ply file");
-    fs::path dir = fs::path(path).parent_path();
-    std::error_code ec;
-    if (!dir.empty() && !fs::is_directory(dir, ec))
-        throw Error(path + ": directory " + dir.string() + " does not exist");
-    if (fs::is_directory(path, ec))
-        throw Error(path + ": is a directory");
+    check_output_location(path);
 }
 
 void write_ray_log_file(const std::string& file, const std::string& path, const std::vector<CameraRayRecord>& rays)
