@@ -21,6 +21,21 @@
 namespace pathcl {
 namespace {
 
+// Renders scene at size x size pixels with spp samples and max_bounces, built with
+// build_options (a fault define, say), and expects no NaN/Inf sample.
+RenderResult render_square(const Scene& scene, std::uint32_t size, std::uint32_t spp, std::uint32_t max_bounces,
+                           const std::string& build_options = "")
+{
+    RenderOptions o;
+    o.width = o.height = size;
+    o.spp = spp;
+    o.max_bounces = max_bounces;
+    o.extra_build_options = build_options;
+    RenderResult r = render(scene, o);
+    EXPECT_EQ(r.stats.bad_samples, 0u);
+    return r;
+}
+
 // Radiance seen by a narrow camera looking straight down at (x, 0, 0) on a floor, lit by
 // a directional light at 45 degrees (towards +x), under a slab 1e-4 above the floor that
 // covers x < 0. One bounce: direct light only.
@@ -40,12 +55,7 @@ std::vector<float> thin_gap_view(double x)
     glm::dquat q = glm::angleAxis(a, glm::dvec3(0, 0, 1)) * look_down;  // then towards +x
     b.add_light_node(b.add_light("directional", glm::vec3(1.0f), 1.0), {0.0, 1.0, 0.0}, {q.x, q.y, q.z, q.w});
     b.add_camera_node(b.add_perspective_camera(0.04), {x, 1e-3, 0.0}, {look_down.x, look_down.y, look_down.z, look_down.w});
-    RenderOptions o;
-    o.width = o.height = 8;
-    o.spp = 4;
-    o.max_bounces = 1;
-    RenderResult r = render(import_gltf(b.model, "thin-gap"), o);
-    EXPECT_EQ(r.stats.bad_samples, 0u);
+    RenderResult r = render_square(import_gltf(b.model, "thin-gap"), 8, 4, 1);
     return r.image.rgb;
 }
 
@@ -185,13 +195,9 @@ TEST(Robustness, GlassSphereAndSlabInAWhiteFurnaceAreInvisible)
             Scene s = import_gltf(b.model, "glass-furnace");
             s.environment.present = true;
             s.environment.constant = glm::vec3(1.0f);
-            RenderOptions o;
-            o.width = o.height = 16;
-            o.spp = 1024;
-            o.max_bounces = 1000;
-            RenderResult r = render(s, o);
-            EXPECT_EQ(r.stats.bad_samples, 0u);
-            CentreMean m = centre_mean(r, o.spp);
+            const std::uint32_t spp = 1024;
+            RenderResult r = render_square(s, 16, spp, 1000);
+            CentreMean m = centre_mean(r, spp);
             if (roughness == 0.0) {
                 EXPECT_NEAR(m.mean, 1.0, 1e-5);
                 EXPECT_LT(m.stderr_, 1e-5);
@@ -223,12 +229,7 @@ Image lit_sphere(int stacks, int slices)
     glm::dquat q = glm::normalize(glm::dquat(1.0 + glm::dot(from, to), axis.x, axis.y, axis.z));
     b.add_light_node(b.add_light("directional", glm::vec3(3.0f), 1.0), {3.0, 1.0, 0.5}, {q.x, q.y, q.z, q.w});
     b.add_camera_node(b.add_perspective_camera(0.6), {0.0, 0.0, 4.0});
-    RenderOptions o;
-    o.width = o.height = 64;
-    o.spp = 16;
-    o.max_bounces = 1;
-    RenderResult r = render(import_gltf(b.model, "terminator"), o);
-    EXPECT_EQ(r.stats.bad_samples, 0u);
+    RenderResult r = render_square(import_gltf(b.model, "terminator"), 64, 16, 1);
     return r.image;
 }
 
@@ -299,12 +300,8 @@ TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
     plastic.roughness = 0.4;
     object(plastic, {0.7, -0.7, 0.0});
     b.add_camera_node(b.add_perspective_camera(1.2), {0.0, 0.0, 3.0});
-    RenderOptions o;
-    o.width = o.height = 32;
-    o.spp = 512;
-    o.max_bounces = 1000;
-    RenderResult r = render(import_gltf(b.model, "closed-furnace"), o);
-    EXPECT_EQ(r.stats.bad_samples, 0u);
+    const std::uint32_t spp = 512;
+    RenderResult r = render_square(import_gltf(b.model, "closed-furnace"), 32, spp, 1000);
     // 8x8 tiles against 1, with a Šidák-corrected threshold for the 16 tiles.
     const double z_max = sidak_z_threshold(0.01, 16);
     for (int ty = 0; ty < 4; ++ty)
@@ -314,7 +311,7 @@ TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
                 for (int x = tx * 8; x < tx * 8 + 8; ++x) {
                     std::size_t i = (static_cast<std::size_t>(y) * 32 + x) * 3 + 1;
                     sum += r.image.rgb[i];
-                    var += r.image.variance[i] / static_cast<double>(o.spp);
+                    var += r.image.variance[i] / static_cast<double>(spp);
                 }
             double mean = sum / 64.0, se = std::sqrt(var) / 64.0;
             EXPECT_LT(se, 0.01) << "tile " << tx << "," << ty;
@@ -346,12 +343,7 @@ TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
     b.add_light_node(b.add_light("point", glm::vec3(1.0f), 1e4), {0.0, 100.0, 0.0});
     const std::vector<double> look_down = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
     b.add_camera_node(b.add_perspective_camera(1e-3), {0.0, 3.0, 0.0}, look_down);
-    RenderOptions o;
-    o.width = o.height = 4;
-    o.spp = 1;
-    o.max_bounces = 1;
-    RenderResult r = render(import_gltf(b.model, "lamp-shade"), o);
-    EXPECT_EQ(r.stats.bad_samples, 0u);
+    RenderResult r = render_square(import_gltf(b.model, "lamp-shade"), 4, 1, 1);
     for (float v : r.image.rgb)
         EXPECT_EQ(v, 0.0f) << "light passed the shade";
 }
@@ -386,13 +378,7 @@ Image concentric_spheres_view(bool from_inside, int shells, const std::string& b
         b.add_camera_node(b.add_perspective_camera(1.6), {0.0, 0.0, 0.0});
     else
         b.add_camera_node(b.add_perspective_camera(0.6), {0.0, 0.0, 4.0});
-    RenderOptions o;
-    o.width = o.height = 32;
-    o.spp = 16;
-    o.max_bounces = 2;
-    o.extra_build_options = build_options;
-    RenderResult r = render(import_gltf(b.model, "concentric-spheres"), o);
-    EXPECT_EQ(r.stats.bad_samples, 0u);
+    RenderResult r = render_square(import_gltf(b.model, "concentric-spheres"), 32, 16, 2, build_options);
     return r.image;
 }
 
