@@ -74,6 +74,25 @@ class Builder:
         self.blob = bytearray()
         self.accessors, self.views, self.meshes, self.nodes = [], [], [], []
 
+    def document(self, generator, scene_name, materials, yfov, extensions_used, scene_extras=None):
+        """The glTF document: the nodes added so far make up the scene (camera 0 is a
+        square perspective camera of vertical field of view yfov); the buffer is embedded."""
+        scene = {"name": scene_name, "nodes": list(range(len(self.nodes)))}
+        if scene_extras:
+            scene["extras"] = scene_extras
+        return {
+            "asset": {"version": "2.0", "generator": generator},
+            "extensionsUsed": extensions_used,
+            "scene": 0,
+            "scenes": [scene],
+            "nodes": self.nodes, "meshes": self.meshes, "materials": materials,
+            "cameras": [{"type": "perspective", "perspective": {
+                "yfov": yfov, "aspectRatio": 1.0, "znear": 0.01}}],
+            "accessors": self.accessors, "bufferViews": self.views,
+            "buffers": [{"byteLength": len(self.blob), "uri": "data:application/octet-stream;base64,"
+                         + base64.b64encode(bytes(self.blob)).decode("ascii")}],
+        }
+
     def add_view(self, data, target):
         while len(self.blob) % 4:
             self.blob.append(0)
@@ -116,6 +135,12 @@ class Builder:
             "attributes": attributes,
             "indices": len(self.accessors) - 1, "material": material, "mode": 4}]})
         self.nodes.append({"name": name, "mesh": len(self.meshes) - 1})
+
+def write_gltf(path, gltf):
+    with open(path, "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
 
 def sphere_quads(cx, cy, cz, r, stacks=12, slices=24):
     """Quads (4 points, counter-clockwise seen from outside) of a UV sphere, in the
@@ -256,23 +281,11 @@ def main():
     # glTF cameras look along local -Z; a half turn about +Y makes that world +Z.
     b.nodes.append({"name": "camera", "camera": 0, "translation": [0.278, 0.273, -0.800],
                     "rotation": [0.0, 1.0, 0.0, 0.0]})
-    gltf = {
-        "asset": {"version": "2.0", "generator": "pathcl tools/make_cornell_box.py"},
-        "extensionsUsed": extensions_used,
-        "scene": 0,
-        "scenes": [{"name": "cornell-box" + (f"-{variant}" if variant else ""), "nodes": list(range(len(b.nodes)))}],
-        "nodes": b.nodes, "meshes": b.meshes, "materials": materials,
-        "cameras": [{"type": "perspective", "perspective": {
-            "yfov": yfov, "aspectRatio": 1.0, "znear": 0.01}}],
-        "accessors": b.accessors, "bufferViews": b.views,
-        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
-                     + base64.b64encode(bytes(b.blob)).decode("ascii")}],
-    }
+    gltf = b.document("pathcl tools/make_cornell_box.py", "cornell-box" + (f"-{variant}" if variant else ""),
+                      materials, yfov, extensions_used)
     if lights:
         gltf["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
-    with open(out, "w") as f:
-        json.dump(gltf, f, indent=1)
-        f.write("\n")
+    write_gltf(out, gltf)
 
 if __name__ == "__main__":
     main()

@@ -10,7 +10,6 @@ normals).
 
 Usage: python3 tools/make_material_spheres.py [OUT_DIR]
 """
-import json
 import math
 import os
 import sys
@@ -53,21 +52,9 @@ def main():
     look = tuple(t - e for t, e in zip(target, eye))
     b.nodes.append({"name": "camera", "camera": 0, "translation": list(eye),
                     "rotation": cb.quat_from_to((0.0, 0.0, -1.0), look)})
-    gltf = {
-        "asset": {"version": "2.0", "generator": "pathcl tools/make_material_spheres.py"},
-        "extensionsUsed": ["KHR_materials_specular"],
-        "scene": 0,
-        "scenes": [{"name": "material-spheres", "nodes": list(range(len(b.nodes))),
-                    "extras": {"environment": {"uri": "sky.hdr", "strength": 0.25}}}],
-        "nodes": b.nodes, "meshes": b.meshes, "materials": mats,
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.75, "aspectRatio": 1.0, "znear": 0.01}}],
-        "accessors": b.accessors, "bufferViews": b.views,
-        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
-                     + cb.base64.b64encode(bytes(b.blob)).decode("ascii")}],
-    }
-    with open(os.path.join(out_dir, "material-spheres.gltf"), "w") as f:
-        json.dump(gltf, f, indent=1)
-        f.write("\n")
+    gltf = b.document("pathcl tools/make_material_spheres.py", "material-spheres", mats, 0.75,
+                      ["KHR_materials_specular"], {"environment": {"uri": "sky.hdr", "strength": 0.25}})
+    cb.write_gltf(os.path.join(out_dir, "material-spheres.gltf"), gltf)
 
 
 if __name__ == "__main__":

@@ -61,22 +61,9 @@ def main():
     b.add_mesh("block_front", [cb.oriented(block, (450, 300, 0))], 2)
     b.nodes.append({"name": "camera", "camera": 0, "translation": [0.0, 0.9, 3.2],
                     "rotation": [-math.sin(math.radians(6)), 0.0, 0.0, math.cos(math.radians(6))]})
-    gltf = {
-        "asset": {"version": "2.0", "generator": "pathcl tools/make_sky_scene.py"},
-        "extensionsUsed": ["KHR_materials_specular"],
-        "scene": 0,
-        "scenes": [{"name": "sky-spheres", "nodes": list(range(len(b.nodes))),
-                    "extras": {"environment": {"uri": "sky.hdr", "strength": 1.0}}}],
-        "nodes": b.nodes, "meshes": b.meshes, "materials": mats,
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "aspectRatio": 1.0, "znear": 0.01}}],
-        "accessors": b.accessors, "bufferViews": b.views,
-        "buffers": [{"byteLength": len(b.blob), "uri": "data:application/octet-stream;base64,"
-                     + cb.base64.b64encode(bytes(b.blob)).decode("ascii")}],
-    }
-    import json
-    with open(os.path.join(out_dir, "sky-spheres.gltf"), "w") as f:
-        json.dump(gltf, f, indent=1)
-        f.write("\n")
+    gltf = b.document("pathcl tools/make_sky_scene.py", "sky-spheres", mats, 0.7,
+                      ["KHR_materials_specular"], {"environment": {"uri": "sky.hdr", "strength": 1.0}})
+    cb.write_gltf(os.path.join(out_dir, "sky-spheres.gltf"), gltf)
 
 
 if __name__ == "__main__":
