@@ -13,6 +13,7 @@
 
 #include "render/layer_albedo.h"
 #include "shared_types.h"
+#include "support/reference_bsdf.h"
 
 namespace pathcl {
 namespace {
@@ -32,12 +33,9 @@ double fresnel(double c, double eta)
 // different estimator (no visible normals, no change of variables) for the same integral.
 LayerAlbedo brute_force(double mu, double roughness, double eta, int n)
 {
-    double a = roughness * roughness, a2 = a * a;
+    double a = roughness * roughness;
     glm::dvec3 wo(std::sqrt(1.0 - mu * mu), 0.0, mu);
-    auto g1 = [&](const glm::dvec3& w) {
-        double t2 = (1.0 - w.z * w.z) / (w.z * w.z);
-        return 2.0 / (1.0 + std::sqrt(1.0 + a2 * t2));
-    };
+    auto g1 = [&](const glm::dvec3& w) { return test::ggx_g1(w, a); };
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     double e = 0.0, b = 0.0;
@@ -46,9 +44,7 @@ LayerAlbedo brute_force(double mu, double roughness, double eta, int n)
         double z = u(rng), phi = 2.0 * kPi * u(rng), r = std::sqrt(1.0 - z * z);
         glm::dvec3 wi(r * std::cos(phi), r * std::sin(phi), z);
         glm::dvec3 h = glm::normalize(wo + wi);
-        double c2 = h.z * h.z, k = a2 * c2 + (1.0 - c2);
-        double d = a2 / (kPi * k * k);
-        double f_cos = d * g1(wo) * g1(wi) / (4.0 * mu); // f cos_i, Fresnel 1
+        double f_cos = test::ggx_d(h, a) * g1(wo) * g1(wi) / (4.0 * mu); // f cos_i, Fresnel 1
         double w = f_cos * 2.0 * kPi;                      // / uniform pdf 1 / (2 pi)
         e += w;
         b += w * std::clamp((fresnel(glm::dot(wo, h), eta) - f0) / (1.0 - f0), 0.0, 1.0);
@@ -76,10 +72,7 @@ std::pair<double, double> walter_estimate(double mu, double roughness, double et
 {
     double a = roughness * roughness, a2 = a * a;
     glm::dvec3 wo(std::sqrt(1.0 - mu * mu), 0.0, mu);
-    auto g1 = [&](const glm::dvec3& w) {
-        double t2 = (1.0 - w.z * w.z) / (w.z * w.z);
-        return 2.0 / (1.0 + std::sqrt(1.0 + a2 * t2));
-    };
+    auto g1 = [&](const glm::dvec3& w) { return test::ggx_g1(w, a); };
     std::mt19937_64 rng(2);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     double sum = 0.0, sum_sq = 0.0;

@@ -25,7 +25,17 @@ double mean3(const glm::dvec3& v)
     return (v.x + v.y + v.z) / 3.0;
 }
 
-// GGX (Trowbridge-Reitz) normal distribution and Smith's G1 for alpha.
+// Heitz's distribution of visible normals: G1(wo) max(0, wo.m) D(m) / wo.z.
+double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double alpha)
+{
+    double c = glm::dot(wo, m);
+    if (c <= 0.0 || wo.z <= 0.0)
+        return 0.0;
+    return ggx_g1(wo, alpha) * c * ggx_d(m, alpha) / wo.z;
+}
+
+} // namespace
+
 double ggx_d(const glm::dvec3& m, double alpha)
 {
     if (m.z <= 0.0)
@@ -44,17 +54,6 @@ double ggx_g1(const glm::dvec3& w, double alpha)
     double lambda = 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0);
     return 1.0 / (1.0 + lambda);
 }
-
-// Heitz's distribution of visible normals: G1(wo) max(0, wo.m) D(m) / wo.z.
-double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double alpha)
-{
-    double c = glm::dot(wo, m);
-    if (c <= 0.0 || wo.z <= 0.0)
-        return 0.0;
-    return ggx_g1(wo, alpha) * c * ggx_d(m, alpha) / wo.z;
-}
-
-} // namespace
 
 ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
 {

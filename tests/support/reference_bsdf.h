@@ -13,6 +13,10 @@
 
 namespace pathcl::test {
 
+// GGX (Trowbridge-Reitz) normal distribution D(m) and Smith's masking G1(w) for alpha.
+double ggx_d(const glm::dvec3& m, double alpha);
+double ggx_g1(const glm::dvec3& w, double alpha);
+
 struct ReferenceBsdf {
     glm::dvec3 base_color{1.0}, specular_color{1.0};
     double specular = 1.0, metallic = 0.0, alpha = 1.0, transmission = 0.0;
