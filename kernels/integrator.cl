@@ -88,13 +88,7 @@ __kernel void trace_paths(__global const Ray* rays, __global const BvhNode* node
     env.texels = env_texels;
     env.marginal = env_marginal;
     env.conditional = env_conditional;
-    TextureBuffers tex;
-    tex.texels = texels;
-    tex.images = texture_images;
-    tex.views = texture_views;
-    tex.texcoords = texcoords;
-    tex.tangents = tangents;
-    tex.colors = colors;
+    TextureBuffers tex = texture_buffers(texels, texture_images, texture_views, texcoords, tangents, colors);
     uint x = get_global_id(0);
     uint y = get_global_id(1);
     if (x >= frame.width || y >= frame.height)

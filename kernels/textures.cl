@@ -31,6 +31,22 @@ typedef struct {
     __global const TriangleColors* colors;
 } TextureBuffers;
 
+static inline TextureBuffers texture_buffers(__global const uint* texels, __global const TextureImage* images,
+                                             __global const TextureView* views,
+                                             __global const TriangleTexcoords* texcoords,
+                                             __global const TriangleTangents* tangents,
+                                             __global const TriangleColors* colors)
+{
+    TextureBuffers tex;
+    tex.texels = texels;
+    tex.images = images;
+    tex.views = views;
+    tex.texcoords = texcoords;
+    tex.tangents = tangents;
+    tex.colors = colors;
+    return tex;
+}
+
 #ifdef PATHCL_HAS_TEXTURES
 
 /* sRGB (IEC 61966-2-1) decoding of the 8-bit value i, i / 255 -> linear, each entry the

@@ -8,23 +8,11 @@
         __global const TriangleTexcoords *texcoords, __global const TriangleTangents *tangents,           \
         __global const TriangleColors *colors
 
-static inline TextureBuffers test_texture_buffers(TEXTURE_BUFFER_ARGS)
-{
-    TextureBuffers tex;
-    tex.texels = texels;
-    tex.images = images;
-    tex.views = views;
-    tex.texcoords = texcoords;
-    tex.tangents = tangents;
-    tex.colors = colors;
-    return tex;
-}
-
 /* One lookup per work-item: query = (u, v, as_float(view index), unused). */
 __kernel void test_texture_sample(TEXTURE_BUFFER_ARGS, __global const float4* queries, __global float4* out)
 {
     uint i = get_global_id(0);
-    TextureBuffers tex = test_texture_buffers(texels, images, views, texcoords, tangents, colors);
+    TextureBuffers tex = texture_buffers(texels, images, views, texcoords, tangents, colors);
     float4 q = queries[i];
     out[i] = texture_sample(&tex, as_int(q.z), q.xy);
 }
@@ -40,7 +28,7 @@ __kernel void test_material_inputs(TEXTURE_BUFFER_ARGS, __global const Triangle*
                                    __global float4* out_params)
 {
     uint i = get_global_id(0);
-    TextureBuffers tex = test_texture_buffers(texels, images, views, texcoords, tangents, colors);
+    TextureBuffers tex = texture_buffers(texels, images, views, texcoords, tangents, colors);
     Hit hit;
     hit.b1 = hits[i].x;
     hit.b2 = hits[i].y;
@@ -63,7 +51,7 @@ __kernel void test_textured_light_sample(TEXTURE_BUFFER_ARGS, __global const Lig
                                          uint seed, __global float4* out, __global float4* radiance_out)
 {
     uint i = get_global_id(0);
-    TextureBuffers tex = test_texture_buffers(texels, images, views, texcoords, tangents, colors);
+    TextureBuffers tex = texture_buffers(texels, images, views, texcoords, tangents, colors);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
     EnvironmentBuffers env; /* no environment in these tests */
     env.texels = 0;

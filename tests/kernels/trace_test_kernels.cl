@@ -84,13 +84,7 @@ __kernel void test_light_sample(__global const Light* lights, uint count, float4
     env.texels = env_texels;
     env.marginal = env_marginal;
     env.conditional = env_conditional;
-    TextureBuffers tex;
-    tex.texels = texels;
-    tex.images = texture_images;
-    tex.views = texture_views;
-    tex.texcoords = texcoords;
-    tex.tangents = 0;
-    tex.colors = 0;
+    TextureBuffers tex = texture_buffers(texels, texture_images, texture_views, texcoords, 0, 0);
     LightSample ls = light_sample(lights, count, &env, &tex, ref.xyz, &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
