@@ -177,22 +177,23 @@ RenderResult render(const Scene& scene, const RenderOptions& opt)
         log_ys = axis(opt.height);
     }
     std::vector<Ray> logged(opt.ray_log_samples > 0 ? pixels : 0);
+    // The pass parameters: only the sample index changes from pass to pass.
+    FrameParams frame{};
+    frame.width = opt.width;
+    frame.height = opt.height;
+    frame.seed = opt.seed;
+    frame.max_bounces = opt.max_bounces;
+    frame.light_count = static_cast<pcl_uint>(ds.lights.size());
+    frame.strategy = opt.strategy;
+    frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
+    frame.environment = ds.environment_light;
+    frame.sampler = opt.sampler;
+    frame.spp = spp;
     auto start = std::chrono::steady_clock::now();
     try {
         for (std::uint32_t s = 0; s < spp; ++s) {
             DeviceRender& dr = *devices[s % devices.size()];
-            FrameParams frame{};
-            frame.width = opt.width;
-            frame.height = opt.height;
             frame.sample_index = s;
-            frame.seed = opt.seed;
-            frame.max_bounces = opt.max_bounces;
-            frame.light_count = static_cast<pcl_uint>(ds.lights.size());
-            frame.strategy = opt.strategy;
-            frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
-            frame.environment = ds.environment_light;
-            frame.sampler = opt.sampler;
-            frame.spp = spp;
             dr.camera_kernel.setArg(2, frame);
             dr.path_kernel.setArg(kPathFrameArg, frame);
             const cl::NDRange global(round_up(opt.width, dr.tile.x), round_up(opt.height, dr.tile.y));
