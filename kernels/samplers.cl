@@ -449,7 +449,7 @@ __kernel void sampler_points(uint type, uint spp, uint seed, uint dim0, uint dim
 #define PI_F 3.14159265358979324f
 
 /* sin x (returned) and cos x for |x| <= pi/4, by the minimax polynomials of Cephes'
- * sinf and cosf (within 2 ulp, tested). PoCL's built-in sincos reduces its argument in
+ * sinf and cosf (within 1 ulp, tested). PoCL's built-in sincos reduces its argument in
  * an out-of-line call first (5 % of a Cornell box render's profile; without it the
  * render is 9 % faster); every angle a sampler warp needs is a known fraction of a turn,
  * which reduces exactly by symmetry instead. */
