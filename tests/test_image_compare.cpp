@@ -89,5 +89,25 @@ TEST(ImageCompare, SizeMismatchThrows)
     EXPECT_THROW(compare_images(synthetic(4, 4, 8, 0, 1), synthetic(4, 5, 8, 0, 1)), std::exception);
 }
 
+TEST(ImageCompare, BitwiseFindsEveryDifferenceDownToOneUlpAndTheSampleCount)
+{
+    Image a = synthetic(6, 5, 8, 0, 1), b = a;
+    EXPECT_TRUE(compare_bitwise(a, b).identical());
+    EXPECT_EQ(compare_bitwise(a, b).values, 6u * 5u * 6u);
+    b.variance[40] = std::nextafter(b.variance[40], 1.0f); // one ulp in one variance value
+    BitwiseReport r = compare_bitwise(a, b);
+    EXPECT_FALSE(r.identical());
+    EXPECT_EQ(r.differing, 1u);
+    EXPECT_EQ(r.first_pixel, 40u / 3u);
+    b = a;
+    b.rgb[0] = -0.0f * b.rgb[0]; // a sign bit alone
+    a.rgb[0] = 0.0f;
+    EXPECT_EQ(compare_bitwise(a, b).differing, 1u);
+    b = a;
+    b.spp = a.spp + 1;
+    EXPECT_FALSE(compare_bitwise(a, b).identical());
+    EXPECT_THROW(compare_bitwise(a, synthetic(6, 4, 8, 0, 1)), std::exception);
+}
+
 } // namespace
 } // namespace pathcl

@@ -194,8 +194,13 @@ int run_bench(const std::string& scene_path, pathcl::RenderOptions opt, int runs
     return 0;
 }
 
-int run_compare(const std::string& a, const std::string& b, const pathcl::CompareOptions& opt)
+int run_compare(const std::string& a, const std::string& b, const pathcl::CompareOptions& opt, bool bitwise)
 {
+    if (bitwise) {
+        pathcl::BitwiseReport r = pathcl::compare_bitwise(pathcl::read_image(a), pathcl::read_image(b));
+        std::cout << r.summary();
+        return r.identical() ? 0 : 1;
+    }
     pathcl::CompareReport r = pathcl::compare_images(pathcl::read_image(a), pathcl::read_image(b), opt);
     std::cout << r.summary();
     return r.passed ? 0 : 1;
@@ -361,10 +366,13 @@ int main(int argc, char** argv)
     compare->add_option("--alpha", cmp.alpha, "family-wise significance level")->capture_default_str();
     compare->add_option("--max-fail-fraction", cmp.max_fail_fraction, "tolerated failing fraction per scale")
         ->capture_default_str();
-    bool welch = false;
+    bool welch = false, bitwise = false;
     compare->add_flag("--welch", welch,
                       "separate variances, for renders by different estimators (default: pooled, for a render "
                       "against a reference made by the same estimator)");
+    compare->add_flag("--bitwise", bitwise,
+                      "instead: are the pixel data (means, variances, spp) identical bit for bit? (reproducibility, "
+                      "refactors)");
 
     try {
         app.parse(argc, argv);
@@ -406,7 +414,7 @@ int main(int argc, char** argv)
         }
         if (compare->parsed()) {
             cmp.pooled_variance = !welch;
-            return run_compare(cmp_a, cmp_b, cmp);
+            return run_compare(cmp_a, cmp_b, cmp, bitwise);
         }
         return run_devices();
     } catch (const pathcl::Error& e) {

@@ -1,6 +1,8 @@
 #include "image/image_compare.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "common/error.h"
@@ -154,6 +156,39 @@ std::string CompareReport::summary() const
                   rmse[2], rmse_all);
     out += line;
     out += passed ? "PASS\n" : "FAIL\n";
+    return out;
+}
+
+BitwiseReport compare_bitwise(const Image& a, const Image& b)
+{
+    if (a.width != b.width || a.height != b.height)
+        throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+                    std::to_string(b.width) + "x" + std::to_string(b.height));
+    BitwiseReport r;
+    r.same_spp = a.spp == b.spp;
+    auto scan = [&](const std::vector<float>& x, const std::vector<float>& y) {
+        for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+            ++r.values;
+            if (std::bit_cast<std::uint32_t>(x[i]) != std::bit_cast<std::uint32_t>(y[i])) {
+                if (r.differing == 0)
+                    r.first_pixel = i / 3;
+                ++r.differing;
+            }
+        }
+    };
+    scan(a.rgb, b.rgb);
+    scan(a.variance, b.variance);
+    return r;
+}
+
+std::string BitwiseReport::summary() const
+{
+    std::string out = std::to_string(values) + " values compared, " + std::to_string(differing) + " differ";
+    if (differing > 0)
+        out += " (first at pixel " + std::to_string(first_pixel) + ")";
+    if (!same_spp)
+        out += ", sample counts differ";
+    out += identical() ? "\nIDENTICAL\n" : "\nDIFFERENT\n";
     return out;
 }
 

@@ -49,6 +49,20 @@ struct CompareReport {
 // Throws pathcl::Error if sizes differ or an image lacks a sample count.
 CompareReport compare_images(const Image& a, const Image& b, const CompareOptions& options = {});
 
+// Bit-for-bit comparison of the pixel data (means, per-sample variances, sample count),
+// for refactors that must not change arithmetic and for reproducibility checks.
+struct BitwiseReport {
+    std::size_t values = 0;         // floats compared (means and variances)
+    std::size_t differing = 0;      // of which not bit-identical
+    std::size_t first_pixel = 0;    // index of the first differing pixel, when differing > 0
+    bool same_spp = true;
+    bool identical() const { return differing == 0 && same_spp; }
+    std::string summary() const;
+};
+
+// Throws pathcl::Error if the sizes differ.
+BitwiseReport compare_bitwise(const Image& a, const Image& b);
+
 // Two-sided standard-normal critical value for a Šidák-corrected family of `tests`.
 double sidak_z_threshold(double alpha, std::size_t tests);
 
