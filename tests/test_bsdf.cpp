@@ -1,4 +1,4 @@
-// The BSDFs of kernels/bsdf.cl, through test kernels that call the real code
+// The BSDFs of kernels/closure/, through test kernels that call the real code
 // (tests/kernels/bsdf_test_kernels.cl): chi-square tests of every sampling routine
 // against an independent double-precision pdf (tests/support/reference_bsdf.h), eval and
 // pdf against that reference, weight = f cos / pdf, reciprocity, white furnaces, the
@@ -27,7 +27,7 @@ constexpr int kChiSquareTests = 18;
 
 const cl::Program& full_program()
 {
-    static cl::Program p = test::build_test_program("bsdf_test_kernels.cl", "-DPATHCL_HAS_GLOSSY -DPATHCL_HAS_TRANSMISSION");
+    static cl::Program p = test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION);
     return p;
 }
 
@@ -57,8 +57,8 @@ Material make_material(const MaterialSpec& s)
     m.ior = s.ior;
     m.flags = s.thin ? MATERIAL_THIN_WALLED : 0u;
     m.normal_scale = 1.0f;
-    m.base_color_texture = m.metallic_roughness_texture = m.emissive_texture = m.normal_texture = TEXTURE_NONE;
-    m.specular_texture = m.specular_color_texture = m.transmission_texture = TEXTURE_NONE;
+    for (pcl_int& t : m.textures)
+        t = TEXTURE_NONE;
     m.smooth_layer_average = static_cast<float>(smooth_layer_average(s.ior));
     return m;
 }
@@ -123,15 +123,8 @@ Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dv
     cl::Buffer weight(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer eval(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_bsdf_sample");
-    k.setArg(0, m);
-    k.setArg(1, f4(normal));
-    k.setArg(2, f4(wo));
-    k.setArg(3, static_cast<cl_uint>(front_face));
-    k.setArg(4, seed);
-    k.setArg(5, layer_buffer());
-    k.setArg(6, dir_pdf);
-    k.setArg(7, weight);
-    k.setArg(8, eval);
+    set_kernel_args(k, m, f4(normal), f4(wo), static_cast<cl_uint>(front_face), seed, layer_buffer(), dir_pdf, weight,
+                    eval);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     Samples s;
     s.dir_pdf.resize(n);
@@ -159,13 +152,7 @@ std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m,
     cl::Buffer ib(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), i.data());
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_bsdf_eval");
-    k.setArg(0, m);
-    k.setArg(1, f4(normal));
-    k.setArg(2, static_cast<cl_uint>(front_face));
-    k.setArg(3, layer_buffer());
-    k.setArg(4, ob);
-    k.setArg(5, ib);
-    k.setArg(6, out);
+    set_kernel_args(k, m, f4(normal), static_cast<cl_uint>(front_face), layer_buffer(), ob, ib, out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<pcl_float4> r(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), r.data());
@@ -509,11 +496,17 @@ TEST(BsdfEnergy, WhiteMaterialsWithoutLossReflectEverything)
 
 TEST(BsdfEnergy, GltfOwnDiffuseWeightGainsEnergyAndIsCaught)
 {
-    // glTF appendix B weights the diffuse base by 1 - max(F(wo.h)). Compiled in on
-    // purpose (PATHCL_FAULT_GLTF_DIFFUSE_WEIGHT), a white rough plastic reflects 1.30
-    // times what it receives at cos 0.05: the energy tests above must see that.
-    static cl::Program faulty = test::build_test_program(
-        "bsdf_test_kernels.cl", "-DPATHCL_HAS_GLOSSY -DPATHCL_HAS_TRANSMISSION -DPATHCL_FAULT_GLTF_DIFFUSE_WEIGHT");
+    // glTF appendix B weights the diffuse base by 1 - max(F(wo.h)). Patched in on purpose,
+    // a white rough plastic reflects 1.30 times what it receives at cos 0.05: the energy
+    // tests above must see that.
+    const KernelPatch gltf_diffuse_weight{"closure/bsdf_eval.cl",
+                                          "            e.f_cos = p->diffuse_scale * k * wi.z;\n",
+                                          R"(            float3 hf = normalize(wo + wi);
+            e.f_cos = p->base_color * ((1.0f - p->metallic) * (1.0f - p->transmission) *
+                                       (1.0f - max3(fresnel_specular_layer(p, fabs(dot(wo, hf))))) * INV_PI * wi.z);
+)"};
+    static cl::Program faulty = test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION,
+                                                         {gltf_diffuse_weight});
     Albedo a = directional_albedo(faulty, white_plastic(0.3f), 0.05, true, false);
     EXPECT_GT(a.mean.x, 1.0 + 5.0 * a.stderr_.x + kLayerTableError + 0.1);
 }
@@ -601,9 +594,7 @@ TEST(BsdfDelta, GlassOfIorOneIsInvisibleAndMirrorsSkipLightSampling)
     auto is_delta = [&](const MaterialSpec& spec) {
         cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, sizeof(cl_int));
         cl::Kernel k(full_program(), "test_bsdf_is_delta");
-        k.setArg(0, make_material(spec));
-        k.setArg(1, layer_buffer());
-        k.setArg(2, out);
+        set_kernel_args(k, make_material(spec), layer_buffer(), out);
         dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
         cl_int v = 0;
         dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, sizeof v, &v);

@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/device_scene.h"
+#include "support/compiled_scene.h"
 #include "sampling/samplers.h"
 #include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {
@@ -84,13 +84,12 @@ TEST(CameraImport, ThinLensFromNodeExtrasInWorldUnits)
         "lens.gltf");
     EXPECT_EQ(s.camera.aperture, 0.05);
     EXPECT_EQ(s.camera.focus_distance, 3.5);
-    EXPECT_TRUE(scene_features(s).thin_lens);
-    EXPECT_NE(scene_features(s).build_defines().find("-DPATHCL_HAS_THIN_LENS"), std::string::npos);
+    EXPECT_TRUE(kernel_features(s, RenderOptions{}).has(FEATURE_THIN_LENS));
     // Aperture 0 is a pinhole: no lens code compiled.
     Scene p = import_gltf(
         one_camera(false, object({{"aperture", tinygltf::Value(0.0)}, {"focusDistance", tinygltf::Value(3.5)}})).model,
         "pinhole.gltf");
-    EXPECT_FALSE(scene_features(p).thin_lens);
+    EXPECT_FALSE(kernel_features(p, RenderOptions{}).has(FEATURE_THIN_LENS));
 }
 
 TEST(CameraImport, BadThinLensExtrasAreErrors)
@@ -199,7 +198,7 @@ TEST(DeviceCamera, OrthographicKeepsYmagAndTheImageSetsTheWidth)
     SceneCamera cam;
     cam.orthographic = true;
     cam.ymag = 1.5;
-    Camera c = make_device_camera(cam, 300, 100);
+    Camera c = compile_camera(cam, 300, 100);
     EXPECT_EQ(c.type, CAMERA_ORTHOGRAPHIC);
     EXPECT_NEAR(std::hypot(c.up.x, c.up.y, c.up.z), 1.5, 1e-6);
     EXPECT_NEAR(std::hypot(c.right.x, c.right.y, c.right.z), 4.5, 1e-6);
@@ -211,7 +210,7 @@ TEST(DeviceCamera, ThinLensCarriesRadiusAndFocusDistance)
     SceneCamera cam;
     cam.aperture = 0.25;
     cam.focus_distance = 7.0;
-    Camera c = make_device_camera(cam, 64, 64);
+    Camera c = compile_camera(cam, 64, 64);
     EXPECT_EQ(c.type, CAMERA_PERSPECTIVE);
     EXPECT_EQ(c.lens_radius, 0.25f);
     EXPECT_EQ(c.focus_distance, 7.0f);

@@ -14,7 +14,7 @@
 #include "render/renderer.h"
 #include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {

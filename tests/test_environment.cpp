@@ -9,7 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/device_scene.h"
+#include "render/environment.h"
+#include "render/light_distribution.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/chi_square.h"
@@ -105,14 +106,18 @@ std::function<double(const glm::dvec3&)> host_environment_pdf(const EnvironmentM
 std::vector<pcl_float4> sample_environment(const EnvironmentMap& m, double rotation, std::size_t n,
                                            std::vector<pcl_float4>* radiance = nullptr)
 {
-    static cl::Program program = test::build_test_program("trace_test_kernels.cl", "-DPATHCL_HAS_ENVIRONMENT");
+    static cl::Program program = test::build_test_program("trace_test_kernels.cl", FEATURE_ENVIRONMENT);
+    SceneArrays a;
     Light l{};
     l.type = LIGHT_ENVIRONMENT;
-    l.p0 = {static_cast<float>(m.width), static_cast<float>(m.height), static_cast<float>(std::cos(rotation)),
-            static_cast<float>(std::sin(rotation))};
-    l.radiance.w = 1.0f;
-    l.alias_threshold = LIGHT_PICK_GRID;
-    return test::sample_lights_on_device(program, {l}, &m, glm::vec3(0.0f), 77u, n, radiance);
+    l.data.environment = {m.width, m.height, static_cast<float>(std::cos(rotation)),
+                          static_cast<float>(std::sin(rotation))};
+    a.lights = {l};
+    a.light_distribution = build_light_distribution({1.0});
+    a.env_texels = m.texels;
+    a.env_marginal = m.marginal_cdf;
+    a.env_conditional = m.conditional_cdf;
+    return test::sample_lights_on_device(program, a, glm::vec3(0.0f), 77u, n, radiance);
 }
 
 // The texel value a world direction sees (independent of the kernel's lookup).

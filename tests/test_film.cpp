@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "shared_types.h"
+#include "types.h"
 #include "support/device_fixture.h"
 
 namespace pathcl {
@@ -24,7 +24,7 @@ double exact_sum(std::uint32_t count)
     ClDevice& dev = test::test_device();
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, count * sizeof(float));
     cl::Kernel k(program(), "test_film_samples");
-    k.setArg(0, out);
+    set_kernel_args(k, out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(count));
     std::vector<float> samples(count);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(float), samples.data());
@@ -44,12 +44,9 @@ TEST(Film, TenMillionSamplesKeepRelativeErrorBelow1e6)
     cl::Buffer bad(dev.context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, sizeof(cl_uint), &bad0);
     cl::Buffer naive(dev.context, CL_MEM_WRITE_ONLY, sizeof(float));
     cl::Kernel k(program(), "test_film_accumulate");
-    k.setArg(0, film);
-    k.setArg(1, bad);
-    k.setArg(2, count);
+    set_kernel_args(k, film, bad, count);
     cl::Kernel kn(program(), "test_naive_accumulate");
-    kn.setArg(0, naive);
-    kn.setArg(1, count);
+    set_kernel_args(kn, naive, count);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
     dev.queue.enqueueNDRangeKernel(kn, cl::NullRange, cl::NDRange(1));
     FilmPixel px;
@@ -74,8 +71,7 @@ TEST(Film, NonFiniteSamplesAreCountedNotAdded)
     cl::Buffer film(dev.context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, sizeof(FilmPixel), &zero);
     cl::Buffer bad(dev.context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, sizeof(cl_uint), &bad0);
     cl::Kernel k(program(), "test_film_rejects_non_finite");
-    k.setArg(0, film);
-    k.setArg(1, bad);
+    set_kernel_args(k, film, bad);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
     FilmPixel px;
     cl_uint bad_count;

@@ -18,8 +18,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/device_scene.h"
-#include "render/textures.h"
+#include "render/texture_lookup.h"
+#include "support/compiled_scene.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
@@ -166,9 +166,10 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     EXPECT_EQ(s.texcoords[0][0][1], glm::vec2(1.0f, 1.0f));
     EXPECT_EQ(s.texcoords[1][0][2], glm::vec2(1.0f, 1.0f));
     EXPECT_EQ(s.texcoords[1][0][1], glm::vec2(0.0f, 1.0f));
-    EXPECT_TRUE(scene_features(s).textures);
-    EXPECT_TRUE(scene_features(s).normal_maps);
-    EXPECT_FALSE(scene_features(s).vertex_colors);
+    KernelFeatures f = kernel_features(s, RenderOptions{});
+    EXPECT_TRUE(f.has(FEATURE_TEXTURES));
+    EXPECT_TRUE(f.has(FEATURE_NORMAL_MAPS));
+    EXPECT_FALSE(f.has(FEATURE_VERTEX_COLORS));
 }
 
 TEST(GltfTextures, SamplersGiveWrapModesAndFilter)
@@ -259,7 +260,7 @@ TEST(GltfTextures, VertexColorsInEveryAllowedForm)
     add(-1, 8.0f);
     Scene s = import_gltf(b.model, "colors.gltf");
     ASSERT_EQ(s.colors.size(), 5u);
-    EXPECT_TRUE(scene_features(s).vertex_colors);
+    EXPECT_TRUE(kernel_features(s, RenderOptions{}).has(FEATURE_VERTEX_COLORS));
     auto first_color = [&](float x) {
         for (std::size_t i = 0; i < s.triangles.size(); ++i)
             if (std::fabs(s.triangles[i].v[0].x + static_cast<float>(s.render_origin.x) - x) < 1e-4f)
@@ -665,18 +666,19 @@ TEST(DeviceTextures, PacksTexelsAndSharesViews)
     int mesh = q.b.add_mesh(pos, -1, 1);
     q.b.set_attribute(mesh, "TEXCOORD_0", q.b.add_texcoords({{0, 0}, {1, 0}, {0, 1}}));
     q.b.add_root(q.b.add_node(mesh));
-    DeviceScene ds = make_device_scene(import_gltf(q.b.model, "pack.gltf"));
-    EXPECT_EQ(ds.textures.texel_bytes(), 3u * 2u * 4u + 2u * 2u * 8u);
-    ASSERT_EQ(ds.textures.views.size(), 3u);
-    const Material& a = ds.materials[0];
-    const Material& b = ds.materials[1];
-    EXPECT_EQ(a.base_color_texture, b.base_color_texture);
-    EXPECT_NE(a.base_color_texture, a.metallic_roughness_texture);
-    EXPECT_EQ(ds.textures.views[static_cast<std::size_t>(a.base_color_texture)].flags & TEXTURE_SRGB, TEXTURE_SRGB);
-    EXPECT_EQ(ds.textures.views[static_cast<std::size_t>(a.metallic_roughness_texture)].flags & TEXTURE_SRGB, 0u);
-    EXPECT_EQ(a.normal_texture, TEXTURE_NONE);
-    EXPECT_TRUE(ds.tangents.empty());
-    EXPECT_TRUE(ds.colors.empty());
+    CompiledScene cs = test::compile_default(import_gltf(q.b.model, "pack.gltf"));
+    EXPECT_EQ(cs.texel_bytes(), 3u * 2u * 4u + 2u * 2u * 8u);
+    ASSERT_EQ(cs.arrays.texture_views.size(), 3u);
+    const pcl_int* a = cs.arrays.materials[0].textures;
+    const pcl_int* b = cs.arrays.materials[1].textures;
+    EXPECT_EQ(a[TEXTURE_SLOT_BASE_COLOR], b[TEXTURE_SLOT_BASE_COLOR]);
+    EXPECT_NE(a[TEXTURE_SLOT_BASE_COLOR], a[TEXTURE_SLOT_METALLIC_ROUGHNESS]);
+    auto view = [&](int slot) { return cs.arrays.texture_views[static_cast<std::size_t>(a[slot])]; };
+    EXPECT_EQ(view(TEXTURE_SLOT_BASE_COLOR).flags & TEXTURE_SRGB, TEXTURE_SRGB);
+    EXPECT_EQ(view(TEXTURE_SLOT_METALLIC_ROUGHNESS).flags & TEXTURE_SRGB, 0u);
+    EXPECT_EQ(a[TEXTURE_SLOT_NORMAL], TEXTURE_NONE);
+    EXPECT_TRUE(cs.arrays.tangents.empty());
+    EXPECT_TRUE(cs.arrays.colors.empty());
 }
 
 TEST(DeviceTextures, TexturedEmitterPowerFollowsTheTextureUnderIt)
@@ -695,20 +697,20 @@ TEST(DeviceTextures, TexturedEmitterPowerFollowsTheTextureUnderIt)
     q.mat().emissiveTexture.index = q.b.add_texture(q.b.add_png_image(8, 8, texels), q.b.add_sampler(kNearest));
     q.mat().emissiveFactor = {2.0, 2.0, 2.0};
     Scene s = import_gltf(q.b.model, "emitter.gltf");
-    DeviceScene ds = make_device_scene(s);
-    ASSERT_EQ(ds.lights.size(), 2u);
+    CompiledScene cs = test::compile_default(s);
+    ASSERT_EQ(cs.arrays.lights.size(), 2u);
     std::vector<double> mean;
     for (std::size_t t = 0; t < 2; ++t)
         mean.push_back(texture_mean_over_triangle(s.images[0], s.materials[0].emissive_texture, true, s.texcoords[0][t]).x);
     EXPECT_GT(std::max(mean[0], mean[1]), 0.6);
     EXPECT_LT(std::min(mean[0], mean[1]), 0.4);
-    // Light i holds triangle p1.w (leaf index); map back to scene triangles.
+    // Light i names its triangle by leaf index; map back to scene triangles.
     double pmf_of_scene_triangle[2] = {0, 0};
-    for (const Light& l : ds.lights) {
-        std::int32_t leaf;
-        std::memcpy(&leaf, &l.p1.w, 4);
-        pmf_of_scene_triangle[ds.bvh_stats.triangle_order[static_cast<std::size_t>(leaf)]] = l.radiance.w;
-        EXPECT_EQ(l.texture, ds.materials[0].emissive_texture);
+    for (std::size_t i = 0; i < cs.arrays.lights.size(); ++i) {
+        const TriangleLight& l = cs.arrays.lights[i].data.triangle;
+        pmf_of_scene_triangle[cs.bvh.triangle_order[static_cast<std::size_t>(l.triangle)]] =
+            cs.arrays.light_distribution[i].pmf;
+        EXPECT_EQ(l.texture, cs.arrays.materials[0].textures[TEXTURE_SLOT_EMISSIVE]);
     }
     EXPECT_NEAR(pmf_of_scene_triangle[0] / pmf_of_scene_triangle[1], mean[0] / mean[1], 1e-5);
 }

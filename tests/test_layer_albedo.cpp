@@ -12,7 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "render/layer_albedo.h"
-#include "shared_types.h"
+#include "closure/layer_table.h"
+#include "types.h"
 #include "support/reference_bsdf.h"
 
 namespace pathcl {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/device_scene.h"
+#include "render/light_distribution.h"
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
 
@@ -16,13 +16,25 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kTests = 4; // chi-square tests in this file (Šidák correction)
 
-std::vector<pcl_float4> sample_lights(std::vector<Light> lights, glm::vec3 ref, std::size_t n)
+const cl::Program& light_program()
 {
-    static cl::Program program = test::build_test_program(
-        "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
-    std::vector<double> power(lights.size(), 1.0);
-    build_light_alias_table(lights, power);
-    return test::sample_lights_on_device(program, lights, nullptr, ref, 1234u, n);
+    static cl::Program program =
+        test::build_test_program("trace_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_SPHERE_LIGHTS);
+    return program;
+}
+
+// Lights of equal power (each picked with probability 1 / n).
+SceneArrays equal_power(const std::vector<Light>& lights)
+{
+    SceneArrays a;
+    a.lights = lights;
+    a.light_distribution = build_light_distribution(std::vector<double>(lights.size(), 1.0));
+    return a;
+}
+
+std::vector<pcl_float4> sample_lights(const std::vector<Light>& lights, glm::vec3 ref, std::size_t n)
+{
+    return test::sample_lights_on_device(light_program(), equal_power(lights), ref, 1234u, n);
 }
 
 // Checks the kernel's pdf against the host pdf at each sampled direction.
@@ -43,8 +55,9 @@ Light sphere_light(glm::vec3 centre, float radius)
 {
     Light l{};
     l.type = LIGHT_SPHERE;
-    l.p0 = {centre.x, centre.y, centre.z, radius};
-    l.radiance = {1, 1, 1, 1};
+    l.data.sphere.centre = {centre.x, centre.y, centre.z, 0.0f};
+    l.data.sphere.radius = radius;
+    l.radiance = {1, 1, 1, 0};
     return l;
 }
 
@@ -84,13 +97,10 @@ TEST(LightSampling, SphereFromJustOutsideItsSurface)
 TEST(LightSampling, SphereSamplesCarryItsRadiance)
 {
     // Weight = radiance / pdf: every sample of a sphere carries exactly its radiance.
-    static cl::Program program = test::build_test_program(
-        "trace_test_kernels.cl", "-DPATHCL_HAS_AREA_LIGHTS -DPATHCL_HAS_SPHERE_LIGHTS");
     Light l = sphere_light(glm::vec3(0.0f, 0.0f, 3.0f), 1.0f);
-    l.radiance = {2.5f, 1.5f, 0.5f, 1.0f};
-    l.alias_threshold = LIGHT_PICK_GRID;
+    l.radiance = {2.5f, 1.5f, 0.5f, 0.0f};
     std::vector<pcl_float4> radiance;
-    auto s = test::sample_lights_on_device(program, {l}, nullptr, glm::vec3(0.0f), 5u, 10000, &radiance);
+    auto s = test::sample_lights_on_device(light_program(), equal_power({l}), glm::vec3(0.0f), 5u, 10000, &radiance);
     for (std::size_t i = 0; i < s.size(); ++i) {
         ASSERT_GT(s[i].w, 0.0f);
         ASSERT_EQ(radiance[i].x, 2.5f);
@@ -116,10 +126,12 @@ TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
     auto tri = [](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
         Light l{};
         l.type = LIGHT_TRIANGLE;
-        l.p0 = {p0.x, p0.y, p0.z, 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0))};
-        l.p1 = {p1.x, p1.y, p1.z, 0};
-        l.p2 = {p2.x, p2.y, p2.z, 0};
-        l.radiance = {1, 1, 1, 1};
+        l.data.triangle.v0 = {p0.x, p0.y, p0.z, 0};
+        l.data.triangle.v1 = {p1.x, p1.y, p1.z, 0};
+        l.data.triangle.v2 = {p2.x, p2.y, p2.z, 0};
+        l.data.triangle.area = 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
+        l.data.triangle.texture = TEXTURE_NONE;
+        l.radiance = {1, 1, 1, 0};
         return l;
     };
     auto triangle_pdf = [](glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, const glm::dvec3& w) {

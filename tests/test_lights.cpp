@@ -10,7 +10,7 @@
 
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {

@@ -10,7 +10,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/gltf_builder.h"
 #include <tiny_gltf.h>
 
@@ -52,7 +52,8 @@ TEST(Render, BrokenBsdfFailsTheCornellBoxComparison)
     // The same comparison with a Lambertian that forgets cos(theta) in its evaluation:
     // proves the test above can fail on a plausible kernel bug.
     RenderOptions o = cornell_test_options();
-    o.extra_build_options = "-DPATHCL_FAULT_LAMBERT_NO_COSINE";
+    o.kernel_patches = {{"closure/bsdf_eval.cl", "e.f_cos = p->base_color * (INV_PI * cos_i);",
+                         "e.f_cos = p->base_color * INV_PI;"}};
     RenderResult r = render(cornell_box(), o);
     Image ref = read_image(kSource + "/tests/references/cornell-box-64.exr");
     CompareReport cmp = compare_images(r.image, ref);

@@ -21,7 +21,7 @@
 #include "render/renderer.h"
 #include "sampling/samplers.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {

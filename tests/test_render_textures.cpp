@@ -13,9 +13,9 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
-#include "render/textures.h"
+#include "render/texture_lookup.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/gltf_builder.h"
 #include <tiny_gltf.h>
 

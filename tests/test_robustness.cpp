@@ -14,23 +14,23 @@
 #include "image/image_compare.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {
 namespace {
 
-// Renders scene at size x size pixels with spp samples and max_bounces, built with
-// build_options (a fault define, say), and expects no NaN/Inf sample.
+// Renders scene at size x size pixels with spp samples and max_bounces, with the kernel
+// patched (a broken variant, say), and expects no NaN/Inf sample.
 RenderResult render_square(const Scene& scene, std::uint32_t size, std::uint32_t spp, std::uint32_t max_bounces,
-                           const std::string& build_options = "")
+                           const std::vector<KernelPatch>& patches = {})
 {
     RenderOptions o;
     o.width = o.height = size;
     o.spp = spp;
     o.max_bounces = max_bounces;
-    o.extra_build_options = build_options;
+    o.kernel_patches = patches;
     RenderResult r = render(scene, o);
     EXPECT_EQ(r.stats.bad_samples, 0u);
     return r;
@@ -106,11 +106,7 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
     // or outside the sliver's extent.
     auto violations = [&](const char* kernel) {
         cl::Kernel k(program, kernel);
-        k.setArg(0, bo);
-        k.setArg(1, bd);
-        k.setArg(2, bt);
-        k.setArg(3, static_cast<cl_uint>(tris.size()));
-        k.setArg(4, out);
+        set_kernel_args(k, bo, bd, bt, static_cast<cl_uint>(tris.size()), out);
         dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
         std::vector<pcl_float4> h(n);
         dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), h.data());
@@ -359,7 +355,7 @@ namespace {
 // and 18 point lights in the gap, 5e-5 from both, on vertex directions on both sides of
 // z = 0. Seen from outside (a camera on +z) or from the centre (looking along -z) no
 // light can arrive: both shells are closed. `shells`: 1 inner only, 2 outer only, 3 both.
-Image concentric_spheres_view(bool from_inside, int shells, const std::string& build_options)
+Image concentric_spheres_view(bool from_inside, int shells, const std::vector<KernelPatch>& patches)
 {
     test::GltfBuilder b;
     int mat = b.add_material(glm::vec3(0.8f), glm::vec3(0.0f), /*double_sided=*/true);
@@ -378,8 +374,19 @@ Image concentric_spheres_view(bool from_inside, int shells, const std::string& b
         b.add_camera_node(b.add_perspective_camera(1.6), {0.0, 0.0, 0.0});
     else
         b.add_camera_node(b.add_perspective_camera(0.6), {0.0, 0.0, 4.0});
-    RenderResult r = render_square(import_gltf(b.model, "concentric-spheres"), 32, 16, 2, build_options);
+    RenderResult r = render_square(import_gltf(b.model, "concentric-spheres"), 32, 16, 2, patches);
     return r.image;
+}
+
+// A naive renderer: the shading normal alone decides on which side a direction leaves
+// (no lift onto the smooth surface), and rays start pushed to their direction's side.
+std::vector<KernelPatch> shading_normal_only()
+{
+    return {{"geom/surface_point.cl", "    sp.material = sh.material;\n",
+             "    sp.p_smooth = sp.p;\n    sp.lifted = false;\n    sp.material = sh.material;\n"},
+            {"geom/ray_offset.cl", "return cos_ig > 0.0f || sp->lifted;", "return true;"},
+            {"geom/ray_offset.cl", "        return offset_ray_origin(sp->p_smooth, sp->p_error, sp->ng, sp->ng);\n",
+             "        return offset_ray_origin(sp->p, sp->p_error, sp->ng, w);\n"}};
 }
 
 std::size_t lit_pixels(const Image& im)
@@ -395,19 +402,19 @@ TEST(Robustness, NoLightLeaksAcrossA1em4GapBetweenConcentricSpheres)
     // Smooth vertex normals tilt by up to 7.5 degrees from the facets, so from a point
     // on a shell, lights in the gap a little way off lie above the shading normal's
     // horizon although they are behind the facet. Naive variant that fails
-    // (PATHCL_FAULT_SHADING_NORMAL_ONLY, both views): the shading normal alone decides
+    // (shading_normal_only(), both views): the shading normal alone decides
     // whether a direction is reflected, and rays start 1e-4 along their direction, which
     // puts shadow rays inside the gap.
     for (bool inside : {false, true}) {
         SCOPED_TRACE(inside ? "seen from the centre" : "seen from outside");
-        EXPECT_EQ(lit_pixels(concentric_spheres_view(inside, 3, "")), 0u) << "light leaked across the gap";
-        EXPECT_GT(lit_pixels(concentric_spheres_view(inside, 3, "-DPATHCL_FAULT_SHADING_NORMAL_ONLY")), 10u)
+        EXPECT_EQ(lit_pixels(concentric_spheres_view(inside, 3, {})), 0u) << "light leaked across the gap";
+        EXPECT_GT(lit_pixels(concentric_spheres_view(inside, 3, shading_normal_only())), 10u)
             << "the naive renderer should leak here";
     }
     // Control: without the inner shell, the lights are seen lighting the outer one from
     // the centre. (From outside, the inner shell alone is lit only within about 0.01 of
     // each light: 5e-5 above a vertex is below the smooth sphere's horizon elsewhere.)
-    EXPECT_GT(lit_pixels(concentric_spheres_view(true, 2, "")), 500u);
+    EXPECT_GT(lit_pixels(concentric_spheres_view(true, 2, {})), 500u);
 }
 
 } // namespace

@@ -15,7 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "sampling/samplers.h"
-#include "shared_types.h"
+#include "sample/dimensions.h"
+#include "types.h"
 #include "support/device_fixture.h"
 
 namespace pathcl {
@@ -204,12 +205,7 @@ RadicalInverses radical_inverses(std::uint32_t base, std::size_t n, bool scrambl
     cl::Buffer digits(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
     cl::Buffer scale(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
     cl::Kernel k(sampler_program(), "test_radical_inverse");
-    k.setArg(0, static_cast<cl_uint>(base));
-    k.setArg(1, static_cast<cl_uint>(scramble));
-    k.setArg(2, static_cast<cl_uint>(seed));
-    k.setArg(3, out);
-    k.setArg(4, digits);
-    k.setArg(5, scale);
+    set_kernel_args(k, static_cast<cl_uint>(base), static_cast<cl_uint>(scramble), static_cast<cl_uint>(seed), out, digits, scale);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     RadicalInverses r{std::vector<float>(n), std::vector<cl_ulong>(n), std::vector<cl_ulong>(n)};
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), r.value.data());
@@ -276,10 +272,7 @@ SinCosErrors sin_cos_errors(const std::vector<float>& in, bool turns, bool built
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
     cl::Buffer ref(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
     cl::Kernel k(sampler_program(), "test_sin_cos");
-    k.setArg(0, bin);
-    k.setArg(1, static_cast<cl_uint>(turns));
-    k.setArg(2, out);
-    k.setArg(3, ref);
+    set_kernel_args(k, bin, static_cast<cl_uint>(turns), out, ref);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<cl_float2> v(n);
     dev.queue.enqueueReadBuffer(builtin ? ref : out, CL_TRUE, 0, n * sizeof(cl_float2), v.data());

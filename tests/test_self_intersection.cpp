@@ -36,12 +36,7 @@ Counts spawn(const std::vector<glm::vec3>& v, std::size_t rays, bool planar, std
     cl::Buffer hit(dev.context, CL_MEM_WRITE_ONLY, rays * sizeof(cl_int));
     cl::Buffer src(dev.context, CL_MEM_WRITE_ONLY, rays * sizeof(cl_int));
     cl::Kernel k(program, "test_spawned_ray_hits");
-    k.setArg(0, nodes);
-    k.setArg(1, tb);
-    k.setArg(2, static_cast<cl_uint>(tris.size()));
-    k.setArg(3, seed);
-    k.setArg(4, hit);
-    k.setArg(5, src);
+    set_kernel_args(k, nodes, tb, static_cast<cl_uint>(tris.size()), seed, hit, src);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(rays));
     std::vector<cl_int> h(rays), s(rays);
     dev.queue.enqueueReadBuffer(hit, CL_TRUE, 0, rays * sizeof(cl_int), h.data());

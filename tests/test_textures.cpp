@@ -1,5 +1,5 @@
 // Texture lookups, material inputs and textured emitters through the kernels' own code
-// (tests/kernels/texture_test_kernels.cl over kernels/textures.cl): exact texels at texel
+// (tests/kernels/texture_test_kernels.cl over kernels/texture/): exact texels at texel
 // centres, exact bilinear midpoints, every wrap mode on both sides of [0, 1], nearest
 // filtering, sRGB decoding of all 256 values, 16-bit texels, KHR_texture_transform, the
 // textured material at a hit (factors x texels x vertex colour), normal mapping with
@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/device_scene.h"
-#include "render/textures.h"
+#include "render/texture_lookup.h"
+#include "support/compiled_scene.h"
 #include "scene/gltf_loader.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
@@ -24,54 +24,40 @@ namespace {
 constexpr int kNearest = 9728, kLinear = 9729;
 constexpr int kRepeat = 10497, kClamp = 33071, kMirror = 33648;
 
+constexpr std::uint32_t kTextureFeatures = FEATURE_TEXTURES | FEATURE_NORMAL_MAPS | FEATURE_VERTEX_COLORS;
+
 const cl::Program& texture_program()
 {
-    static cl::Program p = test::build_test_program(
-        "texture_test_kernels.cl",
-        "-DPATHCL_HAS_TEXTURES -DPATHCL_HAS_NORMAL_MAPS -DPATHCL_HAS_VERTEX_COLORS -DPATHCL_HAS_AREA_LIGHTS");
+    static cl::Program p = test::build_test_program("texture_test_kernels.cl", kTextureFeatures);
     return p;
 }
 
-template <typename T>
-cl::Buffer upload(const std::vector<T>& v)
-{
-    ClDevice& dev = test::test_device();
-    static const pcl_float4 dummy[4] = {}; // kernels need a valid buffer even when unused
-    if (v.empty())
-        return cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof dummy,
-                          const_cast<pcl_float4*>(dummy));
-    return cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(T),
-                      const_cast<T*>(v.data()));
-}
+using test::upload;
 
 std::vector<pcl_float4> read_back(const cl::Buffer& b, std::size_t n)
 {
-    std::vector<pcl_float4> out(n);
-    test::test_device().queue.enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(pcl_float4), out.data());
-    return out;
+    return test::read_back<pcl_float4>(b, n);
 }
 
-// Texture buffers built by hand, as DeviceScene would hold them.
+// Texture arrays built by hand, as a compiled scene would hold them.
 struct TextureSet {
-    DeviceTextures t;
-    std::vector<TriangleTangents> tangents;
-    std::vector<TriangleColors> colors;
+    SceneArrays t;
 
     int add_image8(pcl_uint w, pcl_uint h, const std::vector<std::uint8_t>& rgba)
     {
-        t.images.push_back({static_cast<pcl_uint>(t.texels.size()), w, h, TEXTURE_FORMAT_RGBA8});
+        t.texture_images.push_back({static_cast<pcl_uint>(t.texels.size()), w, h, TEXTURE_FORMAT_RGBA8});
         for (std::size_t i = 0; i < rgba.size(); i += 4)
             t.texels.push_back(rgba[i] | rgba[i + 1] << 8 | rgba[i + 2] << 16 | static_cast<pcl_uint>(rgba[i + 3]) << 24);
-        return static_cast<int>(t.images.size()) - 1;
+        return static_cast<int>(t.texture_images.size()) - 1;
     }
     int add_image16(pcl_uint w, pcl_uint h, const std::vector<std::uint16_t>& rgba)
     {
-        t.images.push_back({static_cast<pcl_uint>(t.texels.size()), w, h, TEXTURE_FORMAT_RGBA16});
+        t.texture_images.push_back({static_cast<pcl_uint>(t.texels.size()), w, h, TEXTURE_FORMAT_RGBA16});
         for (std::size_t i = 0; i < rgba.size(); i += 4) {
             t.texels.push_back(rgba[i] | static_cast<pcl_uint>(rgba[i + 1]) << 16);
             t.texels.push_back(rgba[i + 2] | static_cast<pcl_uint>(rgba[i + 3]) << 16);
         }
-        return static_cast<int>(t.images.size()) - 1;
+        return static_cast<int>(t.texture_images.size()) - 1;
     }
     int add_view(int image, pcl_uint wrap_s, pcl_uint wrap_t, pcl_uint flags, pcl_float4 row_u = {1, 0, 0, 0},
                  pcl_float4 row_v = {0, 1, 0, 0})
@@ -83,15 +69,8 @@ struct TextureSet {
         v.wrap_s = wrap_s;
         v.wrap_t = wrap_t;
         v.flags = flags;
-        t.views.push_back(v);
-        return static_cast<int>(t.views.size()) - 1;
-    }
-    void set_args(cl::Kernel& k, std::vector<cl::Buffer>& keep) const
-    {
-        keep = {upload(t.texels), upload(t.images), upload(t.views), upload(t.texcoords), upload(tangents),
-                upload(colors)};
-        for (cl_uint i = 0; i < 6; ++i)
-            k.setArg(i, keep[i]);
+        t.texture_views.push_back(v);
+        return static_cast<int>(t.texture_views.size()) - 1;
     }
 };
 
@@ -105,12 +84,10 @@ std::vector<pcl_float4> lookups(const TextureSet& set, const std::vector<std::pa
         q.push_back({uv.x, uv.y, view_bits, 0.0f});
     }
     cl::Kernel k(texture_program(), "test_texture_sample");
-    std::vector<cl::Buffer> keep;
-    set.set_args(k, keep);
+    DeviceArrays arrays = upload_arrays(test::test_device(), set.t, 1);
     cl::Buffer qb = upload(q);
     cl::Buffer out(test::test_device().context, CL_MEM_WRITE_ONLY, q.size() * sizeof(pcl_float4));
-    k.setArg(6, qb);
-    k.setArg(7, out);
+    bind_kernel(k, arrays, qb, out);
     test::test_device().queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(q.size()));
     return read_back(out, q.size());
 }
@@ -420,8 +397,8 @@ struct MaterialProbe {
 // test_material_inputs at barycentrics (b1, b2) of scene triangle 0, seen along -wo.
 MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, const std::vector<glm::vec3>& wo)
 {
-    DeviceScene ds = make_device_scene(scene);
-    auto order = ds.bvh_stats.triangle_order;
+    CompiledScene cs = test::compile_default(scene);
+    auto order = cs.bvh.triangle_order;
     int leaf = static_cast<int>(std::find(order.begin(), order.end(), 0u) - order.begin());
     float leaf_bits;
     std::memcpy(&leaf_bits, &leaf, 4);
@@ -431,25 +408,15 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
         glm::vec3 w = glm::normalize(wo[i]);
         wos.push_back({w.x, w.y, w.z, 0.0f});
     }
-    TextureSet set;
-    set.t = ds.textures;
-    set.tangents = ds.tangents;
-    set.colors = ds.colors;
     cl::Kernel k(texture_program(), "test_material_inputs");
-    std::vector<cl::Buffer> keep;
-    set.set_args(k, keep);
     ClDevice& dev = test::test_device();
+    DeviceArrays arrays = upload_arrays(dev, cs.arrays, 1);
     std::size_t n = hits.size();
-    std::vector<cl::Buffer> bufs = {upload(ds.triangles), upload(ds.shading), upload(ds.materials), upload(hits),
-                                    upload(wos)};
     std::vector<cl::Buffer> outs;
     for (int i = 0; i < 5; ++i)
         outs.emplace_back(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl_uint a = 6;
-    for (cl::Buffer& b : bufs)
-        k.setArg(a++, b);
-    for (cl::Buffer& b : outs)
-        k.setArg(a++, b);
+    cl::Buffer hit_buffer = upload(hits), wo_buffer = upload(wos); // alive until the kernel has run
+    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4]);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n),
             read_back(outs[4], n)};
@@ -590,29 +557,15 @@ TEST(TexturedEmitter, LightSamplesCarryTheTexelAtTheirPoint)
         b.add_texture(b.add_png_image(2, 2, texels), b.add_sampler(kNearest, kClamp, kClamp));
     b.add_root(b.add_node(mesh));
     Scene scene = import_gltf(b.model, "emitter.gltf");
-    DeviceScene ds = make_device_scene(scene);
-    ASSERT_EQ(ds.lights.size(), 2u);
+    CompiledScene cs = test::compile_default(scene);
+    ASSERT_EQ(cs.arrays.lights.size(), 2u);
 
     const std::size_t n = 20000;
     const glm::vec3 ref(0.3f, 0.6f, 0.0f);
-    cl::Kernel k(texture_program(), "test_textured_light_sample");
-    TextureSet set;
-    set.t = ds.textures;
-    std::vector<cl::Buffer> keep;
-    set.set_args(k, keep);
-    cl::Buffer lights = upload(ds.lights);
-    ClDevice& dev = test::test_device();
-    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl::Buffer radiance(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    k.setArg(6, lights);
-    k.setArg(7, static_cast<cl_uint>(ds.lights.size()));
+    static cl::Program program = test::build_test_program("trace_test_kernels.cl", kTextureFeatures | FEATURE_AREA_LIGHTS);
     glm::vec3 ref_render(glm::dvec3(ref) - scene.render_origin); // the loader's render space
-    k.setArg(8, pcl_float4{ref_render.x, ref_render.y, ref_render.z, 0.0f});
-    k.setArg(9, 77u);
-    k.setArg(10, out);
-    k.setArg(11, radiance);
-    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    auto dirs = read_back(out, n), rad = read_back(radiance, n);
+    std::vector<pcl_float4> rad;
+    auto dirs = test::sample_lights_on_device(program, cs.arrays, ref_render, 77u, n, &rad);
     std::size_t checked = 0;
     for (std::size_t i = 0; i < n; ++i) {
         ASSERT_GT(dirs[i].w, 0.0f) << "sample " << i << " failed";

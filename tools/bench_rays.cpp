@@ -1,4 +1,4 @@
-// Ray throughput of pathcl's BVH traversal (the real kernels/bvh.cl, through the test
+// Ray throughput of pathcl's BVH traversal (the real kernels/bvh/, through the test
 // kernels in tests/kernels/trace_test_kernels.cl) against Embree 3 on the same rays and
 // the same machine: closest hit and any hit, for incoherent rays (origins uniform in the
 // scene's bounds, directions uniform on the sphere, like diffuse bounces) and coherent
@@ -23,7 +23,8 @@
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
-#include "render/device_scene.h"
+#include "cl/kernel_args.h"
+#include "render/compile_scene.h"
 #include "scene/gltf_loader.h"
 
 namespace {
@@ -54,7 +55,7 @@ Rays incoherent_rays(const Scene& scene, std::size_t n)
 Rays primary_rays(const Scene& scene, std::size_t n)
 {
     std::uint32_t side = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n)));
-    Camera c = make_device_camera(scene.camera, side, side);
+    Camera c = compile_camera(scene.camera, side, side);
     Rays r;
     for (std::uint32_t y = 0; y < side; ++y)
         for (std::uint32_t x = 0; x < side; ++x) {
@@ -93,7 +94,7 @@ struct Pathcl {
     cl::Program program;
     cl::Buffer nodes, triangles;
 
-    Pathcl(int device, const DeviceScene& ds) : dev(open_device(device))
+    Pathcl(int device, const SceneArrays& ds) : dev(open_device(device))
     {
         std::string src;
         {
@@ -106,7 +107,10 @@ struct Pathcl {
                 src.append(buf, got);
             std::fclose(f);
         }
-        program = build_program(dev, "", {src}).program;
+        ProgramSource source;
+        source.root = "tests/kernels/trace_test_kernels.cl";
+        source.text = src;
+        program = build_program(dev, "", source).program;
         nodes = cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, ds.nodes.size() * sizeof(BvhNode),
                            const_cast<BvhNode*>(ds.nodes.data()));
         triangles = cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
@@ -122,16 +126,10 @@ struct Pathcl {
                      const_cast<pcl_float4*>(r.dir.data()));
         cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
         cl::Kernel k(program, any_hit ? "test_any_hit" : "test_trace_closest");
-        k.setArg(0, o);
-        k.setArg(1, d);
-        k.setArg(2, nodes);
-        k.setArg(3, triangles);
-        if (any_hit) {
-            k.setArg(4, INFINITY);
-            k.setArg(5, out);
-        } else {
-            k.setArg(4, out);
-        }
+        if (any_hit)
+            set_kernel_args(k, o, d, nodes, triangles, INFINITY, out);
+        else
+            set_kernel_args(k, o, d, nodes, triangles, out);
         std::size_t global = (n + 63) / 64 * 64;
         if (global != n)
             throw Error("bench_rays: the ray count must be a multiple of 64");
@@ -146,7 +144,7 @@ struct Embree {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
 
-    explicit Embree(const DeviceScene& ds)
+    explicit Embree(const SceneArrays& ds)
     {
         device = rtcNewDevice(nullptr);
         scene = rtcNewScene(device);
@@ -235,7 +233,8 @@ int main(int argc, char** argv)
     CLI11_PARSE(app, argc, argv);
     try {
         Scene scene = load_gltf(path);
-        DeviceScene ds = make_device_scene(scene);
+        CompiledScene cs = compile_scene(scene, kernel_features(scene, RenderOptions{}));
+        const SceneArrays& ds = cs.arrays;
         Pathcl pc(device, ds);
         Embree em(ds);
         std::printf("%s: %zu triangles, %zu rays per run, %d runs; Mrays/s min / median / max\n", path.c_str(),

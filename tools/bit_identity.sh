@@ -24,7 +24,7 @@ mkdir -p "$WORK"
 
 if [ ! -x "$BASE_BUILD/pathcl" ]; then
     git worktree prune
-    [ -d "$BASE_SRC" ] || git worktree add --detach "$BASE_SRC" "$SHA" >/dev/null
+    [ -d "$BASE_SRC" ] || git worktree add --detach "$BASE_SRC" "$SHA" >/dev/null 2>&1
     cmake -S "$BASE_SRC" -B "$BASE_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
     cmake --build "$BASE_BUILD" --target pathcl >/dev/null
 fi

@@ -1,5 +1,5 @@
 // Binned SAH BVH over triangles: built binary, then collapsed to the four-wide BvhNode
-// array the kernels traverse with a fixed stack (kernels/bvh.cl), every four-wide node
+// array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl), every four-wide node
 // taking the grandchildren of a binary one. Node 0 is the root and is always an inner
 // node; leaves live inside their parent as (first triangle, count).
 #pragma once
@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "shared_types.h"
+#include "types.h"
 
 namespace pathcl {
 
@@ -29,9 +29,9 @@ struct Bvh {
 };
 
 // The binary depth bound keeps the four-wide tree within the kernels' traversal stack:
-// at most 30 four-wide levels, each pushing at most 3 entries (BVH_STACK_SIZE in bvh.cl).
+// at most 30 four-wide levels, each pushing at most 3 entries (BVH_STACK_SIZE, types.h).
 constexpr int kBvhMaxDepth = 60;
-constexpr int kBvhStackSize = 96;
+constexpr int kBvhStackSize = BVH_STACK_SIZE;
 constexpr int kBvhMaxLeafSize = 8;
 
 Bvh build_bvh(const BvhBuildInput& input);

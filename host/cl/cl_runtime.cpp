@@ -6,7 +6,6 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "cl/embedded_kernels.h"
 #include "cl/program_cache.h"
 #include "common/error.h"
 
@@ -131,20 +130,10 @@ std::string base_build_options()
     return "-cl-std=CL1.2";
 }
 
-ProgramBuild build_program(const ClDevice& dev, const std::string& options,
-                           const std::vector<std::string>& extra_sources)
+ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& program_source)
 {
     auto start = std::chrono::steady_clock::now();
-    std::string source;
-    for (const EmbeddedFile& f : embedded_kernel_sources()) {
-        source += "// ---- ";
-        source += f.name;
-        source += " ----\n";
-        source += f.text;
-        source += '\n';
-    }
-    for (const std::string& s : extra_sources)
-        source += s + '\n';
+    std::string source = assemble_kernel_source(program_source);
     std::string full_options = base_build_options() + " " + options;
     std::string identity = dev.info.platform + '|' + dev.info.name + '|' + dev.info.driver + '|' +
                            dev.info.version;

@@ -8,6 +8,8 @@
 
 #include <CL/opencl.hpp>
 
+#include "cl/kernel_source.h"
+
 namespace pathcl {
 
 struct DeviceInfo {
@@ -37,10 +39,10 @@ struct ProgramBuild {
     bool from_cache = false; // loaded from pathcl's binary cache
 };
 
-// Builds the embedded kernel sources plus `extra_sources` (test kernels) with `options`
-// (feature defines). Compile failures throw pathcl::Error with the build log.
-ProgramBuild build_program(const ClDevice& dev, const std::string& options,
-                           const std::vector<std::string>& extra_sources = {});
+// Builds the program assembled from `source` (by default the render program,
+// kernels/program.cl) with `options` (the feature define). Compile failures throw
+// pathcl::Error naming the first error line of the build log.
+ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& source = {});
 
 // The options every build gets: strict IEEE float (no fast math), OpenCL C 1.2.
 std::string base_build_options();

@@ -23,7 +23,7 @@
 #include "sampling/samplers.h"
 #include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
-#include "shared_types.h"
+#include "types.h"
 
 namespace {
 
@@ -168,19 +168,18 @@ int run_samples(const SamplesRequest& rq)
 int run_bench(const std::string& scene_path, pathcl::RenderOptions opt, int runs)
 {
     pathcl::Scene scene = pathcl::load_gltf(scene_path);
-    pathcl::RenderOptions warm = opt;
-    warm.spp = 1;
-    pathcl::RenderResult first = pathcl::render(scene, warm);
+    pathcl::Renderer renderer(scene, opt); // compiled, built and uploaded once for every run
+    const pathcl::RenderStats& setup = renderer.setup_stats();
     std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s",
-                scene_path.c_str(), first.stats.triangles, first.stats.bvh_nodes, first.stats.bvh_build_seconds * 1e3,
-                first.stats.kernel_build_seconds, first.stats.kernel_from_cache ? " (from cache)" : " (compiled)");
-    if (first.stats.texel_bytes > 0)
-        std::printf(" | texels %.1f KiB", static_cast<double>(first.stats.texel_bytes) / 1024.0);
+                scene_path.c_str(), setup.triangles, setup.bvh_nodes, setup.bvh_build_seconds * 1e3,
+                setup.kernel_build_seconds, setup.kernel_from_cache ? " (from cache)" : " (compiled)");
+    if (setup.texel_bytes > 0)
+        std::printf(" | texels %.1f KiB", static_cast<double>(setup.texel_bytes) / 1024.0);
     std::printf("\n");
+    renderer.render(0); // warm-up: the driver's first launch compiles the kernels' machine code
     std::vector<double> rates, seconds;
     for (int i = 0; i < runs; ++i) {
-        opt.seed = static_cast<std::uint32_t>(i);
-        pathcl::RenderResult r = pathcl::render(scene, opt);
+        pathcl::RenderResult r = renderer.render(static_cast<std::uint32_t>(i));
         rates.push_back(r.stats.samples_per_second);
         seconds.push_back(r.stats.render_seconds);
     }
@@ -189,7 +188,7 @@ int run_bench(const std::string& scene_path, pathcl::RenderOptions opt, int runs
     std::size_t mid = rates.size() / 2;
     std::printf("%ux%u, %u spp, max bounces %u, %d runs: samples/s min %.4g median %.4g max %.4g | "
                 "render s min %.3f median %.3f max %.3f\n",
-                opt.width, opt.height, opt.spp, opt.max_bounces, runs, rates.front(), rates[mid], rates.back(),
+                opt.width, opt.height, renderer.spp(), opt.max_bounces, runs, rates.front(), rates[mid], rates.back(),
                 seconds.front(), seconds[mid], seconds.back());
     return 0;
 }
@@ -384,8 +383,7 @@ int main(int argc, char** argv)
     try {
         if (render->parsed()) {
             opt.devices = {device};
-            if (single_scattering)
-                opt.extra_build_options += " -DPATHCL_SINGLE_SCATTERING";
+            opt.single_scattering = single_scattering;
             rr.scene_path = scene_path;
             rr.outputs = outputs;
             rr.options = opt;

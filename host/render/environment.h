@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "shared_types.h"
+#include "types.h"
 
 namespace pathcl {
 

@@ -8,20 +8,19 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "shared_types.h"
+#include "closure/fresnel.h"
+#include "closure/ggx.h"
+#include "closure/layer_table.h"
 
 namespace pathcl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// Smith G1 of the kernels (closure/ggx.h), for alpha.
 double smith_g1(const glm::dvec3& w, double alpha)
 {
-    double c2 = w.z * w.z;
-    if (c2 <= 0.0)
-        return 0.0;
-    double tan2 = (1.0 - c2) / c2;
-    return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2));
+    return ggx_g1(w, alpha * alpha);
 }
 
 // Grid values: sqrt(cos theta) (finer towards grazing, where the Fresnel curve bends),
@@ -107,25 +106,6 @@ std::vector<float> compute_layer_albedo_table(int panels)
     glass_rows(0, 2);
     helper.join();
     return t;
-}
-
-double fresnel_dielectric(double c, double eta)
-{
-    c = std::clamp(c, 0.0, 1.0);
-    double sin2_t = (1.0 - c * c) / (eta * eta);
-    if (sin2_t >= 1.0)
-        return 1.0;
-    double cos_t = std::sqrt(1.0 - sin2_t);
-    double rs = (c - eta * cos_t) / (c + eta * cos_t), rp = (eta * c - cos_t) / (eta * c + cos_t);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
-double normalized_fresnel(double cos_theta, double eta)
-{
-    double r = (eta - 1.0) / (eta + 1.0), f0 = r * r;
-    if (f0 >= 1.0)
-        return 1.0;
-    return std::clamp((fresnel_dielectric(cos_theta, eta) - f0) / (1.0 - f0), 0.0, 1.0);
 }
 
 namespace {

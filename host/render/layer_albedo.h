@@ -1,11 +1,13 @@
 // Directional albedo of the dielectric specular layer of the glTF material (GGX
-// reflection with the normalized exact-Fresnel curve of kernels/bsdf.cl), tabulated over
+// reflection with the normalized exact-Fresnel curve of kernels/closure/fresnel.h), tabulated over
 // cos theta, roughness and ior for the kernels' albedo scaling of the diffuse base. The
-// layout is defined in kernels/shared_types.h (LAYER_*). The table is computed at build
+// layout is defined in kernels/closure/layer_table.h (LAYER_*). The table is computed at build
 // time by tools/make_layer_albedo_table.cpp, which calls compute_layer_albedo_table.
 #pragma once
 
 #include <vector>
+
+#include "closure/fresnel.h"
 
 namespace pathcl {
 
@@ -40,12 +42,7 @@ LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double et
 // average of the normalized Fresnel curve, exact (the kernels use it below ALPHA_DELTA).
 double smooth_layer_average(double eta);
 
-// Unpolarized Fresnel reflectance of a dielectric interface; eta = far ior / near ior;
-// 1 under total internal reflection.
-double fresnel_dielectric(double cos_theta, double eta);
-
-// The normalized Fresnel curve of kernels/bsdf.cl: (F(c, eta) - F0) / (1 - F0), clamped
-// to [0, 1]; 0 at normal incidence, 1 at grazing and under total internal reflection.
-double normalized_fresnel(double cos_theta, double eta);
+// fresnel_dielectric and normalized_fresnel, the Fresnel curves the tables integrate, are
+// the kernels' own (kernels/closure/fresnel.h, in double here).
 
 } // namespace pathcl

@@ -1,13 +1,15 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
-#include <memory>
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
-#include "render/device_scene.h"
+#include "render/compile_scene.h"
+#include "render/device_arrays.h"
+#include "render/film.h"
+#include "render/kernel_features.h"
 #include "sampling/samplers.h"
-#include "shared_types.h"
 
 namespace pathcl {
 namespace {
@@ -26,244 +28,234 @@ Tile work_group_tile(std::size_t max_items)
             return t;
     return {1, 1};
 }
-constexpr cl_uint kPathFrameArg = 12; // trace_paths' FrameParams argument (the texture buffers follow it)
 
 std::uint32_t round_up(std::uint32_t v, std::uint32_t m)
 {
     return (v + m - 1) / m * m;
 }
 
-// Everything one device needs for a render.
-struct DeviceRender {
-    ClDevice dev;
-    cl::Program program;
-    cl::Kernel camera_kernel, path_kernel, clear_kernel;
-    cl::Buffer nodes, triangles, shading, materials, lights, env_texels, env_marginal, env_conditional, layer_albedo,
-        rays, film, bad;
-    cl::Buffer texels, texture_images, texture_views, texcoords, tangents, colors; // dummies when unused
-    std::size_t pixels = 0;
-    Tile tile{8, 8};
-    std::uint32_t passes = 0; // enqueued so far (the queue is flushed every 16)
-
-    template <typename T>
-    cl::Buffer make(const std::vector<T>& data)
-    {
-        std::size_t bytes = std::max<std::size_t>(sizeof(T), data.size() * sizeof(T));
-        cl::Buffer b(dev.context, CL_MEM_READ_ONLY, bytes);
-        if (!data.empty())
-            dev.queue.enqueueWriteBuffer(b, CL_TRUE, 0, data.size() * sizeof(T), data.data());
-        return b;
-    }
-};
-
 std::string cl_error_text(const cl::Error& e)
 {
     return std::string(e.what()) + " (OpenCL error " + std::to_string(e.err()) + ")";
 }
 
-} // namespace
+// Everything one device holds for a render.
+struct DeviceRender {
+    ClDevice dev;
+    cl::Program program;
+    cl::Kernel camera_kernel, path_kernel, clear_kernel;
+    DeviceArrays arrays;
+    Tile tile{8, 8};
+    std::uint32_t clear_items = 64;
+    std::uint32_t passes = 0; // enqueued so far (the queue is flushed every 16)
+};
 
-RenderResult render(const Scene& scene, const RenderOptions& opt)
+void check_options(const RenderOptions& opt)
 {
     if (opt.width == 0 || opt.height == 0)
         throw Error("image size must be at least 1x1");
     if (opt.spp == 0)
-        throw Error("--spp must be at least 1");
+        throw Error("samples per pixel must be at least 1");
     if (opt.devices.empty())
         throw Error("no device selected");
     if (opt.strategy > STRATEGY_MIS)
         throw Error("unknown light-sampling strategy " + std::to_string(opt.strategy));
-    const std::uint32_t spp = sampler_spp(opt.sampler, opt.spp); // throws for an unknown sampler
+}
 
-    RenderResult result;
-    RenderStats& stats = result.stats;
-    DeviceScene ds = make_device_scene(scene);
-    stats.triangles = ds.triangles.size();
-    stats.lights = ds.lights.size();
-    stats.bvh_nodes = ds.nodes.size();
-    stats.bvh_build_seconds = ds.bvh_build_seconds;
-    stats.texel_bytes = ds.textures.texel_bytes();
+// The pixels whose camera rays the ray log keeps: an evenly spaced grid.
+std::vector<std::uint32_t> ray_log_axis(std::uint32_t grid, std::uint32_t size)
+{
+    std::uint32_t n = std::min(std::max(grid, 1u), size);
+    std::vector<std::uint32_t> v;
+    for (std::uint32_t i = 0; i < n; ++i)
+        v.push_back(static_cast<std::uint32_t>((2ull * i + 1) * size / (2ull * n)));
+    return v;
+}
 
-    const std::size_t pixels = static_cast<std::size_t>(opt.width) * opt.height;
-    Camera camera = make_device_camera(scene.camera, opt.width, opt.height);
-    std::string defines = ds.features.build_defines() + " " + opt.extra_build_options;
+} // namespace
 
+struct Renderer::Impl {
+    RenderOptions options;
+    std::uint32_t spp = 0;
+    glm::dvec3 render_origin{0.0};
+    CompiledScene compiled;
+    RenderStats setup;
+    FrameParams frame{};
     std::vector<std::unique_ptr<DeviceRender>> devices;
-    stats.kernel_from_cache = true;
-    for (int index : opt.devices) {
+
+    Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
+    {
+        check_options(opt);
+        spp = sampler_spp(opt.sampler, opt.spp); // throws for an unknown sampler
+        render_origin = scene.render_origin;
+        compiled = compile_scene(scene, kernel_features(scene, opt));
+        compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
+        setup.triangles = compiled.arrays.triangles.size();
+        setup.lights = compiled.arrays.lights.size();
+        setup.bvh_nodes = compiled.arrays.nodes.size();
+        setup.bvh_build_seconds = compiled.bvh_build_seconds;
+        setup.texel_bytes = compiled.texel_bytes();
+        setup.kernel_from_cache = true;
+        for (int index : opt.devices)
+            devices.push_back(open(index));
+
+        frame.width = opt.width;
+        frame.height = opt.height;
+        frame.max_bounces = opt.max_bounces;
+        frame.light_count = static_cast<pcl_uint>(compiled.arrays.lights.size());
+        frame.strategy = opt.strategy;
+        frame.sphere_count = static_cast<pcl_uint>(compiled.sphere_count);
+        frame.environment = compiled.environment_light;
+        frame.sampler = opt.sampler;
+        frame.spp = spp;
+    }
+
+    std::unique_ptr<DeviceRender> open(int index)
+    {
         auto dr = std::make_unique<DeviceRender>();
         dr->dev = open_device(index);
-        ProgramBuild pb = build_program(dr->dev, defines);
-        stats.kernel_build_seconds += pb.seconds;
-        stats.kernel_from_cache = stats.kernel_from_cache && pb.from_cache;
+        ProgramSource source;
+        source.patches = options.kernel_patches;
+        ProgramBuild pb = build_program(dr->dev, compiled.features.define(), source);
+        setup.kernel_build_seconds += pb.seconds;
+        setup.kernel_from_cache = setup.kernel_from_cache && pb.from_cache;
         try {
             dr->program = pb.program;
             dr->camera_kernel = cl::Kernel(dr->program, "generate_camera_rays");
             dr->path_kernel = cl::Kernel(dr->program, "trace_paths");
             dr->clear_kernel = cl::Kernel(dr->program, "clear_film");
-            dr->nodes = dr->make(ds.nodes);
-            dr->triangles = dr->make(ds.triangles);
-            dr->shading = dr->make(ds.shading);
-            dr->materials = dr->make(ds.materials);
-            dr->lights = dr->make(ds.lights);
-            dr->env_texels = dr->make(ds.environment.texels);
-            dr->env_marginal = dr->make(ds.environment.marginal_cdf);
-            dr->env_conditional = dr->make(ds.environment.conditional_cdf);
-            dr->layer_albedo = dr->make(ds.layer_albedo);
-            dr->texels = dr->make(ds.textures.texels);
-            dr->texture_images = dr->make(ds.textures.images);
-            dr->texture_views = dr->make(ds.textures.views);
-            dr->texcoords = dr->make(ds.textures.texcoords);
-            dr->tangents = dr->make(ds.tangents);
-            dr->colors = dr->make(ds.colors);
-            dr->pixels = pixels;
-            dr->rays = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(Ray));
-            dr->film = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(FilmPixel));
-            dr->bad = cl::Buffer(dr->dev.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_uint));
+            dr->arrays = upload_arrays(dr->dev, compiled.arrays, pixels());
             auto max_items = [&](const cl::Kernel& k) {
                 return k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dr->dev.device);
             };
             dr->tile = work_group_tile(std::min(max_items(dr->camera_kernel), max_items(dr->path_kernel)));
-            std::uint32_t clear_items = static_cast<std::uint32_t>(std::min<std::size_t>(64, max_items(dr->clear_kernel)));
-            dr->clear_kernel.setArg(0, dr->film);
-            dr->clear_kernel.setArg(1, dr->bad);
-            dr->clear_kernel.setArg(2, static_cast<cl_uint>(pixels));
-            dr->dev.queue.enqueueNDRangeKernel(dr->clear_kernel, cl::NullRange,
-                                               cl::NDRange(round_up(static_cast<std::uint32_t>(pixels), clear_items)),
-                                               cl::NDRange(clear_items));
-            dr->camera_kernel.setArg(0, dr->rays);
-            dr->camera_kernel.setArg(1, camera);
-            int a = 0;
-            dr->path_kernel.setArg(a++, dr->rays);
-            dr->path_kernel.setArg(a++, dr->nodes);
-            dr->path_kernel.setArg(a++, dr->triangles);
-            dr->path_kernel.setArg(a++, dr->shading);
-            dr->path_kernel.setArg(a++, dr->materials);
-            dr->path_kernel.setArg(a++, dr->lights);
-            dr->path_kernel.setArg(a++, dr->env_texels);
-            dr->path_kernel.setArg(a++, dr->env_marginal);
-            dr->path_kernel.setArg(a++, dr->env_conditional);
-            dr->path_kernel.setArg(a++, dr->layer_albedo);
-            dr->path_kernel.setArg(a++, dr->film);
-            dr->path_kernel.setArg(a++, dr->bad);
-            a = kPathFrameArg + 1;
-            dr->path_kernel.setArg(a++, dr->texels);
-            dr->path_kernel.setArg(a++, dr->texture_images);
-            dr->path_kernel.setArg(a++, dr->texture_views);
-            dr->path_kernel.setArg(a++, dr->texcoords);
-            dr->path_kernel.setArg(a++, dr->tangents);
-            dr->path_kernel.setArg(a++, dr->colors);
-            dr->dev.queue.finish();
+            dr->clear_items = static_cast<std::uint32_t>(std::min<std::size_t>(64, max_items(dr->clear_kernel)));
         } catch (const cl::Error& e) {
-            throw Error("device " + std::to_string(index) + ": setting up the render failed: " +
-                        cl_error_text(e));
+            throw Error("device " + std::to_string(index) + ": setting up the render failed: " + cl_error_text(e));
         }
-        devices.push_back(std::move(dr));
+        return dr;
     }
 
-    // Camera-ray log: pixels on an evenly spaced grid, whose rays are read back after the
-    // camera pass of each logged sample index (a blocking read: renders that log rays
-    // are not for timing).
-    std::vector<std::uint32_t> log_xs, log_ys;
-    if (opt.ray_log_samples > 0) {
-        auto axis = [&](std::uint32_t size) {
-            std::uint32_t n = std::min(std::max(opt.ray_log_grid, 1u), size);
-            std::vector<std::uint32_t> v;
-            for (std::uint32_t i = 0; i < n; ++i)
-                v.push_back(static_cast<std::uint32_t>((2ull * i + 1) * size / (2ull * n)));
-            return v;
-        };
-        log_xs = axis(opt.width);
-        log_ys = axis(opt.height);
+    std::size_t pixels() const { return static_cast<std::size_t>(options.width) * options.height; }
+
+    void clear_films()
+    {
+        for (auto& dr : devices) {
+            bind_kernel(dr->clear_kernel, dr->arrays, frame);
+            const std::uint32_t items = round_up(static_cast<std::uint32_t>(pixels()), dr->clear_items);
+            dr->dev.queue.enqueueNDRangeKernel(dr->clear_kernel, cl::NullRange, cl::NDRange(items),
+                                               cl::NDRange(dr->clear_items));
+        }
     }
-    std::vector<Ray> logged(opt.ray_log_samples > 0 ? pixels : 0);
-    // The pass parameters: only the sample index changes from pass to pass.
-    FrameParams frame{};
-    frame.width = opt.width;
-    frame.height = opt.height;
-    frame.seed = opt.seed;
-    frame.max_bounces = opt.max_bounces;
-    frame.light_count = static_cast<pcl_uint>(ds.lights.size());
-    frame.strategy = opt.strategy;
-    frame.sphere_count = static_cast<pcl_uint>(ds.sphere_count);
-    frame.environment = ds.environment_light;
-    frame.sampler = opt.sampler;
-    frame.spp = spp;
-    auto start = std::chrono::steady_clock::now();
-    try {
+
+    // Enqueues the camera and path passes of sample indices [0, spp); logs camera rays.
+    void run_passes(std::vector<CameraRayRecord>& camera_rays)
+    {
+        std::vector<std::uint32_t> log_xs, log_ys;
+        std::vector<Ray> logged;
+        if (options.ray_log_samples > 0) {
+            log_xs = ray_log_axis(options.ray_log_grid, options.width);
+            log_ys = ray_log_axis(options.ray_log_grid, options.height);
+            logged.resize(pixels());
+        }
         for (std::uint32_t s = 0; s < spp; ++s) {
             DeviceRender& dr = *devices[s % devices.size()];
-            frame.sample_index = s;
-            dr.camera_kernel.setArg(2, frame);
-            dr.path_kernel.setArg(kPathFrameArg, frame);
-            const cl::NDRange global(round_up(opt.width, dr.tile.x), round_up(opt.height, dr.tile.y));
+            frame.sample_index = s; // the only parameter that changes from pass to pass
+            const cl::NDRange global(round_up(options.width, dr.tile.x), round_up(options.height, dr.tile.y));
             const cl::NDRange local(dr.tile.x, dr.tile.y);
+            bind_kernel(dr.camera_kernel, dr.arrays, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
-            if (s < opt.ray_log_samples) {
-                dr.dev.queue.enqueueReadBuffer(dr.rays, CL_TRUE, 0, pixels * sizeof(Ray), logged.data());
+            if (s < options.ray_log_samples) {
+                // A blocking read: renders that log rays are not for timing.
+                dr.dev.queue.enqueueReadBuffer(dr.arrays.rays, CL_TRUE, 0, pixels() * sizeof(Ray), logged.data());
                 for (std::uint32_t y : log_ys)
                     for (std::uint32_t x : log_xs) {
-                        const Ray& r = logged[static_cast<std::size_t>(y) * opt.width + x];
-                        result.camera_rays.push_back(
-                            {glm::dvec3(r.origin.x, r.origin.y, r.origin.z) + scene.render_origin,
-                             glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
+                        const Ray& r = logged[static_cast<std::size_t>(y) * options.width + x];
+                        camera_rays.push_back({glm::dvec3(r.origin.x, r.origin.y, r.origin.z) + render_origin,
+                                               glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
                     }
             }
+            bind_kernel(dr.path_kernel, dr.arrays, frame);
             dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
             if (++dr.passes % 16 == 0) // each device's queue starts working early
                 dr.dev.queue.flush();
         }
         for (auto& dr : devices)
             dr->dev.queue.finish();
-    } catch (const cl::Error& e) {
-        throw Error("rendering failed: " + cl_error_text(e));
     }
 
-    // Sum the devices' films in double, then form means and per-sample variances.
-    std::vector<double> sum(pixels * 4, 0.0), sum_sq(pixels * 4, 0.0);
-    std::vector<FilmPixel> film(pixels);
-    std::vector<cl_uint> bad(pixels);
-    try {
+    FilmSum read_films()
+    {
+        FilmSum sum(pixels());
+        std::vector<FilmPixel> film(pixels());
+        std::vector<pcl_uint> bad(pixels());
         for (auto& dr : devices) {
-            dr->dev.queue.enqueueReadBuffer(dr->film, CL_TRUE, 0, pixels * sizeof(FilmPixel), film.data());
-            dr->dev.queue.enqueueReadBuffer(dr->bad, CL_TRUE, 0, pixels * sizeof(cl_uint), bad.data());
-            for (std::size_t i = 0; i < pixels; ++i) {
-                const FilmPixel& f = film[i];
-                const float* s = &f.sum.x;
-                const float* sc = &f.sum_compensation.x;
-                const float* q = &f.sum_sq.x;
-                const float* qc = &f.sum_sq_compensation.x;
-                for (int c = 0; c < 4; ++c) {
-                    sum[i * 4 + c] += static_cast<double>(s[c]) + static_cast<double>(sc[c]);
-                    sum_sq[i * 4 + c] += static_cast<double>(q[c]) + static_cast<double>(qc[c]);
-                }
-                stats.bad_samples += bad[i];
-            }
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel), film.data());
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
+                                            bad.data());
+            sum.add(film, bad);
         }
-    } catch (const cl::Error& e) {
-        throw Error("reading the film failed: " + cl_error_text(e));
+        return sum;
     }
-    stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stats.samples_per_second = static_cast<double>(pixels) * spp / std::max(stats.render_seconds, 1e-9);
-    stats.spp = spp;
 
-    Image& img = result.image;
-    img.width = opt.width;
-    img.height = opt.height;
-    img.spp = spp;
-    img.rgb.resize(pixels * 3);
-    img.variance.resize(pixels * 3);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        double n = sum[i * 4 + 3]; // samples actually accumulated (bad ones excluded)
-        for (int c = 0; c < 3; ++c) {
-            double s = sum[i * 4 + c], q = sum_sq[i * 4 + c];
-            double mean = n > 0.0 ? s / n : 0.0;
-            double var = n > 1.0 ? std::max(0.0, (q - s * mean) / (n - 1.0)) : 0.0;
-            img.rgb[i * 3 + c] = static_cast<float>(mean);
-            img.variance[i * 3 + c] = static_cast<float>(var);
+    RenderResult render(std::uint32_t seed)
+    {
+        RenderResult result;
+        result.stats = setup;
+        frame.seed = seed;
+        auto start = std::chrono::steady_clock::now();
+        try {
+            clear_films();
+            run_passes(result.camera_rays);
+        } catch (const cl::Error& e) {
+            throw Error("rendering failed: " + cl_error_text(e));
         }
+        FilmSum sum(0);
+        try {
+            sum = read_films();
+        } catch (const cl::Error& e) {
+            throw Error("reading the film failed: " + cl_error_text(e));
+        }
+        RenderStats& stats = result.stats;
+        stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats.samples_per_second = static_cast<double>(pixels()) * spp / std::max(stats.render_seconds, 1e-9);
+        stats.spp = spp;
+        stats.bad_samples = sum.bad_samples();
+        result.image = sum.image(options.width, options.height, spp);
+        return result;
     }
-    return result;
+};
+
+Renderer::Renderer(const Scene& scene, const RenderOptions& options)
+    : impl_(std::make_unique<Impl>(scene, options))
+{
+}
+
+Renderer::~Renderer() = default;
+
+std::uint32_t Renderer::spp() const
+{
+    return impl_->spp;
+}
+
+const RenderStats& Renderer::setup_stats() const
+{
+    return impl_->setup;
+}
+
+RenderResult Renderer::render(std::uint32_t seed)
+{
+    return impl_->render(seed);
+}
+
+RenderResult Renderer::render()
+{
+    return impl_->render(impl_->options.seed);
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options)
+{
+    return Renderer(scene, options).render();
 }
 
 } // namespace pathcl

@@ -1,31 +1,22 @@
-// Renders a scene on one or more OpenCL devices: uploads the device scene, builds the
-// program for the scene's features, runs one camera pass and one path pass per sample
-// index (sample indices dealt round-robin to the devices), and sums the devices' films.
+// Renders a scene on one or more OpenCL devices. A Renderer owns what a render needs and
+// keeps it between renders: the compiled scene uploaded to every device, the program
+// built for the scene's features, and the films. It runs passes (one camera pass and one
+// path pass per sample index, sample indices dealt round-robin to the devices) and forms
+// the image from the devices' films, summed.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "image/image.h"
+#include "render/render_options.h"
 #include "scene/scene.h"
 
 namespace pathcl {
-
-struct RenderOptions {
-    std::uint32_t width = 512, height = 512;
-    std::uint32_t spp = 64;
-    std::uint32_t max_bounces = 8; // scattering events: 0 = emission only, 1 = direct light
-    std::uint32_t seed = 0;
-    std::uint32_t strategy = 3; // STRATEGY_MIS; see kernels/shared_types.h
-    std::uint32_t sampler = 0;  // SAMPLER_INDEPENDENT; spp is rounded as sampler_spp() says
-    // Camera-ray log (--ray-log): the rays of the first ray_log_samples sample indices of
-    // the pixels on an evenly spaced grid of at most ray_log_grid x ray_log_grid pixels.
-    std::uint32_t ray_log_samples = 0;
-    std::uint32_t ray_log_grid = 16;
-    std::vector<int> devices{0};
-    std::string extra_build_options; // appended to the feature defines (tests, opt-ins)
-};
 
 struct RenderStats {
     std::size_t triangles = 0, lights = 0, bvh_nodes = 0;
@@ -52,6 +43,31 @@ struct RenderResult {
     std::vector<CameraRayRecord> camera_rays; // RenderOptions::ray_log_samples > 0
 };
 
+class Renderer {
+public:
+    // Compiles the scene, opens the devices, builds (or loads) the program and uploads
+    // everything; throws pathcl::Error for bad options or a failing device.
+    Renderer(const Scene& scene, const RenderOptions& options);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // The samples per pixel of a whole render (options.spp, rounded up by the sampler).
+    std::uint32_t spp() const;
+    // Figures of the setup (scene size, BVH and kernel build times).
+    const RenderStats& setup_stats() const;
+
+    // A whole render with this seed: clears the films, runs every sample index, and
+    // forms the image.
+    RenderResult render(std::uint32_t seed);
+    RenderResult render();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Renderer(scene, options).render(): a one-off render.
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
 } // namespace pathcl

@@ -9,7 +9,7 @@
 
 #include "common/error.h"
 #include "sampling/samplers.h"
-#include "shared_types.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {

@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "cl/kernel_args.h"
 #include "common/error.h"
-#include "shared_types.h"
+#include "sample/strata.h"
+#include "types.h"
 
 namespace pathcl {
 
@@ -63,14 +65,8 @@ std::uint32_t sampler_spp(std::uint32_t sampler, std::uint32_t requested)
 StrataGrid sampler_strata(std::uint32_t sampler, std::uint32_t spp)
 {
     StrataGrid g;
-    // The kernel's grid: cols = floor(sqrt(spp)), rows = ceil(spp / cols).
-    auto cols = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(spp)));
-    while (static_cast<std::uint64_t>(cols) * cols > spp)
-        --cols;
-    while (static_cast<std::uint64_t>(cols + 1) * (cols + 1) <= spp)
-        ++cols;
-    cols = std::max(cols, 1u);
-    std::uint32_t rows = (spp + cols - 1) / cols;
+    // The kernels' grid (sample/strata.h).
+    const std::uint32_t cols = strata_cols(spp), rows = strata_rows(spp, cols);
     switch (sampler) {
     case SAMPLER_JITTERED:
         g.cols = cols;
@@ -103,16 +99,9 @@ std::vector<glm::vec2> compute_sampler_points(const ClDevice& dev, const cl::Pro
                           rq.pixels.size() * sizeof(std::uint32_t), const_cast<std::uint32_t*>(rq.pixels.data()));
         cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float) * 2);
         cl::Kernel k(program, "sampler_points");
-        int a = 0;
-        k.setArg(a++, static_cast<cl_uint>(rq.sampler));
-        k.setArg(a++, static_cast<cl_uint>(rq.spp));
-        k.setArg(a++, static_cast<cl_uint>(rq.seed));
-        k.setArg(a++, static_cast<cl_uint>(rq.dim0));
-        k.setArg(a++, static_cast<cl_uint>(rq.dim1));
-        k.setArg(a++, pixels);
-        k.setArg(a++, static_cast<cl_uint>(rq.first_sample));
-        k.setArg(a++, static_cast<cl_uint>(count));
-        k.setArg(a++, out);
+        set_kernel_args(k, static_cast<cl_uint>(rq.sampler), static_cast<cl_uint>(rq.spp),
+                        static_cast<cl_uint>(rq.seed), static_cast<cl_uint>(rq.dim0), static_cast<cl_uint>(rq.dim1),
+                        pixels, static_cast<cl_uint>(rq.first_sample), static_cast<cl_uint>(count), out);
         dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(count, rq.pixels.size()));
         dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float) * 2, points.data());
     } catch (const cl::Error& e) {

@@ -142,27 +142,6 @@ struct Scene {
     glm::dvec3 render_origin{0.0};      // world position of the render-space origin
 };
 
-// Which effects a scene uses: each becomes a kernel build define, so a scene pays only
-// for what it uses.
-struct SceneFeatures {
-    bool area_lights = false;
-    bool point_lights = false; // point
-    bool spot_lights = false;  // cone and rectangular spots
-    bool directional_lights = false;
-    bool sphere_lights = false;
-    bool environment = false;
-    bool glossy = false;       // a material with a specular lobe (metal or dielectric layer)
-    bool transmission = false; // a material with KHR_materials_transmission > 0
-    bool textures = false;      // a material with a texture
-    bool normal_maps = false;   // a material with a normal texture
-    bool vertex_colors = false; // a primitive with COLOR_0
-    bool thin_lens = false;    // the camera has an aperture (depth of field)
-
-    std::string build_defines() const;
-};
-
-SceneFeatures scene_features(const Scene& scene);
-
 // Axis-aligned bounds of all triangles (min > max when the scene is empty).
 void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
 

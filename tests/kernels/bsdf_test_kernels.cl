@@ -1,6 +1,8 @@
-/* Test kernels over the real BSDF code (kernels/bsdf.cl). The shading point has its
+/* Test kernels over the real BSDF code (kernels/closure/). The shading point has its
  * geometric and shading normal along `normal` (any unit vector: the kernels' own basis
  * code runs); directions are in world space. */
+#include "closure/bsdf.cl"
+#include "sample/sampler.cl"
 
 static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
 {

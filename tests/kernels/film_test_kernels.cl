@@ -1,6 +1,8 @@
 /* Accumulates `count` samples of 0.1 + noise into film pixel 0 from one work-item,
- * through the real film code (kernels/film.cl), and the same with a naive float sum for
- * contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
+ * through the real film code (kernels/film/film.cl), and the same with a naive float sum
+ * for contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
+#include "film/film.cl"
+#include "util/hash.cl"
 
 static inline float film_test_sample(uint i)
 {

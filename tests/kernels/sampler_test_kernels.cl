@@ -1,4 +1,11 @@
-/* The Halton sampler's radical inverse (kernels/samplers.cl) for the first n points
+/* Test kernels over the samplers (kernels/sample/) and the warps' sine and cosine; the
+ * sampler_points kernel the host reads point sets through comes with its file. */
+#include "sample/halton.cl"
+#include "sample/sampler_points.cl"
+#include "util/math.cl"
+#include "util/sincos.cl"
+
+/* The Halton sampler's radical inverse (kernels/sample/halton.cl) for the first n points
  * (n = the global size): out[i] = the float value, digits[i] / scale[i] = the integer
  * digit prefix it comes from (the whole value when unscrambled). */
 __kernel void test_radical_inverse(uint base, uint scramble, uint seed, __global float* out,

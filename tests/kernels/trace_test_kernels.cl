@@ -1,5 +1,11 @@
-/* Test kernels over the real traversal code (kernels/bvh.cl): closest hit through the
- * BVH, closest hit by brute force over every triangle, and any-hit. */
+/* Test kernels over the real traversal code (kernels/bvh/): closest hit through the BVH,
+ * closest hit by brute force over every triangle, and any-hit; spawned rays; and light
+ * samples through the real light_sample. */
+#include "bvh/traversal.cl"
+#include "geom/ray_offset.cl"
+#include "kernel_data.cl"
+#include "light/light_sample.cl"
+#include "sample/sampler.cl"
 
 __kernel void test_trace_closest(__global const float4* origins, __global const float4* dirs,
                                  __global const BvhNode* nodes,
@@ -65,27 +71,18 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
     source_triangle[i] = (int)t;
 }
 
-/* Light sampling through the real light_sample (kernels/lights.cl): one sample per
- * work-item from `ref`; writes the direction and pdf, or a zero vector when there is no
- * sample (the chi-square harness counts those as failures of the sampler), and the
- * radiance the sample carries (so weight = radiance / pdf can be checked). The texture
- * buffers serve textured triangle lights (builds with PATHCL_HAS_TEXTURES). */
-__kernel void test_light_sample(__global const Light* lights, uint count, float4 ref, uint seed,
-                                __global const float4* env_texels, __global const float* env_marginal,
-                                __global const float* env_conditional, __global float4* out,
-                                __global float4* radiance_out, __global const uint* texels,
-                                __global const TextureImage* texture_images,
-                                __global const TextureView* texture_views,
-                                __global const TriangleTexcoords* texcoords)
+/* Light sampling through the real light_sample (kernels/light/): one sample per work-item
+ * from `ref` over the scene arrays' lights; writes the direction and pdf, or a zero vector
+ * when there is no sample (the chi-square harness counts those as failures of the
+ * sampler), and the radiance the sample carries (so weight = radiance / pdf can be
+ * checked). Environment and emissive-texture lookups read the same arrays. */
+__kernel void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uint seed, __global float4* out,
+                                __global float4* radiance_out)
 {
+    PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
-    EnvironmentBuffers env;
-    env.texels = env_texels;
-    env.marginal = env_marginal;
-    env.conditional = env_conditional;
-    TextureBuffers tex = texture_buffers(texels, texture_images, texture_views, texcoords, 0, 0);
-    LightSample ls = light_sample(lights, count, &env, &tex, ref.xyz, &s);
+    LightSample ls = light_sample(&kd, count, ref.xyz, &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }

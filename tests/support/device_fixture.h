@@ -1,40 +1,58 @@
-// Shared access to OpenCL device 0 for the device tests, plus helpers that compile test
-// kernels (tests/kernels/*.cl) together with the real kernel sources.
+// Shared access to OpenCL device 0 for the device tests: test programs assembled from
+// tests/kernels/*.cl (each includes the kernel files it tests), built with a typed feature
+// mask, and the scene arrays uploaded and bound exactly as a render does it
+// (render/device_arrays.h).
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "cl/cl_runtime.h"
-#include "render/environment.h"
-#include "shared_types.h"
+#include "cl/kernel_args.h"
+#include "features.h"
+#include "render/device_arrays.h"
+#include "types.h"
 
 namespace pathcl::test {
 
 // Device 0, opened once per test binary.
 ClDevice& test_device();
 
-// The real kernels plus tests/kernels/<file>, built with `defines`.
-cl::Program build_test_program(const std::string& file, const std::string& defines = "");
+// tests/kernels/<file>, assembled with the kernel tree and built with the feature mask
+// (FEATURE_* bits), and the patches (deliberately broken variants) applied.
+cl::Program build_test_program(const std::string& file, std::uint32_t features = 0,
+                               const std::vector<KernelPatch>& patches = {});
 
 std::string read_text_file(const std::string& path);
 
-// Texture data as the kernels read it (kernels/shared_types.h), for test kernels.
-struct TextureData {
-    std::vector<pcl_uint> texels;
-    std::vector<TextureImage> images;
-    std::vector<TextureView> views;
-    std::vector<TriangleTexcoords> texcoords;
-};
+// A read-only buffer holding `data` (one zeroed element when empty), and a read-back.
+template <typename T>
+cl::Buffer upload(const std::vector<T>& data)
+{
+    static const T zero{};
+    std::size_t bytes = std::max<std::size_t>(1, data.size()) * sizeof(T);
+    return cl::Buffer(test_device().context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
+                      const_cast<T*>(data.empty() ? &zero : data.data()));
+}
+
+template <typename T>
+std::vector<T> read_back(const cl::Buffer& buffer, std::size_t n)
+{
+    std::vector<T> out(n);
+    test_device().queue.enqueueReadBuffer(buffer, CL_TRUE, 0, n * sizeof(T), out.data());
+    return out;
+}
 
 // Runs test_light_sample (tests/kernels/trace_test_kernels.cl, built into `program`) once
-// per sample: light_sample from `ref` over `lights` (environment buffers from `env`, and
-// emissive textures from `textures`, if any). Each result is (direction, pdf), or zero
-// when there was no sample; the radiance each sample carries goes to `radiance` if given.
-std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const std::vector<Light>& lights,
-                                                const EnvironmentMap* env, glm::vec3 ref, std::uint32_t seed,
-                                                std::size_t n, std::vector<pcl_float4>* radiance = nullptr,
-                                                const TextureData* textures = nullptr);
+// per sample: light_sample from `ref` over the lights of `arrays` (with their light
+// distribution, environment and emissive textures). Each result is (direction, pdf), or
+// zero when there was no sample; the radiance each sample carries goes to `radiance` if
+// given.
+std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const SceneArrays& arrays, glm::vec3 ref,
+                                                std::uint32_t seed, std::size_t n,
+                                                std::vector<pcl_float4>* radiance = nullptr);
 
 } // namespace pathcl::test

@@ -9,7 +9,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "shared_types.h"
+#include "closure/layer_table.h"
+#include "types.h"
 
 namespace pathcl::test {
 

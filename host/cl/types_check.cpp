@@ -1,0 +1,34 @@
+// The host half of the shared-struct contract: sizes and offsets the kernels rely on
+// (kernels/types.h). A mismatch is a compile error, not a corrupted render.
+#include <cstddef>
+
+#include "types.h"
+
+namespace pathcl {
+
+static_assert(sizeof(pcl_float4) == 16 && alignof(pcl_float4) == 16);
+static_assert(sizeof(Ray) == 32);
+static_assert(sizeof(BvhNode) == 128 && offsetof(BvhNode, index) == 96 && offsetof(BvhNode, count) == 112);
+static_assert(sizeof(Triangle) == 48);
+static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);
+static_assert(sizeof(TriangleTexcoords) == 32 && offsetof(TriangleTexcoords, uv2) == 16);
+static_assert(sizeof(TriangleTangents) == 48);
+static_assert(sizeof(TriangleColors) == 48);
+static_assert(sizeof(TextureImage) == 16 && offsetof(TextureImage, format) == 12);
+static_assert(sizeof(TextureView) == 64 && offsetof(TextureView, image) == 32 && offsetof(TextureView, flags) == 48);
+static_assert(sizeof(Material) == 112 && offsetof(Material, metallic) == 48 && offsetof(Material, textures) == 72 &&
+              offsetof(Material, smooth_layer_average) == 100);
+static_assert(sizeof(TriangleLight) == 64 && offsetof(TriangleLight, area) == 48 &&
+              offsetof(TriangleLight, texture) == 56);
+static_assert(sizeof(PointLight) == 16 && sizeof(DirectionalLight) == 16 && sizeof(EnvironmentLight) == 16);
+static_assert(sizeof(SpotLight) == 48 && offsetof(SpotLight, cos_outer) == 32);
+static_assert(sizeof(RectSpotLight) == 64 && offsetof(RectSpotLight, tan_half_h) == 48);
+static_assert(sizeof(SphereLight) == 32 && offsetof(SphereLight, radius) == 16);
+static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80);
+static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) == 8);
+static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
+              offsetof(Camera, focus_distance) == 72);
+static_assert(sizeof(FrameParams) == 48 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40);
+static_assert(sizeof(FilmPixel) == 64);
+
+} // namespace pathcl

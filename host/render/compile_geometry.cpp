@@ -1,0 +1,54 @@
+// Geometry for the device: the BVH over the scene's triangles, the triangles in its leaf
+// order (positions for intersection, normals and material for shading), and the
+// optional per-vertex attributes in the same order.
+#include <chrono>
+
+#include "render/compile_scene.h"
+
+namespace pathcl {
+
+std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& out)
+{
+    auto start = std::chrono::steady_clock::now();
+    const std::size_t n = scene.triangles.size();
+    BvhBuildInput input;
+    input.box_min.resize(n);
+    input.box_max.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const SceneTriangle& t = scene.triangles[i];
+        input.box_min[i] = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
+        input.box_max[i] = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
+    }
+    out.bvh = build_bvh(input);
+    out.bvh_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    SceneArrays& a = out.arrays;
+    a.nodes = std::move(out.bvh.nodes);
+    const std::vector<std::uint32_t>& order = out.bvh.triangle_order;
+
+    a.triangles.resize(n);
+    a.shading.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const SceneTriangle& t = scene.triangles[order[i]];
+        a.triangles[i] = Triangle{to_float4(t.v[0]), to_float4(t.v[1]), to_float4(t.v[2])};
+        // The emitter index is set by compile_lights.
+        a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
+    }
+    if (out.features.has(FEATURE_NORMAL_MAPS)) {
+        a.tangents.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const TriangleTangent& t = scene.tangents[order[i]];
+            a.tangents[i] = {{t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w},
+                             {t[2].x, t[2].y, t[2].z, t[2].w}};
+        }
+    }
+    if (out.features.has(FEATURE_VERTEX_COLORS)) {
+        a.colors.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const TriangleColor& c = scene.colors[order[i]];
+            a.colors[i] = {to_float4(c[0]), to_float4(c[1]), to_float4(c[2])};
+        }
+    }
+    return order;
+}
+
+} // namespace pathcl

@@ -1,0 +1,31 @@
+// Materials for the device: one Material record per scene material (factors; the texture
+// slots are filled by compile_textures), and the layer albedo tables when a material has
+// a specular layer or transmission.
+#include "render/compile_scene.h"
+#include "render/layer_albedo.h"
+
+namespace pathcl {
+
+void compile_materials(const Scene& scene, const KernelFeatures& features, SceneArrays& arrays)
+{
+    for (const SceneMaterial& m : scene.materials) {
+        Material dm{};
+        dm.base_color = to_float4(m.base_color);
+        dm.emission = to_float4(m.emission);
+        dm.specular_color = to_float4(m.specular_color, m.specular);
+        dm.metallic = m.metallic;
+        dm.roughness = m.roughness;
+        dm.transmission = m.transmission;
+        dm.ior = m.ior;
+        dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u);
+        for (pcl_int& t : dm.textures)
+            t = TEXTURE_NONE;
+        dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
+        dm.normal_scale = m.normal_scale;
+        arrays.materials.push_back(dm);
+    }
+    if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION))
+        arrays.layer_albedo = layer_albedo_table();
+}
+
+} // namespace pathcl

@@ -1,0 +1,65 @@
+// The scene compiled for the device: every array the kernels read (render/device_arrays.h),
+// built by small named steps, one concept per file (LuxCore's compile*.cpp):
+//   compile_geometry.cpp   BVH, triangles in leaf order with their shading data, tangents, colours
+//   compile_materials.cpp  Material records
+//   compile_textures.cpp   texel buffer, images, views, texture-coordinate sets
+//   compile_lights.cpp     Light records and their powers (light_distribution.h turns the
+//                          powers into the pick probabilities and the alias table)
+//   environment.cpp        the environment map's texels and sampling distribution
+//   compile_camera.cpp     the Camera for an image size
+// compile_scene runs them in that order; only the steps the feature mask asks for fill
+// their arrays.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bvh/bvh_builder.h"
+#include "render/device_arrays.h"
+#include "render/kernel_features.h"
+#include "scene/scene.h"
+
+namespace pathcl {
+
+struct CompiledScene {
+    SceneArrays arrays; // the camera array is filled per image size (compile_camera)
+    KernelFeatures features;
+    // The light array's order: sphere lights first (rays test lights[0 .. sphere_count)
+    // directly), then emissive triangles (TriangleShading.emitter names them), punctual
+    // lights, and the environment last (environment_light; -1 if none).
+    std::size_t sphere_count = 0;
+    int environment_light = -1;
+    Bvh bvh; // depth and leaf figures (its nodes moved into arrays.nodes)
+    double bvh_build_seconds = 0.0;
+
+    std::size_t texel_bytes() const { return arrays.texels.size() * sizeof(pcl_uint); }
+};
+
+CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features);
+
+inline pcl_float4 to_float4(const glm::vec3& v, float w = 0.0f)
+{
+    return {v.x, v.y, v.z, w};
+}
+
+inline pcl_float4 to_float4(const glm::dvec3& v, float w = 0.0f)
+{
+    return to_float4(glm::vec3(v), w);
+}
+
+// The steps. leaf_order[i] is the scene triangle at BVH leaf position i.
+std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& out);
+void compile_materials(const Scene& scene, const KernelFeatures& features, SceneArrays& arrays);
+void compile_textures(const Scene& scene, const std::vector<std::uint32_t>& leaf_order, SceneArrays& arrays);
+// Fills lights (in the order CompiledScene describes), the emitter index of every
+// emissive triangle's shading record, and returns each light's power (luminance, W),
+// the weight it is picked with.
+std::vector<double> compile_lights(const Scene& scene, const std::vector<std::uint32_t>& leaf_order,
+                                   CompiledScene& out);
+
+// Camera for an image of the given size: yfov (orthographic: ymag) is kept; the
+// horizontal extent follows the image's aspect ratio.
+Camera compile_camera(const SceneCamera& camera, std::uint32_t width, std::uint32_t height);
+
+} // namespace pathcl

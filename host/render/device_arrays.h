@@ -1,0 +1,48 @@
+// The device arrays of a render on the host, generated from the one list both sides share
+// (kernels/data_arrays.h): the compiled scene's vectors, one device's buffers, and the
+// bind call that gives every render kernel the same arguments in the list's order. No
+// buffer is bound by position anywhere else.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "cl/cl_runtime.h"
+#include "cl/kernel_args.h"
+#include "data_arrays.h"
+#include "types.h"
+
+namespace pathcl {
+
+// One vector per scene array; an empty vector is uploaded as one zeroed element.
+struct SceneArrays {
+#define PATHCL_SCENE_VECTOR(type, name) std::vector<type> name;
+    PATHCL_SCENE_ARRAYS(PATHCL_SCENE_VECTOR)
+#undef PATHCL_SCENE_VECTOR
+};
+
+// Every array on one device: the scene's, uploaded, and the film's, allocated.
+struct DeviceArrays {
+#define PATHCL_DEVICE_BUFFER(type, name) cl::Buffer name;
+    PATHCL_SCENE_ARRAYS(PATHCL_DEVICE_BUFFER)
+    PATHCL_FILM_ARRAYS(PATHCL_DEVICE_BUFFER)
+#undef PATHCL_DEVICE_BUFFER
+};
+
+// Uploads the scene arrays and allocates film arrays for `pixels` pixels (blocking).
+DeviceArrays upload_arrays(const ClDevice& dev, const SceneArrays& scene, std::size_t pixels);
+
+// Sets the arguments of a kernel that takes the generated parameter list
+// (PATHCL_KERNEL_PARAMS): every array of the list in order, then `rest` (the render
+// kernels' FrameParams; a test kernel's own arguments).
+template <class... Rest>
+void bind_kernel(cl::Kernel& kernel, const DeviceArrays& a, const Rest&... rest)
+{
+#define PATHCL_ARGUMENT(type, name) a.name,
+    set_kernel_args(kernel, PATHCL_SCENE_ARRAYS(PATHCL_ARGUMENT) PATHCL_FILM_ARRAYS(PATHCL_ARGUMENT) rest...);
+#undef PATHCL_ARGUMENT
+}
+
+} // namespace pathcl

@@ -1,0 +1,98 @@
+/* Closest-hit and any-hit traversal of the four-wide BVH: one float4 slab test for the
+ * four children of a node, children entered nearest first.
+ *
+ * Floating-point contraction is off here as in triangle_intersect.cl: the box test's
+ * rounding allowance is derived for separately rounded operations. */
+#include "bvh/triangle_intersect.cl"
+#include "types.h"
+#include "util/math.cl"
+
+#pragma OPENCL FP_CONTRACT OFF
+
+typedef struct {
+    float t;
+    float b1, b2; /* barycentric weights of v1 and v2 */
+    int triangle; /* -1: no hit */
+} Hit;
+
+/* Slab tests against the four child boxes of a node at once (float4 lanes), with the far
+ * distance enlarged by 1 + 2 gamma(3) so that rounding never culls a box the ray touches
+ * (Ize 2013). Returns each child's entry distance, INFINITY where the ray misses it. */
+static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, float tmax)
+{
+    float4 ox = (float4)(r->origin.x), oy = (float4)(r->origin.y), oz = (float4)(r->origin.z);
+    float4 ix = (float4)(r->inv_dir.x), iy = (float4)(r->inv_dir.y), iz = (float4)(r->inv_dir.z);
+    float4 t0x = (node->lo_x - ox) * ix, t1x = (node->hi_x - ox) * ix;
+    float4 t0y = (node->lo_y - oy) * iy, t1y = (node->hi_y - oy) * iy;
+    float4 t0z = (node->lo_z - oz) * iz, t1z = (node->hi_z - oz) * iz;
+    float4 tnear = fmax(fmax(fmin(t0x, t1x), fmin(t0y, t1y)), fmax(fmin(t0z, t1z), (float4)(0.0f)));
+    float4 tfar = fmin(fmin(fmax(t0x, t1x), fmax(t0y, t1y)), fmin(fmax(t0z, t1z), (float4)(tmax)));
+    tfar *= 1.0f + 2.0f * FLOAT_GAMMA(3);
+    return select((float4)(INFINITY), tnear, islessequal(tnear, tfar));
+}
+
+/* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
+ * (shadow rays). Children are visited nearest entry first; the others wait on the stack
+ * with their entry distance and are dropped once a closer hit is known. */
+static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
+                            float3 origin, float3 dir, float t_max, bool any_hit)
+{
+    RayTraversal r = ray_traversal_setup(origin, dir);
+    Hit hit;
+    hit.t = t_max;
+    hit.b1 = 0.0f;
+    hit.b2 = 0.0f;
+    hit.triangle = -1;
+
+    int2 stack[BVH_STACK_SIZE];
+    float stack_entry[BVH_STACK_SIZE];
+    int sp = 0;
+    int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
+    for (;;) {
+        if (cur.y > 0) {
+            for (int i = cur.x; i < cur.x + cur.y; ++i) {
+                float t, b1, b2;
+                if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
+                    hit.t = t;
+                    hit.b1 = b1;
+                    hit.b2 = b2;
+                    hit.triangle = i;
+                    if (any_hit)
+                        return hit;
+                }
+            }
+        } else {
+            BvhNode node = nodes[cur.x];
+            float4 entry = ray_box_entry4(&r, &node, hit.t);
+            float e[4] = {entry.x, entry.y, entry.z, entry.w};
+            int index[4] = {node.index.x, node.index.y, node.index.z, node.index.w};
+            int count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
+            /* Push every child the ray enters, farthest first, and continue with the
+             * nearest (popped at once): a small insertion sort on the entry distance. */
+            int base = sp;
+            for (int j = 0; j < 4; ++j) {
+                if (e[j] == INFINITY || index[j] < 0)
+                    continue;
+                int k = sp++;
+                while (k > base && stack_entry[k - 1] < e[j]) {
+                    stack[k] = stack[k - 1];
+                    stack_entry[k] = stack_entry[k - 1];
+                    --k;
+                }
+                stack[k] = (int2)(index[j], count[j]);
+                stack_entry[k] = e[j];
+            }
+        }
+        /* The next child the ray still reaches before its closest hit so far (with the
+         * box test's own allowance for rounding, so no box that a closer hit could lie in
+         * is skipped). */
+        do {
+            if (sp == 0)
+                return hit;
+            --sp;
+        } while (stack_entry[sp] > hit.t * (1.0f + 2.0f * FLOAT_GAMMA(3)));
+        cur = stack[sp];
+    }
+}
+
+#pragma OPENCL FP_CONTRACT ON

@@ -1,0 +1,132 @@
+/* The material model: glTF's metallic-roughness BSDF at a shading point (bsdf_params),
+ * evaluated by closure/bsdf_eval.cl and sampled by closure/bsdf_sample.cl.
+ *
+ * Directions are world-space unit vectors; wo points away from the surface, towards the
+ * previous vertex. The shading point has ng and ns on wo's side. A direction is reflected
+ * only if it lies above the shading surface and above the geometric one (or the point
+ * is lifted onto the smooth surface, see above_surface in geom/ray_offset.cl), and transmitted
+ * only if it lies below both: that keeps shading normals from leaking light through
+ * geometry.
+ *
+ * The material model is glTF's metallic-roughness BSDF (glTF 2.0 appendix B) with
+ * KHR_materials_specular, _transmission, _ior and _volume:
+ *
+ *   f = metallic       * F_schlick(base_color, wo.h) * spec
+ *     + (1 - metallic) * [ F_d(wo.h) * spec
+ *                          + (1 - transmission) * base_color / pi * K(wo, wi)
+ *                          + transmission * (1 - max(F_d(wo.h))) * base_color * btdf ]
+ *
+ * spec is the GGX microfacet reflection D G / (4 |cos_o| |cos_i|) with alpha = roughness^2
+ * and separable Smith G = G1(wo) G1(wi); btdf is Walter et al.'s rough dielectric
+ * transmission (a solid, KHR_materials_volume thickness > 0) or the reflection lobe
+ * mirrored through the surface (thin-walled: light passes without bending). The
+ * dielectric Fresnel term follows KHR_materials_specular, with the exact dielectric
+ * Fresnel curve in place of Schlick's (1 - c)^5, so total internal reflection is exact:
+ *
+ *   F_d(c) = specular * (F0c + (1 - F0c) s(c)),  F0c = min(F0(ior) * specular_color, 1),
+ *   s(c) = (F_exact(c, eta) - F0) / (1 - F0)   (0 at normal incidence, 1 at grazing/TIR)
+ *
+ * With specular_color 1 this is specular * F_exact; with specular 0 a dielectric is
+ * exactly Lambertian. Below alpha ALPHA_DELTA the specular lobes are delta functions
+ * (ideal mirror and glass): sampled, never evaluated, so no light sampling at such lobes.
+ *
+ * The diffuse base under the dielectric layer gets what the layer does not reflect, by
+ * reciprocal albedo scaling (Kelemen and Szirmay-Kalos 2001):
+ *
+ *   K(wo, wi) = (1 - E(cos_o)) (1 - E(cos_i)) / (1 - E_avg)
+ *
+ * with E the layer's directional albedo (tabulated, see closure/layer_table.h; the
+ * exact Fresnel curve for a smooth layer) and E_avg its cosine-weighted average. glTF's
+ * own weight (1 - max(F_d(wo.h))) is not energy-conserving: a white rough plastic then
+ * reflects up to 1.3 times the light it receives at grazing incidence. With K a white
+ * plastic reflects exactly all of it (f is reciprocal, and the diffuse albedo from wo is
+ * base_color (1 - E(cos_o))). Inside a solid there is no diffuse base.
+ *
+ * Multiple scattering between microfacets, which single-scattering GGX drops (a white
+ * rough metal or glass would lose up to ~20 % of the light), is restored: conductors get
+ * Kulla and Conty's (2017) reciprocal lobe F_ms (1 - E_ss(cos_o))(1 - E_ss(cos_i)) /
+ * (pi (1 - E_ss_avg)); a rough dielectric interface with the exact Fresnel factor has its
+ * reflection and refraction divided by its energy albedo G(cos_o) from the side of wo
+ * (Turquin 2019; tabulated, LAYER_TABLE_GLASS_*). FEATURE_SINGLE_SCATTERING turns this
+ * off (pbrt's and Mitsuba's model, for cross-checks).
+ *
+ * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
+ * the interface with probabilities estimated from their albedos at the macro normal
+ * (computed once per shading point by bsdf_params); the GGX lobes sample a visible
+ * facet (Dupuy and Benyoub 2023), and the interface then reflects or refracts by that
+ * facet's own energy split (as pbrt does), so refraction under the macro critical angle
+ * is still sampled well. The weight is f cos / pdf with f and pdf summed over every
+ * non-delta lobe: exactly what bsdf_eval returns, divided by its pdf.
+ *
+ * Scenes whose materials are all Lambertian compile only the Lambertian code (no
+ * PATHCL_HAS_GLOSSY / PATHCL_HAS_TRANSMISSION): they pay nothing for the rest. */
+#include "closure/bsdf_eval.cl"
+#include "closure/bsdf_params.cl"
+#include "closure/bsdf_sample.cl"
+#include "closure/layer_albedo.cl"
+#include "closure/layer_table.h"
+#include "closure/lobes.cl"
+#include "features.h"
+#include "geom/surface_point.cl"
+#include "types.h"
+#include "util/math.cl"
+
+/* The BSDF at a shading point seen from wo. layer: the LAYER_* tables. */
+static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, float3 wo,
+                                     __global const float* layer)
+{
+    BsdfParams p;
+    p.base_color = m->base_color.xyz;
+    p.specular_color = m->specular_color.xyz;
+    p.specular = m->specular_color.w;
+    p.metallic = m->metallic;
+    p.alpha = m->roughness * m->roughness;
+    p.transmission = m->transmission;
+    p.thin = (m->flags & MATERIAL_THIN_WALLED) != 0u;
+    /* A solid's geometric normal points out of it: a back-face hit is from inside. */
+    p.inside = !p.thin && !sp->front_face && m->transmission > 0.0f;
+    p.eta = p.inside ? 1.0f / m->ior : m->ior;
+#ifdef PATHCL_FULL_BSDF
+    float r = (m->ior - 1.0f) / (m->ior + 1.0f);
+    p.f0c = fmin(r * r * p.specular_color, (float3)(1.0f));
+    p.layer = layer;
+    p.layer_r = m->roughness * (float)(LAYER_ROUGH_RES - 1);
+    p.layer_x = clamp(r / LAYER_X_MAX, 0.0f, 1.0f) * (float)(LAYER_ETA_RES - 1);
+    p.cos_o = clamp(dot(wo, sp->ns), 0.0f, 1.0f);
+    p.glass_scale = 1.0f;
+    p.ms_scale = p.ms_albedo = (float3)(0.0f);
+    p.ess_o = 1.0f;
+#ifndef PATHCL_SINGLE_SCATTERING
+    if (p.alpha >= ALPHA_DELTA) {
+        /* Energy lost to masking, restored (multiple-scattering compensation). */
+        p.ess_o = ess_albedo(&p, p.cos_o);
+        if (p.metallic > 0.0f) {
+            /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
+            int r0 = min((int)p.layer_r, LAYER_ROUGH_RES - 2);
+            float e_avg = mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
+            float3 f_avg = p.base_color + (1.0f - p.base_color) * (1.0f / 21.0f);
+            float3 f_ms = f_avg * f_avg * e_avg / (1.0f - f_avg * (1.0f - e_avg));
+            if (1.0f - e_avg > 1e-4f) { /* else the loss is below 1e-4: nothing to restore */
+                p.ms_scale = p.metallic * f_ms * INV_PI / (1.0f - e_avg);
+                p.ms_albedo = p.metallic * f_ms * (1.0f - p.ess_o);
+            }
+        }
+        /* A rough interface with the exact Fresnel factor (specular 1, white specular
+         * colour) loses 1 - G(cos_o); its lobes are divided by G, as Turquin (2019) does.
+         * A thin sheet's lobe pair has the reflection lobe's albedo E_ss. */
+        bool exact_fresnel = p.specular == 1.0f && all(p.specular_color == (float3)(1.0f));
+        if (p.transmission > 0.0f && exact_fresnel) {
+            float g = p.thin ? p.ess_o : interface_albedo(&p, p.cos_o);
+            p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
+        }
+    }
+#endif
+    p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
+    float3 one_minus_avg = 1.0f - layer_average(&p, m);
+    float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
+    /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
+    p.diffuse_scale = select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
+    p.lobes = choose_lobes(&p);
+#endif
+    return p;
+}

@@ -1,0 +1,109 @@
+/* BSDF evaluation: f cos theta_i and the pdf of sampling wi, summed over the non-delta
+ * lobes. A direction is reflected only above both the shading and the geometric surface
+ * (or from a lifted point, geom/ray_offset.cl), transmitted only below both. */
+#include "closure/bsdf_params.cl"
+#include "closure/fresnel_layer.cl"
+#include "closure/layer_albedo.cl"
+#include "closure/lobes.cl"
+#include "closure/microfacet.cl"
+#include "features.h"
+#include "geom/ray_offset.cl"
+#include "util/math.cl"
+
+#ifdef PATHCL_FULL_BSDF
+
+/* Local-frame evaluation of the non-delta lobes; wo.z > 0 is not required (shading
+ * normals), the rough lobes vanish where it fails. */
+static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi, bool reflect)
+{
+    BsdfEval e;
+    e.f_cos = (float3)(0.0f);
+    e.pdf = 0.0f;
+    bool rough = p->alpha >= ALPHA_DELTA;
+    float a2 = p->alpha * p->alpha;
+    if (reflect) {
+        e.pdf = p->lobes.diffuse * wi.z * INV_PI; /* the diffuse and multiple-scattering lobes */
+        if (!p->inside) {
+            float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo(p, wi.z));
+            e.f_cos = p->diffuse_scale * k * wi.z;
+        }
+        if (rough && p->metallic > 0.0f) {
+            /* Kulla and Conty's multiple-scattering lobe: reciprocal, and with it a white
+             * rough conductor reflects everything. Sampled with the diffuse lobe. */
+            e.f_cos += p->ms_scale * ((1.0f - p->ess_o) * (1.0f - ess_albedo(p, wi.z)) * wi.z);
+        }
+        if (rough && wo.z > 0.0f) {
+            float3 h = wo + wi;
+            float len = length(h);
+            if (!(len > 0.0f))
+                return e;
+            h /= len;
+            float cos_h = fabs(dot(wo, h));
+            float3 fr = fresnel_reflection(p, cos_h, fresnel_specular_layer(p, cos_h));
+            e.f_cos += fr * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
+            float select = p->lobes.conductor + p->lobes.interface * interface_split(p, cos_h);
+            e.pdf += select * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
+        }
+        return e;
+    }
+    if (!rough || !(wo.z > 0.0f) || p->transmission <= 0.0f)
+        return e;
+    float3 wm;
+    float dwm_dwi; /* Jacobian of the half vector map */
+    float btdf;    /* f cos / (base colour x transmission weight) */
+    if (p->thin) {
+        /* Thin-walled: the reflection lobe mirrored through the surface. */
+        float3 wr = (float3)(wi.x, wi.y, -wi.z);
+        wm = normalize(wo + wr);
+        float c = dot(wo, wm);
+        if (!(c > 0.0f))
+            return e;
+        dwm_dwi = 1.0f / (4.0f * c);
+        btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z);
+    } else {
+        /* Walter et al. 2007; radiance is divided by eta^2 as it crosses. */
+        wm = normalize(wi * p->eta + wo);
+        if (wm.z < 0.0f)
+            wm = -wm;
+        float dot_i = dot(wi, wm), dot_o = dot(wo, wm);
+        if (!(dot_o > 0.0f) || !(dot_i < 0.0f))
+            return e;
+        float denom = dot_i + dot_o / p->eta;
+        denom *= denom;
+        dwm_dwi = -dot_i / denom;
+        btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) * fabs(dot_i * dot_o) /
+               (wo.z * denom * p->eta * p->eta);
+    }
+    float c = dot(wo, wm);
+    float3 f_layer = fresnel_specular_layer(p, c);
+    float t = base_weight(p, f_layer) * p->transmission * p->glass_scale;
+    e.f_cos = p->base_color * (t * btdf);
+    e.pdf = p->lobes.interface * (1.0f - interface_split(p, c)) * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
+    return e;
+}
+
+#endif /* PATHCL_FULL_BSDF */
+
+static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
+{
+    BsdfEval e;
+    e.f_cos = (float3)(0.0f);
+    e.pdf = 0.0f;
+    float cos_i = dot(wi, sp->ns), cos_ig = dot(wi, sp->ng);
+#ifndef PATHCL_FULL_BSDF
+    /* Lambertian with albedo = base colour. */
+    if (cos_i <= 0.0f || !above_surface(sp, cos_ig))
+        return e;
+    e.f_cos = p->base_color * (INV_PI * cos_i);
+    e.pdf = cos_i * INV_PI;
+    return e;
+#else
+    bool reflect = cos_i > 0.0f && above_surface(sp, cos_ig);
+    bool transmit = cos_i < 0.0f && cos_ig < 0.0f;
+    if (!reflect && !transmit)
+        return e;
+    float3 t, b;
+    make_basis(sp->ns, &t, &b);
+    return bsdf_eval_local(p, to_local(wo, t, b, sp->ns), to_local(wi, t, b, sp->ns), reflect);
+#endif
+}

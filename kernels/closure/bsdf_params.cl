@@ -1,0 +1,69 @@
+/* The BSDF at one shading point, for one wo (BsdfParams), and what sampling and
+ * evaluation return. bsdf_params (closure/bsdf.cl) fills it from the Material once per
+ * shading point, so lobe choices, layer albedos and multiple-scattering scales are
+ * computed once, not per evaluation. */
+#include "features.h"
+#include "types.h"
+
+/* GGX alpha below which the specular lobes are delta functions (pbrt-v4 uses the same). */
+#define ALPHA_DELTA 1.0e-3f
+/* Smallest selection probability estimate of a rough specular or transmission lobe that
+ * exists: the estimates come from the macro normal, the lobes from the microfacets. */
+#define LOBE_ESTIMATE_FLOOR 0.02f
+
+typedef struct {
+    float3 wi;
+    float3 weight; /* f cos / pdf */
+    float pdf;     /* solid angle; 0: no sample. For a delta lobe: its selection probability */
+    float eta2;    /* eta^2 when wi refracted into a solid (the weight holds 1/eta^2), else 1 */
+    bool delta;
+} BsdfSample;
+
+typedef struct {
+    float3 f_cos; /* f * |cos theta_i|, non-delta lobes only */
+    float pdf;    /* of bsdf_sample producing wi */
+} BsdfEval;
+
+/* Lobe selection probabilities for sampling: the diffuse base (with the conductor's
+ * multiple-scattering lobe), the conductor's GGX reflection, and the dielectric interface
+ * (its reflection and refraction, split per facet by interface_split). */
+typedef struct {
+    float diffuse, conductor, interface;
+} LobeChoice;
+
+/* The material at one shading point, for one wo (textures, when present, are applied
+ * here). */
+typedef struct {
+    float3 base_color;
+    float3 specular_color; /* KHR_materials_specular colour */
+    float specular;        /* KHR_materials_specular weight */
+    float metallic;
+    float alpha;           /* GGX alpha = roughness^2 */
+    float transmission;
+    float eta;   /* ior of the side wi refracts into over ior of wo's side (thin: ior) */
+    bool thin;   /* thin-walled: transmitted light does not bend */
+    bool inside; /* wo is inside a solid: no diffuse base */
+#ifdef PATHCL_FULL_BSDF
+    float3 f0c;           /* min(F0(ior) specular_color, 1) */
+    float3 diffuse_scale; /* (1 - metallic)(1 - transmission) base / (pi (1 - E_avg)) */
+    float3 layer_o;       /* E(cos_o): the dielectric layer's albedo from wo */
+    float cos_o;          /* wo against the shading normal, >= 0 */
+    __global const float* layer; /* LAYER_* tables */
+    float layer_r, layer_x;      /* continuous table coordinates of roughness and ior */
+    float ess_o;                 /* GGX albedo with Fresnel 1 from wo (rough lobes) */
+    float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
+    float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
+    float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
+    LobeChoice lobes;
+#endif
+} BsdfParams;
+
+/* Every lobe of the material is a delta function: light sampling cannot help there. */
+static inline bool bsdf_is_delta(const BsdfParams* p)
+{
+#ifdef PATHCL_FULL_BSDF
+    return p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
+#else
+    return false;
+#endif
+}

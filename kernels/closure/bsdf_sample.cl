@@ -1,0 +1,111 @@
+/* BSDF sampling: a lobe by its estimated albedo, then a direction (cosine-weighted for the
+ * diffuse base, a visible GGX facet for the specular lobes, reflection or refraction by
+ * the facet's own Fresnel split), with weight f cos / pdf over every non-delta lobe. */
+#include "closure/bsdf_eval.cl"
+#include "closure/bsdf_params.cl"
+#include "closure/fresnel_layer.cl"
+#include "closure/microfacet.cl"
+#include "features.h"
+#include "geom/ray_offset.cl"
+#include "sample/warp.cl"
+#include "util/math.cl"
+
+/* u_lobe picks the lobe, u samples it. */
+static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe,
+                                     float2 u)
+{
+    BsdfSample s;
+    s.delta = false;
+    s.pdf = 0.0f;
+    s.eta2 = 1.0f;
+    s.weight = (float3)(0.0f);
+    float3 t, b;
+    make_basis(sp->ns, &t, &b);
+#ifndef PATHCL_FULL_BSDF
+    float3 wi = sample_cosine_hemisphere(u);
+    s.wi = to_world(wi, t, b, sp->ns);
+    if (wi.z <= 0.0f || !above_surface(sp, dot(s.wi, sp->ng)))
+        return s;
+    s.pdf = wi.z * INV_PI;
+    s.weight = p->base_color; /* (albedo / pi) cos / (cos / pi) */
+    return s;
+#else
+    float3 wo_l = to_local(wo, t, b, sp->ns);
+    const LobeChoice lobes = p->lobes;
+    bool rough = p->alpha >= ALPHA_DELTA;
+    float3 wi;
+    bool reflect = true;
+    if (u_lobe < lobes.diffuse) {
+        wi = sample_cosine_hemisphere(u);
+    } else if (u_lobe < lobes.diffuse + lobes.conductor) {
+        if (!rough) {
+            /* Ideal mirror: weight F / (selection probability). */
+            wi = (float3)(-wo_l.x, -wo_l.y, wo_l.z);
+            s.wi = to_world(wi, t, b, sp->ns);
+            if (!(wi.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
+                return s;
+            s.delta = true;
+            s.pdf = lobes.conductor;
+            s.weight = p->metallic * fresnel_schlick(p->base_color, p->cos_o) / lobes.conductor;
+            return s;
+        }
+        if (!(wo_l.z > 0.0f))
+            return s;
+        float3 wm = ggx_sample_visible(wo_l, p->alpha, u);
+        wi = 2.0f * dot(wo_l, wm) * wm - wo_l;
+    } else {
+        /* The interface: a visible facet, then reflection or refraction by its own split;
+         * the rest of u_lobe's interval is the uniform number for that choice. */
+        if (!(wo_l.z > 0.0f) || !(lobes.interface > 0.0f))
+            return s;
+        float3 wm = rough ? ggx_sample_visible(wo_l, p->alpha, u) : (float3)(0.0f, 0.0f, 1.0f);
+        float c = dot(wo_l, wm);
+        float split = interface_split(p, c);
+        float u_split = (u_lobe - lobes.diffuse - lobes.conductor) / lobes.interface;
+        reflect = u_split < split;
+        if (reflect) {
+            wi = 2.0f * c * wm - wo_l;
+        } else if (p->thin) {
+            wi = 2.0f * c * wm - wo_l;
+            wi.z = -wi.z;
+        } else if (!refract_dir(wo_l, wm, p->eta, &wi)) {
+            return s; /* not reached: total internal reflection makes the split 1 */
+        }
+        if (!rough) {
+            /* Ideal coat, glass or thin sheet: weight (F or T) / (selection probability);
+             * radiance is scaled by 1/eta^2 when it crosses into a solid. */
+            s.wi = to_world(wi, t, b, sp->ns);
+            float cos_ig = dot(s.wi, sp->ng);
+            if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
+                return s;
+            float3 f_layer = fresnel_specular_layer(p, c);
+            s.delta = true;
+            if (reflect) {
+                s.pdf = lobes.interface * split;
+                s.weight = (1.0f - p->metallic) * f_layer / s.pdf;
+            } else {
+                float tw = base_weight(p, f_layer) * p->transmission;
+                if (!p->thin) {
+                    s.eta2 = p->eta * p->eta;
+                    tw /= s.eta2;
+                }
+                s.pdf = lobes.interface * (1.0f - split);
+                s.weight = p->base_color * (tw / s.pdf);
+            }
+            return s;
+        }
+    }
+    s.wi = to_world(wi, t, b, sp->ns);
+    float cos_ig = dot(s.wi, sp->ng);
+    if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
+        return s;
+    BsdfEval e = bsdf_eval_local(p, wo_l, wi, reflect);
+    if (!(e.pdf > 0.0f))
+        return s;
+    s.pdf = e.pdf;
+    s.weight = e.f_cos / e.pdf;
+    if (!reflect && !p->thin)
+        s.eta2 = p->eta * p->eta;
+    return s;
+#endif
+}

@@ -1,0 +1,28 @@
+/* The GGX (Trowbridge-Reitz) microfacet distribution and its Smith masking function,
+ * written once for the kernels (float) and the host's layer albedo tables (double). Local
+ * frame: z is the macro normal. */
+#ifndef PATHCL_CLOSURE_GGX_H
+#define PATHCL_CLOSURE_GGX_H
+
+#include "util/compat.h"
+
+PATHCL_BEGIN
+
+/* GGX normal distribution D(wm) for alpha^2 = a2 (wm.z > 0). Written with sin^2 = x^2 + y^2
+ * so that tiny alpha keeps its precision near the peak. */
+PATHCL_FN pcl_real ggx_d(pcl_real3 wm, pcl_real a2)
+{
+    pcl_real d = wm.x * wm.x + wm.y * wm.y + wm.z * wm.z * a2;
+    return a2 / (PCL_REAL(3.14159265358979324) * d * d);
+}
+
+/* Smith masking G1 = 1 / (1 + Lambda) = 2 |cos| / (|cos| + sqrt(cos^2 + a^2 sin^2)). */
+PATHCL_FN pcl_real ggx_g1(pcl_real3 w, pcl_real a2)
+{
+    pcl_real c = fabs(w.z);
+    return PCL_REAL(2.0) * c / (c + sqrt(w.z * w.z + a2 * (w.x * w.x + w.y * w.y)));
+}
+
+PATHCL_END
+
+#endif

@@ -1,0 +1,79 @@
+/* Lookups in the layer albedo tables (closure/layer_table.h): the GGX lobe's albedo, the
+ * rough dielectric interface's energy albedo, and the dielectric layer's directional
+ * albedo E and its average, linear in sqrt(cos theta), roughness and ior. */
+#include "closure/bsdf_params.cl"
+#include "closure/fresnel_layer.cl"
+#include "closure/layer_table.h"
+#include "features.h"
+
+#ifdef PATHCL_FULL_BSDF
+
+/* Bilinear lookup in a rows x cols block of the layer table at continuous (row, col). */
+static inline float layer_bilinear(__global const float* t, int offset, int cols, float row, int rows, float col)
+{
+    int r0 = min((int)row, rows - 2), c0 = min((int)col, cols - 2);
+    float fr = row - (float)r0, fc = col - (float)c0;
+    __global const float* a = t + offset + r0 * cols + c0;
+    float top = mix(a[0], a[1], fc), bottom = mix(a[cols], a[cols + 1], fc);
+    return mix(top, bottom, fr);
+}
+
+/* The GGX reflection lobe's albedo with Fresnel 1 from cos theta (rough lobes only). */
+static inline float ess_albedo(const BsdfParams* p, float mu)
+{
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    return layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+}
+
+/* The rough dielectric interface's energy albedo (reflection plus refraction) from cos
+ * theta, outside or inside the solid. */
+static inline float interface_albedo(const BsdfParams* p, float mu)
+{
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    float x = p->layer_x * (float)(LAYER_GLASS_ETA_RES - 1) / (float)(LAYER_ETA_RES - 1);
+    int x0 = min((int)x, LAYER_GLASS_ETA_RES - 2);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    int base = p->inside ? LAYER_TABLE_GLASS_IN : LAYER_TABLE_GLASS_OUT;
+    float g0 = layer_bilinear(p->layer, base + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float g1 = layer_bilinear(p->layer, base + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    return mix(g0, g1, x - (float)x0);
+}
+
+/* The dielectric layer's directional albedo E(cos theta), per channel: exact for a
+ * smooth layer, else interpolated from the tables (linear in sqrt(cos), roughness, x). */
+static inline float3 layer_albedo(const BsdfParams* p, float mu)
+{
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f); /* no layer: the base is exactly Lambertian, no lookups */
+    if (p->alpha < ALPHA_DELTA)
+        return fresnel_specular_layer(p, mu);
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    int x0 = min((int)p->layer_x, LAYER_ETA_RES - 2);
+    float fx = p->layer_x - (float)x0;
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    float b = mix(b0, b1, fx);
+    return p->specular * (p->f0c * (e_ss - b) + b);
+}
+
+/* Its cosine-weighted hemispherical average E_avg. */
+static inline float3 layer_average(const BsdfParams* p, const Material* m)
+{
+    float e_ss, b;
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f);
+    if (p->alpha < ALPHA_DELTA) {
+        e_ss = 1.0f;
+        b = m->smooth_layer_average;
+    } else {
+        int r0 = min((int)p->layer_r, LAYER_ROUGH_RES - 2);
+        float fr = p->layer_r - (float)r0;
+        e_ss = mix(p->layer[LAYER_TABLE_ESS_AVG + r0], p->layer[LAYER_TABLE_ESS_AVG + r0 + 1], fr);
+        b = layer_bilinear(p->layer, LAYER_TABLE_B_AVG, LAYER_ROUGH_RES, p->layer_x, LAYER_ETA_RES, p->layer_r);
+    }
+    return p->specular * (p->f0c * (e_ss - b) + b);
+}
+
+#endif /* PATHCL_FULL_BSDF */

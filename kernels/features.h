@@ -1,0 +1,89 @@
+/* Kernel features: what a program is compiled for, so that a scene pays only for the
+ * effects it uses (MISSION.md, promise 3). Every feature bit and every guard derived from
+ * the bits is defined here and nowhere else.
+ *
+ * The host computes one mask for a render (host/render/kernel_features.cpp) and passes it
+ * as the one define -DPATHCL_FEATURES=<mask>; this file turns the mask into the
+ * PATHCL_HAS_* guards the kernel files test. A program built without the define gets no
+ * optional feature (the sample visualizer's). */
+#ifndef PATHCL_FEATURES_H
+#define PATHCL_FEATURES_H
+
+/* Scene features: the host sets a bit when the scene has the effect. */
+#define FEATURE_AREA_LIGHTS (1u << 0)        /* an emissive triangle */
+#define FEATURE_POINT_LIGHTS (1u << 1)       /* a KHR_lights_punctual point light */
+#define FEATURE_SPOT_LIGHTS (1u << 2)        /* a cone or rectangular spot light */
+#define FEATURE_DIRECTIONAL_LIGHTS (1u << 3) /* a directional light */
+#define FEATURE_SPHERE_LIGHTS (1u << 4)      /* a point light with a radius */
+#define FEATURE_ENVIRONMENT (1u << 5)        /* an environment map or constant background */
+#define FEATURE_GLOSSY (1u << 6)             /* a material with a specular lobe (metal or dielectric layer) */
+#define FEATURE_TRANSMISSION (1u << 7)       /* a material with KHR_materials_transmission > 0 */
+#define FEATURE_TEXTURES (1u << 8)           /* a material with a texture */
+#define FEATURE_NORMAL_MAPS (1u << 9)        /* a material with a normal texture */
+#define FEATURE_VERTEX_COLORS (1u << 10)     /* a primitive with COLOR_0 */
+#define FEATURE_THIN_LENS (1u << 11)         /* the camera has an aperture (depth of field) */
+/* Model options: set by a render option, not by the scene. */
+#define FEATURE_SINGLE_SCATTERING (1u << 12) /* no multiple-scattering compensation (pbrt's, Mitsuba's model) */
+#define FEATURE_ALL ((1u << 13) - 1u)
+
+#ifdef __OPENCL_C_VERSION__
+
+#ifndef PATHCL_FEATURES
+#define PATHCL_FEATURES 0u
+#endif
+
+#if PATHCL_FEATURES & FEATURE_AREA_LIGHTS
+#define PATHCL_HAS_AREA_LIGHTS
+#endif
+#if PATHCL_FEATURES & FEATURE_POINT_LIGHTS
+#define PATHCL_HAS_POINT_LIGHTS
+#endif
+#if PATHCL_FEATURES & FEATURE_SPOT_LIGHTS
+#define PATHCL_HAS_SPOT_LIGHTS
+#endif
+#if PATHCL_FEATURES & FEATURE_DIRECTIONAL_LIGHTS
+#define PATHCL_HAS_DIRECTIONAL_LIGHTS
+#endif
+#if PATHCL_FEATURES & FEATURE_SPHERE_LIGHTS
+#define PATHCL_HAS_SPHERE_LIGHTS
+#endif
+#if PATHCL_FEATURES & FEATURE_ENVIRONMENT
+#define PATHCL_HAS_ENVIRONMENT
+#endif
+#if PATHCL_FEATURES & FEATURE_GLOSSY
+#define PATHCL_HAS_GLOSSY
+#endif
+#if PATHCL_FEATURES & FEATURE_TRANSMISSION
+#define PATHCL_HAS_TRANSMISSION
+#endif
+#if PATHCL_FEATURES & FEATURE_TEXTURES
+#define PATHCL_HAS_TEXTURES
+#endif
+#if PATHCL_FEATURES & FEATURE_NORMAL_MAPS
+#define PATHCL_HAS_NORMAL_MAPS
+#endif
+#if PATHCL_FEATURES & FEATURE_VERTEX_COLORS
+#define PATHCL_HAS_VERTEX_COLORS
+#endif
+#if PATHCL_FEATURES & FEATURE_THIN_LENS
+#define PATHCL_HAS_THIN_LENS
+#endif
+#if PATHCL_FEATURES & FEATURE_SINGLE_SCATTERING
+#define PATHCL_SINGLE_SCATTERING
+#endif
+
+/* Derived guards. */
+#if PATHCL_FEATURES & (FEATURE_AREA_LIGHTS | FEATURE_POINT_LIGHTS | FEATURE_SPOT_LIGHTS | \
+                       FEATURE_DIRECTIONAL_LIGHTS | FEATURE_SPHERE_LIGHTS | FEATURE_ENVIRONMENT)
+#define PATHCL_HAS_LIGHTS /* next event estimation */
+#endif
+#if PATHCL_FEATURES & (FEATURE_GLOSSY | FEATURE_TRANSMISSION)
+#define PATHCL_FULL_BSDF /* the whole glTF BSDF; else Lambertian only */
+#endif
+#if PATHCL_FEATURES & (FEATURE_TEXTURES | FEATURE_VERTEX_COLORS)
+#define PATHCL_HAS_MATERIAL_INPUTS /* per-hit material inputs (texels, vertex colours) */
+#endif
+
+#endif /* __OPENCL_C_VERSION__ */
+
+#endif

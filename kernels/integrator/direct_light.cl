@@ -1,0 +1,59 @@
+/* Next event estimation: one shadow ray to a point on a light picked in proportion to its
+ * power, its contribution weighted against BSDF sampling of the same direction. */
+#include "closure/bsdf.cl"
+#include "features.h"
+#include "geom/ray_offset.cl"
+#include "integrator/intersect_shadow.cl"
+#include "integrator/mis.cl"
+#include "integrator/path_state.cl"
+#include "integrator/shade_surface.cl"
+#include "kernel_data.cl"
+#include "light/light_sample.cl"
+#include "sample/dimensions.h"
+#include "util/math.cl"
+
+#ifdef PATHCL_HAS_LIGHTS
+
+/* Whether the strategy samples a light at this vertex (never where every lobe is a delta
+ * function: no light sample can land in one). */
+static inline bool direct_light_wanted(const FrameParams* frame, const ShadingPoint* s, bool technique_light)
+{
+    return frame->light_count > 0u && frame->strategy != STRATEGY_BSDF &&
+           (frame->strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&s->bsdf);
+}
+
+/* Adds the light sample's contribution to the path's radiance. `dims` is the bounce's
+ * first sampler dimension. */
+static inline void direct_light(const KernelData* kd, const FrameParams* frame, PathState* ps, const ShadingPoint* s,
+                                float3 wo, bool technique_light, uint dims, SamplerState* sampler)
+{
+    const SurfacePoint* sp = &s->sp;
+    sampler->dimension = dims + DIM_LIGHT;
+    /* From where reflected rays (shadow rays included) leave, so that the light's pdf here
+     * and on BSDF hits, which is measured from there, agree. */
+    LightSample ls = light_sample(kd, frame->light_count, sp->lifted ? sp->p_smooth : sp->p, sampler);
+    if (!(ls.pdf > 0.0f))
+        return;
+    BsdfEval e = bsdf_eval(&s->bsdf, sp, wo, ls.wi);
+    if (!(max3(e.f_cos) > 0.0f))
+        return;
+    /* The shadow ray's segment: unbounded towards a directional light, else up to just
+     * short of the light point (offset off an area light's surface so the light itself
+     * never blocks). */
+    float3 from = spawn_ray_origin(sp, ls.wi);
+    float3 shadow_dir = ls.wi;
+    float shadow_t_max = INFINITY;
+    if (!ls.at_infinity) {
+        float3 to = ls.delta ? ls.p : offset_ray_origin(ls.p, ls.p_error, ls.n, -ls.wi);
+        shadow_dir = to - from;
+        shadow_t_max = SHADOW_RAY_EXTENT;
+    }
+    bool blocked = shadow_ray_blocked(kd, frame, from, shadow_dir, shadow_t_max);
+    /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
+    float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
+    if (!blocked)
+        ps->radiance += ps->beta * e.f_cos * ls.radiance *
+                        light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
+}
+
+#endif /* PATHCL_HAS_LIGHTS */

@@ -1,0 +1,63 @@
+/* The path tracer: one camera ray per work-item, followed through up to max_bounces
+ * scattering events, as one loop over the integrator's stages (Cycles'
+ * integrator/megakernel.h). The estimator is the rendering equation unrolled: at each
+ * vertex
+ *   L += beta * Le(wo) * w_bsdf              emission found by the previous BSDF sample
+ *   L += beta * f cos Le / p_light * w_light next event estimation (a shadow ray)
+ *   beta *= f cos / p_bsdf                   continue the path by BSDF sampling
+ * with the weights of the strategy (integrator/mis.cl). Emission seen by camera rays (or
+ * after a delta BSDF) always has weight 1. Russian roulette after 3 bounces is unbiased.
+ * Code for features a scene lacks is not compiled (features.h). */
+#include "bvh/traversal.cl"
+#include "features.h"
+#include "film/film.cl"
+#include "integrator/direct_light.cl"
+#include "integrator/path_state.cl"
+#include "integrator/shade_background.cl"
+#include "integrator/shade_surface.cl"
+#include "integrator/surface_bounce.cl"
+#include "kernel_data.cl"
+#include "sample/dimensions.h"
+#include "sample/sampler.cl"
+
+__kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
+{
+    PATHCL_KERNEL_DATA;
+    uint x = get_global_id(0);
+    uint y = get_global_id(1);
+    if (x >= frame.width || y >= frame.height)
+        return;
+    uint pixel = y * frame.width + x;
+
+    PathState ps = path_state_start(kd.rays[pixel]);
+    for (uint depth = 0;; ++depth) {
+        Hit hit = bvh_trace(kd.nodes, kd.triangles, ps.origin, ps.dir, INFINITY, false);
+#ifdef PATHCL_HAS_SPHERE_LIGHTS
+        if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
+            break;
+#endif
+        if (hit.triangle < 0) {
+            shade_background(&kd, &frame, &ps);
+            break;
+        }
+        float3 wo = -ps.dir;
+        ShadingPoint s = shade_surface_setup(&kd, hit, wo);
+        shade_surface_emission(&kd, &frame, &ps, &s, hit, wo);
+        if (depth >= frame.max_bounces || !surface_scatters(&s))
+            break;
+
+        /* The bounce's decisions start at its own sampler dimension. One-sample MIS's coin
+         * is drawn only by that strategy. */
+        uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
+        SamplerState sampler = frame_sampler(&frame, pixel, dims + DIM_TECHNIQUE);
+        bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
+#ifdef PATHCL_HAS_LIGHTS
+        if (direct_light_wanted(&frame, &s, technique_light))
+            direct_light(&kd, &frame, &ps, &s, wo, technique_light, dims, &sampler);
+#endif
+        if (!surface_bounce(&ps, &s, wo, technique_light, dims, &sampler) ||
+            !russian_roulette(&ps, depth, dims, &sampler))
+            break;
+    }
+    film_add_sample(kd.film, kd.bad_samples, pixel, ps.radiance);
+}

@@ -1,0 +1,59 @@
+/* A path's hit on a surface: the surface point, the material with its per-hit inputs,
+ * the BSDF seen from wo, and the surface's own emission, weighted against light sampling
+ * when a BSDF sample found it. */
+#include "bvh/traversal.cl"
+#include "closure/bsdf.cl"
+#include "features.h"
+#include "geom/surface_point.cl"
+#include "integrator/mis.cl"
+#include "integrator/path_state.cl"
+#include "kernel_data.cl"
+#include "light/triangle.cl"
+#include "texture/material_inputs.cl"
+
+/* Everything shading knows about a hit. */
+typedef struct {
+    SurfacePoint sp;
+    Material material; /* the triangle's material with its textures and vertex colour applied */
+    BsdfParams bsdf;
+} ShadingPoint;
+
+static inline ShadingPoint shade_surface_setup(const KernelData* kd, Hit hit, float3 wo)
+{
+    ShadingPoint s;
+    s.sp = surface_point(kd->triangles, kd->shading, hit, wo);
+    s.material = kd->materials[s.sp.material];
+#ifdef PATHCL_HAS_MATERIAL_INPUTS
+    apply_material_inputs(&s.material, &s.sp, wo, hit, kd);
+#endif
+    s.bsdf = bsdf_params(&s.material, &s.sp, wo, kd->layer_albedo);
+    return s;
+}
+
+/* Emission leaves the front face only. */
+static inline void shade_surface_emission(const KernelData* kd, const FrameParams* frame, PathState* ps,
+                                          const ShadingPoint* s, Hit hit, float3 wo)
+{
+#ifdef PATHCL_HAS_AREA_LIGHTS
+    if (s->sp.front_face && s->sp.emitter >= 0) {
+        float3 le = s->material.emission.xyz;
+        if (ps->prev_delta) {
+            ps->radiance += ps->beta * le;
+        } else {
+            Light light = kd->lights[s->sp.emitter];
+            float pmf = kd->light_distribution[s->sp.emitter].pmf;
+            float light_pdf = triangle_light_pdf(&light, pmf, hit.t, dot(s->sp.ng, wo));
+            ps->radiance += ps->beta * le *
+                            bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf, light_pdf);
+        }
+    }
+#endif
+}
+
+/* A single-sided opaque surface seen from behind is black but still blocks light. A
+ * transmissive one is an interface from both sides: a solid's back face is its inside, a
+ * thin sheet lets light through either way. */
+static inline bool surface_scatters(const ShadingPoint* s)
+{
+    return s->sp.front_face || (s->material.flags & MATERIAL_DOUBLE_SIDED) || s->material.transmission > 0.0f;
+}

@@ -1,0 +1,47 @@
+/* Continuing a path: sample the BSDF for the next direction, update the throughput, and
+ * after RR_START_BOUNCE bounces play Russian roulette on the energy the path carries. */
+#include "closure/bsdf.cl"
+#include "geom/ray_offset.cl"
+#include "integrator/path_state.cl"
+#include "integrator/shade_surface.cl"
+#include "sample/dimensions.h"
+#include "sample/sampler.cl"
+#include "util/math.cl"
+
+#define RR_START_BOUNCE 3
+
+/* Samples the next direction; false when the BSDF gives none (the path ends). */
+static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 wo, bool technique_light, uint dims,
+                                  SamplerState* sampler)
+{
+    sampler->dimension = dims + DIM_BSDF_LOBE;
+    float u_lobe = sampler_get_1d(sampler);
+    sampler->dimension = dims + DIM_BSDF;
+    BsdfSample bs = bsdf_sample(&s->bsdf, &s->sp, wo, u_lobe, sampler_get_2d(sampler));
+    if (!(bs.pdf > 0.0f))
+        return false;
+    ps->beta *= bs.weight;
+    ps->eta2_product *= bs.eta2;
+    ps->prev_bsdf_pdf = bs.pdf;
+    ps->prev_delta = bs.delta;
+    ps->prev_technique_bsdf = !technique_light;
+    ps->origin = spawn_ray_origin(&s->sp, bs.wi);
+    ps->dir = bs.wi;
+    return true;
+}
+
+/* Russian roulette: survive with probability q, divide by q (unbiased). q follows the
+ * energy the path carries, not its radiance: inside glass beta holds 1/eta^2, which
+ * would otherwise kill paths that are about to leave it (as pbrt does). False: the path
+ * ends. */
+static inline bool russian_roulette(PathState* ps, uint depth, uint dims, SamplerState* sampler)
+{
+    if (depth + 1u < RR_START_BOUNCE)
+        return true;
+    sampler->dimension = dims + DIM_RR;
+    float q = fmin(1.0f, max3(ps->beta) * ps->eta2_product);
+    if (sampler_get_1d(sampler) >= q)
+        return false;
+    ps->beta /= q;
+    return true;
+}

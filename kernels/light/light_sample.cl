@@ -1,0 +1,63 @@
+/* Next event estimation's light sample: pick one light in proportion to its power, then
+ * a point or direction on it as its type says (the other files of light/). Only the light types a
+ * scene has are compiled (PATHCL_HAS_*_LIGHTS). */
+#include "features.h"
+#include "kernel_data.cl"
+#include "light/environment.cl"
+#include "light/light_pick.cl"
+#include "light/light_sample_record.cl"
+#include "light/punctual.cl"
+#include "light/sphere.cl"
+#include "light/triangle.cl"
+#include "sample/sampler.cl"
+
+/* One light sample seen from ref, drawing the pick (two 1D decisions) and the point (one
+ * 2D decision) from the sampler. */
+static inline LightSample light_sample(const KernelData* kd, uint count, float3 ref, SamplerState* sampler)
+{
+    LightSample ls;
+    ls.pdf = 0.0f;
+    ls.delta = false;
+    ls.at_infinity = false;
+    ls.p_error = (float3)(0.0f);
+    ls.radiance = (float3)(0.0f);
+    ls.wi = ls.n = ls.p = (float3)(0.0f);
+    float u_index = sampler_get_1d(sampler);
+    float u_alias = sampler_get_1d(sampler);
+    float2 u = sampler_get_2d(sampler);
+    int picked = light_pick(kd->light_distribution, count, u_index, u_alias);
+    Light light = kd->lights[picked];
+    float pmf = kd->light_distribution[picked].pmf;
+
+#ifdef PATHCL_HAS_ENVIRONMENT
+    if (light.type == LIGHT_ENVIRONMENT) {
+        ls.at_infinity = true;
+        ls.radiance = environment_sample(kd, &light.data.environment, pmf, u, &ls.wi, &ls.pdf);
+        ls.p = ref; /* unused */
+        ls.n = -ls.wi;
+        return ls;
+    }
+#endif
+#ifdef PATHCL_HAS_SPHERE_LIGHTS
+    if (light.type == LIGHT_SPHERE) {
+        sample_sphere_light(&light, pmf, ref, u, &ls);
+        return ls;
+    }
+#endif
+#ifdef PATHCL_HAS_DIRECTIONAL_LIGHTS
+    if (light.type == LIGHT_DIRECTIONAL) {
+        sample_directional_light(&light, pmf, ref, &ls);
+        return ls;
+    }
+#endif
+#if defined(PATHCL_HAS_POINT_LIGHTS) || defined(PATHCL_HAS_SPOT_LIGHTS)
+    if (light.type == LIGHT_POINT || light.type == LIGHT_SPOT || light.type == LIGHT_RECT_SPOT) {
+        sample_point_light(&light, pmf, ref, &ls);
+        return ls;
+    }
+#endif
+#ifdef PATHCL_HAS_AREA_LIGHTS
+    sample_triangle_light(kd, &light, pmf, ref, u, &ls);
+#endif
+    return ls;
+}

@@ -1,0 +1,22 @@
+/* Sampler dimensions: every random decision of a path has its own. A 1D decision takes
+ * one dimension, a 2D decision the pair (d, d + 1), drawn as one 2D point set. A
+ * bounce's decisions sit at fixed offsets, so a path's numbers never depend on which
+ * branches earlier bounces took. The camera consumes the first four; bounce k's decisions
+ * start at DIM_PATH_START + k * DIMS_PER_BOUNCE. (The sample visualizer and the README
+ * name dimensions by these numbers.) */
+#ifndef PATHCL_SAMPLE_DIMENSIONS_H
+#define PATHCL_SAMPLE_DIMENSIONS_H
+
+#define DIM_PIXEL 0 /* 2: film position inside the pixel */
+#define DIM_LENS 2  /* 2: lens position (thin lens) */
+#define DIM_PATH_START 4
+#define DIMS_PER_BOUNCE 9
+
+/* Offsets within a bounce. */
+#define DIM_TECHNIQUE 0 /* 1: one-sample MIS's coin */
+#define DIM_LIGHT 1     /* 4: light pick (index, alias coin) and the point on it (2) */
+#define DIM_BSDF 5      /* 2: BSDF direction */
+#define DIM_RR 7        /* 1: Russian roulette */
+#define DIM_BSDF_LOBE 8 /* 1: BSDF lobe */
+
+#endif

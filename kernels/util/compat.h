@@ -1,0 +1,76 @@
+/* What lets one header compile as OpenCL C on the device and as C++ on the host: the
+ * scalar and vector types of the structs that cross the boundary, and the annotation and
+ * types of the few formulas both sides compute (PATHCL_FN, pcl_real, PCL_REAL).
+ *
+ * Files ending in .h under kernels/ are compiled by both (the host's include path is
+ * kernels/); files ending in .cl are device code only. On the host every shared
+ * declaration lives in namespace pathcl (PATHCL_BEGIN / PATHCL_END).
+ *
+ * pcl_real is float on the device and double on the host: the host builds tables (the
+ * layer albedo, the sRGB check) from the same formulas in double, the kernels evaluate
+ * them in float. PCL_REAL(0.5) is a literal of that type (0.5f on the device). */
+#ifndef PATHCL_UTIL_COMPAT_H
+#define PATHCL_UTIL_COMPAT_H
+
+#ifdef __OPENCL_C_VERSION__
+
+typedef float4 pcl_float4;
+typedef int4 pcl_int4;
+typedef int pcl_int;
+typedef uint pcl_uint;
+typedef ulong pcl_ulong;
+typedef float pcl_float;
+typedef float pcl_real;
+typedef float3 pcl_real3;
+#define PCL_REAL(x) x##f
+/* Device helpers are `static inline`: plain `inline` has C99 semantics in OpenCL C and
+ * emits no definition, so a call the compiler does not inline fails to link on some
+ * drivers (PoCL happens to accept it). */
+#define PATHCL_FN static inline
+#define PATHCL_BEGIN
+#define PATHCL_END
+
+#else
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+namespace pathcl {
+struct alignas(16) pcl_float4 {
+    float x, y, z, w;
+};
+struct alignas(16) pcl_int4 {
+    std::int32_t x, y, z, w;
+};
+typedef std::int32_t pcl_int;
+typedef std::uint32_t pcl_uint;
+typedef std::uint64_t pcl_ulong;
+typedef float pcl_float;
+typedef double pcl_real;
+typedef glm::dvec3 pcl_real3;
+#define PCL_REAL(x) x
+#define PATHCL_FN inline
+#define PATHCL_BEGIN namespace pathcl {
+#define PATHCL_END }
+
+/* The OpenCL C built-ins shared formulas use, for the host. */
+using std::fabs;
+using std::floor;
+using std::fmax;
+using std::fmin;
+using std::pow;
+using std::isfinite;
+using std::sqrt;
+template <class T>
+T clamp(T x, T lo, T hi)
+{
+    return std::min(std::max(x, lo), hi);
+}
+} /* namespace pathcl */
+
+#endif
+
+#endif
