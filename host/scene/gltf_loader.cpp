@@ -15,7 +15,9 @@
 #include "common/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_images.h"
+#include "scene/gltf_materials.h"
 #include "scene/gltf_textures.h"
+#include "scene/gltf_values.h"
 #include "scene/tangents.h"
 
 namespace pathcl {
@@ -45,131 +47,6 @@ glm::dmat4 local_transform(const tinygltf::Node& node)
     if (node.scale.size() == 3)
         m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return m;
-}
-
-double number_or(const tinygltf::Value& obj, const char* key, double fallback)
-{
-    if (!obj.IsObject() || !obj.Has(key))
-        return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
-}
-
-glm::vec3 vec3_or(const tinygltf::Value& obj, const char* key, glm::vec3 fallback)
-{
-    if (!obj.IsObject() || !obj.Has(key))
-        return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    if (!v.IsArray() || v.ArrayLen() != 3)
-        return glm::vec3(std::numeric_limits<float>::quiet_NaN()); // rejected by the range check
-    glm::vec3 out;
-    for (int i = 0; i < 3; ++i)
-        out[i] = v.Get(i).IsNumber() ? static_cast<float>(v.Get(i).GetNumberAsDouble())
-                                     : std::numeric_limits<float>::quiet_NaN();
-    return out;
-}
-
-// The ranges glTF and the KHR material extensions allow; anything else is an error that
-// names the material and the field, rather than NaN or negative energy in the kernels.
-void check_material(const SceneMaterial& m, const std::string& where)
-{
-    auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
-    auto fail = [&](const char* what) { throw Error(where + ": " + what); };
-    for (int i = 0; i < 3; ++i) {
-        if (!in01(m.base_color[i]))
-            fail("baseColorFactor must lie in [0, 1]");
-        if (!(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
-            fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
-        if (!(m.specular_color[i] >= 0.0f) || !std::isfinite(m.specular_color[i]))
-            fail("KHR_materials_specular specularColorFactor must be finite and >= 0");
-    }
-    if (!in01(m.metallic))
-        fail("metallicFactor must lie in [0, 1]");
-    if (!in01(m.roughness))
-        fail("roughnessFactor must lie in [0, 1]");
-    if (!in01(m.specular))
-        fail("KHR_materials_specular specularFactor must lie in [0, 1]");
-    if (!in01(m.transmission))
-        fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
-    if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
-        fail("KHR_materials_ior ior must be finite and >= 1");
-}
-
-// The KHR_texture_transform object of a textureInfo's extensions, or null.
-const tinygltf::Value* texture_transform(const tinygltf::ExtensionMap& extensions)
-{
-    auto it = extensions.find("KHR_texture_transform");
-    return it == extensions.end() ? nullptr : &it->second;
-}
-
-SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& textures, const std::string& source,
-                              const std::string& where)
-{
-    SceneMaterial out;
-    out.name = m.name;
-    const auto& pbr = m.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() >= 3)
-        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                              pbr.baseColorFactor[2]));
-    out.metallic = static_cast<float>(pbr.metallicFactor);
-    out.roughness = static_cast<float>(pbr.roughnessFactor);
-    double strength = 1.0;
-    auto it = m.extensions.find("KHR_materials_emissive_strength");
-    if (it != m.extensions.end())
-        strength = number_or(it->second, "emissiveStrength", 1.0);
-    if (m.emissiveFactor.size() == 3)
-        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
-                                            m.emissiveFactor[2]) * strength);
-    out.double_sided = m.doubleSided;
-    if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
-        out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
-        out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
-        if (e->second.Has("specularTexture"))
-            out.specular_texture = textures.read(e->second.Get("specularTexture"), where + " specularTexture");
-        if (e->second.Has("specularColorTexture"))
-            out.specular_color_texture =
-                textures.read(e->second.Get("specularColorTexture"), where + " specularColorTexture");
-    }
-    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
-        out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
-        if (e->second.Has("transmissionTexture"))
-            out.transmission_texture =
-                textures.read(e->second.Get("transmissionTexture"), where + " transmissionTexture");
-    }
-    if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
-        out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
-    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
-        out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
-
-    // Core textures (occlusionTexture is not read: a path tracer computes occlusion).
-    auto core = [&](const tinygltf::TextureInfo& info, const char* name) {
-        return info.index < 0 ? SceneTexture{}
-                              : textures.read(info.index, info.texCoord, texture_transform(info.extensions),
-                                              where + " " + name);
-    };
-    out.base_color_texture = core(pbr.baseColorTexture, "baseColorTexture");
-    out.metallic_roughness_texture = core(pbr.metallicRoughnessTexture, "metallicRoughnessTexture");
-    out.emissive_texture = core(m.emissiveTexture, "emissiveTexture");
-    if (m.normalTexture.index >= 0) {
-        out.normal_texture = textures.read(m.normalTexture.index, m.normalTexture.texCoord,
-                                           texture_transform(m.normalTexture.extensions), where + " normalTexture");
-        out.normal_scale = static_cast<float>(m.normalTexture.scale);
-        if (!std::isfinite(out.normal_scale))
-            throw Error(source + ": " + where + ": normalTexture scale must be finite");
-    }
-    return out;
-}
-
-// The texture slots of a material, each with its glTF name (for messages).
-std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m)
-{
-    return {{&m.base_color_texture, "baseColorTexture"},
-            {&m.metallic_roughness_texture, "metallicRoughnessTexture"},
-            {&m.emissive_texture, "emissiveTexture"},
-            {&m.normal_texture, "normalTexture"},
-            {&m.specular_texture, "specularTexture"},
-            {&m.specular_color_texture, "specularColorTexture"},
-            {&m.transmission_texture, "transmissionTexture"}};
 }
 
 struct Importer {
@@ -503,11 +380,9 @@ struct Importer {
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
 
-        for (std::size_t i = 0; i < model.materials.size(); ++i) {
-            std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
-            scene.materials.push_back(import_material(model.materials[i], textures, source, where));
-            check_material(scene.materials.back(), source + ": " + where);
-            for (const auto& [slot, name] : texture_slots(scene.materials.back())) {
+        scene.materials = import_materials(model, textures, source);
+        for (const SceneMaterial& material : scene.materials) {
+            for (const auto& [slot, name] : texture_slots(material)) {
                 if (!slot->present())
                     continue;
                 std::size_t set = static_cast<std::size_t>(slot->texcoord);
@@ -515,7 +390,7 @@ struct Importer {
                     texcoord_used.resize(set + 1, false);
                 texcoord_used[set] = true;
             }
-            tangents_used = tangents_used || scene.materials.back().normal_texture.present();
+            tangents_used = tangents_used || material.normal_texture.present();
         }
         pending_texcoords.resize(texcoord_used.size());
 
