@@ -14,11 +14,11 @@
 #include "common/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_camera.h"
+#include "scene/gltf_environment.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_textures.h"
-#include "scene/gltf_values.h"
 #include "scene/tangents.h"
 
 namespace pathcl {
@@ -401,7 +401,8 @@ struct Importer {
         if (scene_index >= static_cast<int>(model.scenes.size()))
             throw Error(source + ": default scene " + std::to_string(scene_index) + " does not exist");
 
-        import_environment(model.scenes[static_cast<std::size_t>(scene_index)].extras);
+        scene.environment = import_environment(model.scenes[static_cast<std::size_t>(scene_index)].extras, base_dir,
+                                               source);
 
         bool have_camera = false;
         int camera_nodes = 0; // camera nodes seen so far, in depth-first order
@@ -490,29 +491,6 @@ struct Importer {
         if (scene.repaired_normals)
             warn(source + ": replaced " + std::to_string(scene.repaired_normals) +
                  " zero-length or NaN normals by the geometric normal");
-    }
-
-    // Scene extras {"environment": {"uri": "sky.exr", "strength": s}}: the uri is relative
-    // to the glTF file and must stay inside its directory.
-    void import_environment(const tinygltf::Value& extras)
-    {
-        if (!extras.IsObject() || !extras.Has("environment"))
-            return;
-        const tinygltf::Value& env = extras.Get("environment");
-        if (!env.IsObject() || !env.Has("uri") || !env.Get("uri").IsString())
-            throw Error(source + ": scene extras.environment needs a string \"uri\"");
-        namespace fs = std::filesystem;
-        std::string uri = env.Get("uri").Get<std::string>();
-        fs::path dir = fs::weakly_canonical(fs::path(base_dir.empty() ? "." : base_dir));
-        fs::path file = fs::weakly_canonical(dir / uri);
-        auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
-        if (d != dir.end() || fs::path(uri).is_absolute())
-            throw Error(source + ": environment uri '" + uri + "' leaves the scene's directory");
-        scene.environment.present = true;
-        scene.environment.path = file.string();
-        scene.environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
-        if (!(scene.environment.strength >= 0.0f))
-            throw Error(source + ": environment strength must be non-negative");
     }
 };
 
