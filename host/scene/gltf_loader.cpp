@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -19,6 +18,8 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_textures.h"
+#include "scene/pending_geometry.h"
+#include "scene/render_space.h"
 #include "scene/tangents.h"
 
 namespace pathcl {
@@ -64,23 +65,7 @@ struct Importer {
     int default_material = -1;
     std::size_t skipped_points_lines = 0;
 
-    // Triangles in double-precision world space, until the render-space origin is known.
-    struct PendingTriangle {
-        glm::dvec3 v[3];
-        glm::dvec3 n[3];
-        bool has_normals = false;
-        int material = 0;
-    };
-    std::vector<PendingTriangle> pending;
-    // Their optional attributes, in step with `pending` (see Scene): texcoords[n] for each
-    // set n some texture reads; tangents (world space, not yet normalized) when some
-    // material has a normal texture; colors from the first primitive with COLOR_0 on
-    // (earlier triangles get white when it arrives).
-    std::vector<std::vector<TriangleUv>> pending_texcoords;
-    std::vector<bool> texcoord_used;
-    bool tangents_used = false;
-    std::vector<std::array<glm::dvec4, 3>> pending_tangents;
-    std::vector<TriangleColor> pending_colors;
+    PendingGeometry geometry; // the triangles, in world space until the render-space origin is known
     int camera_choice = -1; // camera node to use (depth-first order); -1: the first, if any
 
     int material_for(int gltf_material)
@@ -194,32 +179,32 @@ struct Importer {
                 tri.v[k] = p[ids[k]];
                 tri.n[k] = n.empty() ? glm::dvec3(0.0) : n[ids[k]];
             }
-            pending.push_back(tri);
-            for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
-                if (!texcoord_used[set])
+            geometry.triangles.push_back(tri);
+            for (std::size_t set = 0; set < geometry.texcoord_used.size(); ++set) {
+                if (!geometry.texcoord_used[set])
                     continue;
                 TriangleUv uv{};
                 if (!attr.texcoords[set].empty())
                     for (int k = 0; k < 3; ++k)
                         uv[static_cast<std::size_t>(k)] = attr.texcoords[set][ids[k]];
-                pending_texcoords[set].push_back(uv);
+                geometry.texcoords[set].push_back(uv);
             }
-            if (tangents_used) {
+            if (geometry.tangents_used) {
                 std::array<glm::dvec4, 3> tangent{};
                 if (!attr.tangents.empty())
                     for (int k = 0; k < 3; ++k) {
                         glm::dvec4 ot = attr.tangents[t + static_cast<std::size_t>(corner[k])];
                         tangent[static_cast<std::size_t>(k)] = glm::dvec4(m3 * glm::dvec3(ot), ot.w * handedness);
                     }
-                pending_tangents.push_back(tangent);
+                geometry.tangents.push_back(tangent);
             }
-            if (!attr.colors.empty() || !pending_colors.empty()) {
-                pending_colors.resize(pending.size() - 1, TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
-                TriangleColor c{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
+            if (!attr.colors.empty() || !geometry.colors.empty()) {
+                geometry.colors.resize(geometry.triangles.size() - 1, kWhiteTriangleColor);
+                TriangleColor c = kWhiteTriangleColor;
                 if (!attr.colors.empty())
                     for (int k = 0; k < 3; ++k)
                         c[static_cast<std::size_t>(k)] = attr.colors[ids[k]];
-                pending_colors.push_back(c);
+                geometry.colors.push_back(c);
             }
         }
     }
@@ -245,10 +230,10 @@ struct Importer {
                 throw Error(source + ": " + what + ": its material's " + name + " reads " + attribute +
                             ", which the primitive does not have");
         }
-        attr.texcoords.resize(texcoord_used.size());
-        for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
+        attr.texcoords.resize(geometry.texcoord_used.size());
+        for (std::size_t set = 0; set < geometry.texcoord_used.size(); ++set) {
             auto it = prim.attributes.find("TEXCOORD_" + std::to_string(set));
-            if (!texcoord_used[set] || it == prim.attributes.end())
+            if (!geometry.texcoord_used[set] || it == prim.attributes.end())
                 continue;
             AccessorReader r(model, it->second, what + " TEXCOORD_" + std::to_string(set), source);
             if (r.components() != 2 || r.count() != pos.count())
@@ -321,57 +306,6 @@ struct Importer {
         return compute_tangents(positions, normals, uvs, tris);
     }
 
-    // Converts the double-precision world triangles to float, relative to `origin`.
-    void finish_triangles(const glm::dvec3& origin)
-    {
-        scene.triangles.reserve(pending.size());
-        scene.texcoords.resize(texcoord_used.size());
-        if (!pending_colors.empty())
-            pending_colors.resize(pending.size(), TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
-        for (std::size_t index = 0; index < pending.size(); ++index) {
-            const PendingTriangle& pt = pending[index];
-            SceneTriangle tri;
-            tri.material = pt.material;
-            for (int k = 0; k < 3; ++k)
-                tri.v[k] = glm::vec3(pt.v[k] - origin);
-            // Degenerate (zero area in the float positions the device will see): drop.
-            glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
-            float len = glm::length(c);
-            if (!(len > 0.0f) || !std::isfinite(len)) {
-                ++scene.dropped_degenerate;
-                continue;
-            }
-            glm::vec3 ng = c / len;
-            for (int k = 0; k < 3; ++k) {
-                glm::vec3 sn = ng;
-                if (pt.has_normals) {
-                    double l = glm::length(pt.n[k]);
-                    if (l > 0.0 && std::isfinite(l))
-                        sn = glm::vec3(pt.n[k] / l);
-                    else
-                        ++scene.repaired_normals;
-                }
-                tri.n[k] = sn;
-            }
-            scene.triangles.push_back(tri);
-            for (std::size_t set = 0; set < texcoord_used.size(); ++set)
-                if (texcoord_used[set])
-                    scene.texcoords[set].push_back(pending_texcoords[set][index]);
-            if (tangents_used) {
-                TriangleTangent t;
-                for (std::size_t k = 0; k < 3; ++k) {
-                    const glm::dvec4& wt = pending_tangents[index][k];
-                    double tl = glm::length(glm::dvec3(wt));
-                    t[k] = (tl > 0.0 && std::isfinite(tl)) ? glm::vec4(glm::dvec3(wt) / tl, wt.w) : glm::vec4(0.0f);
-                }
-                scene.tangents.push_back(t);
-            }
-            if (!pending_colors.empty())
-                scene.colors.push_back(pending_colors[index]);
-        }
-        pending.clear();
-    }
-
     void run()
     {
         static const std::set<std::string> supported = {
@@ -387,13 +321,13 @@ struct Importer {
                 if (!slot->present())
                     continue;
                 std::size_t set = static_cast<std::size_t>(slot->texcoord);
-                if (set >= texcoord_used.size())
-                    texcoord_used.resize(set + 1, false);
-                texcoord_used[set] = true;
+                if (set >= geometry.texcoord_used.size())
+                    geometry.texcoord_used.resize(set + 1, false);
+                geometry.texcoord_used[set] = true;
             }
-            tangents_used = tangents_used || material.normal_texture.present();
+            geometry.tangents_used = geometry.tangents_used || material.normal_texture.present();
         }
-        pending_texcoords.resize(texcoord_used.size());
+        geometry.texcoords.resize(geometry.texcoord_used.size());
 
         int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
         if (model.scenes.empty())
@@ -456,30 +390,8 @@ struct Importer {
             throw Error(source + ": --camera " + std::to_string(camera_choice) + ": the scene has " +
                         std::to_string(camera_nodes) + " camera node" + (camera_nodes == 1 ? "" : "s") +
                         " (counted from 0)");
-        // Render space: world space translated so that the camera (else the centre of the
-        // geometry) is the origin. Positions are composed in double and only then rounded
-        // to float, so a scene 1e5 from the world origin keeps its full float precision.
-        glm::dvec3 origin(0.0);
-        if (have_camera) {
-            origin = scene.camera.position;
-        } else if (!pending.empty()) {
-            glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-            for (const PendingTriangle& t : pending)
-                for (const glm::dvec3& v : t.v) {
-                    lo = glm::min(lo, v);
-                    hi = glm::max(hi, v);
-                }
-            origin = 0.5 * (lo + hi);
-        }
-        finish_triangles(origin);
+        move_to_render_space(geometry, have_camera, scene);
         scene.images = textures.take_images();
-        for (SceneLight& l : scene.lights)
-            l.position -= origin;
-        scene.render_origin = origin;
-        if (have_camera)
-            scene.camera.position -= origin;
-        else
-            scene.camera = framing_camera(scene, 0.8);
         if (scene.materials.empty())
             scene.materials.push_back(SceneMaterial{});
         if (skipped_points_lines)
