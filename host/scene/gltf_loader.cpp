@@ -1,11 +1,11 @@
+// The glTF importer's driver: load_gltf and import_gltf, the checks of the file as a
+// whole (required extensions, default scene) and the depth-first walk of the node
+// hierarchy, which hands each mesh, light and camera to its importer and the result to
+// render_space.
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <limits>
-#include <numbers>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,14 +14,18 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/gltf_camera.h"
+#include "scene/gltf_environment.h"
 #include "scene/gltf_images.h"
+#include "scene/gltf_lights.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_primitives.h"
 #include "scene/gltf_textures.h"
-#include "scene/tangents.h"
+#include "scene/pending_geometry.h"
+#include "scene/render_space.h"
 
 namespace pathcl {
 namespace {
-
-constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 
 std::string one_line(std::string s)
 {
@@ -30,118 +34,6 @@ std::string one_line(std::string s)
         s.pop_back();
     return s;
 }
-
-// Reads accessor elements as doubles, honouring stride, component type and normalization,
-// after checking that every element lies inside its buffer.
-class AccessorReader {
-public:
-    AccessorReader(const tinygltf::Model& model, int index, const std::string& what,
-                   const std::string& source)
-        : what_(what), source_(source)
-    {
-        if (index < 0 || index >= static_cast<int>(model.accessors.size()))
-            fail("accessor index " + std::to_string(index) + " does not exist");
-        const tinygltf::Accessor& acc = model.accessors[static_cast<std::size_t>(index)];
-        what_ += " (accessor " + std::to_string(index) + ")";
-        if (acc.sparse.isSparse)
-            fail("sparse accessors are not supported");
-        if (acc.bufferView < 0 || acc.bufferView >= static_cast<int>(model.bufferViews.size()))
-            fail("has no valid bufferView");
-        const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(acc.bufferView)];
-        if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size()))
-            fail("its bufferView has no valid buffer");
-        const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
-        components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(acc.type));
-        component_size_ = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(acc.componentType));
-        if (components_ <= 0 || component_size_ <= 0)
-            fail("has an invalid type or component type");
-        component_type_ = acc.componentType;
-        normalized_ = acc.normalized;
-        count_ = acc.count;
-        std::size_t element = static_cast<std::size_t>(components_ * component_size_);
-        stride_ = view.byteStride ? view.byteStride : element;
-        // The view must lie inside its buffer and the accessor inside its view. Offsets
-        // and counts come from the file, so every step is checked before it can wrap.
-        const std::size_t buffer_size = buffer.data.size();
-        if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset)
-            fail("its bufferView lies outside its buffer (" + std::to_string(buffer_size) + " bytes)");
-        if (acc.byteOffset > view.byteLength)
-            fail("byteOffset lies past the end of its bufferView");
-        const std::size_t room = view.byteLength - acc.byteOffset; // bytes from the first element
-        bool fits = count_ == 0 || (element <= room && (count_ - 1) <= (room - element) / stride_);
-        if (!fits)
-            fail("reads past the end of its bufferView (" + std::to_string(count_) + " elements of stride " +
-                 std::to_string(stride_) + " from offset " + std::to_string(acc.byteOffset) + " in " +
-                 std::to_string(view.byteLength) + " bytes)");
-        data_ = buffer.data.data() + view.byteOffset + acc.byteOffset;
-    }
-
-    std::size_t count() const { return count_; }
-    int components() const { return components_; }
-
-    double get(std::size_t i, int c) const
-    {
-        const unsigned char* p = data_ + i * stride_ + static_cast<std::size_t>(c * component_size_);
-        switch (component_type_) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float f;
-            std::memcpy(&f, p, 4);
-            return f;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return normalized_ ? *p / 255.0 : *p;
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            auto v = static_cast<signed char>(*p);
-            return normalized_ ? std::max(v / 127.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            std::uint16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized_ ? v / 65535.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            std::int16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized_ ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            std::uint32_t v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        default:
-            fail("has an unsupported component type");
-        }
-    }
-
-    // Attributes that are fractions (texture coordinates, colours) stored as integers
-    // must be normalized.
-    void require_float_or_normalized() const
-    {
-        if (component_type_ != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_)
-            fail("integer components must be normalized");
-    }
-
-    bool is_index_type() const
-    {
-        return components_ == 1 && !normalized_ &&
-               (component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                component_type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-    }
-
-    [[noreturn]] void fail(const std::string& msg) const
-    {
-        throw Error(source_ + ": " + what_ + ": " + msg);
-    }
-
-private:
-    std::string what_, source_;
-    const unsigned char* data_ = nullptr;
-    std::size_t count_ = 0, stride_ = 0;
-    int components_ = 0, component_size_ = 0, component_type_ = 0;
-    bool normalized_ = false;
-};
 
 glm::dmat4 local_transform(const tinygltf::Node& node)
 {
@@ -159,134 +51,9 @@ glm::dmat4 local_transform(const tinygltf::Node& node)
     return m;
 }
 
-double number_or(const tinygltf::Value& obj, const char* key, double fallback)
-{
-    if (!obj.IsObject() || !obj.Has(key))
-        return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
-}
-
-glm::vec3 vec3_or(const tinygltf::Value& obj, const char* key, glm::vec3 fallback)
-{
-    if (!obj.IsObject() || !obj.Has(key))
-        return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    if (!v.IsArray() || v.ArrayLen() != 3)
-        return glm::vec3(std::numeric_limits<float>::quiet_NaN()); // rejected by the range check
-    glm::vec3 out;
-    for (int i = 0; i < 3; ++i)
-        out[i] = v.Get(i).IsNumber() ? static_cast<float>(v.Get(i).GetNumberAsDouble())
-                                     : std::numeric_limits<float>::quiet_NaN();
-    return out;
-}
-
-// The ranges glTF and the KHR material extensions allow; anything else is an error that
-// names the material and the field, rather than NaN or negative energy in the kernels.
-void check_material(const SceneMaterial& m, const std::string& where)
-{
-    auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
-    auto fail = [&](const char* what) { throw Error(where + ": " + what); };
-    for (int i = 0; i < 3; ++i) {
-        if (!in01(m.base_color[i]))
-            fail("baseColorFactor must lie in [0, 1]");
-        if (!(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
-            fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
-        if (!(m.specular_color[i] >= 0.0f) || !std::isfinite(m.specular_color[i]))
-            fail("KHR_materials_specular specularColorFactor must be finite and >= 0");
-    }
-    if (!in01(m.metallic))
-        fail("metallicFactor must lie in [0, 1]");
-    if (!in01(m.roughness))
-        fail("roughnessFactor must lie in [0, 1]");
-    if (!in01(m.specular))
-        fail("KHR_materials_specular specularFactor must lie in [0, 1]");
-    if (!in01(m.transmission))
-        fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
-    if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
-        fail("KHR_materials_ior ior must be finite and >= 1");
-}
-
-// The KHR_texture_transform object of a textureInfo's extensions, or null.
-const tinygltf::Value* texture_transform(const tinygltf::ExtensionMap& extensions)
-{
-    auto it = extensions.find("KHR_texture_transform");
-    return it == extensions.end() ? nullptr : &it->second;
-}
-
-SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& textures, const std::string& source,
-                              const std::string& where)
-{
-    SceneMaterial out;
-    out.name = m.name;
-    const auto& pbr = m.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() >= 3)
-        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                              pbr.baseColorFactor[2]));
-    out.metallic = static_cast<float>(pbr.metallicFactor);
-    out.roughness = static_cast<float>(pbr.roughnessFactor);
-    double strength = 1.0;
-    auto it = m.extensions.find("KHR_materials_emissive_strength");
-    if (it != m.extensions.end())
-        strength = number_or(it->second, "emissiveStrength", 1.0);
-    if (m.emissiveFactor.size() == 3)
-        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
-                                            m.emissiveFactor[2]) * strength);
-    out.double_sided = m.doubleSided;
-    if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
-        out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
-        out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
-        if (e->second.Has("specularTexture"))
-            out.specular_texture = textures.read(e->second.Get("specularTexture"), where + " specularTexture");
-        if (e->second.Has("specularColorTexture"))
-            out.specular_color_texture =
-                textures.read(e->second.Get("specularColorTexture"), where + " specularColorTexture");
-    }
-    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
-        out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
-        if (e->second.Has("transmissionTexture"))
-            out.transmission_texture =
-                textures.read(e->second.Get("transmissionTexture"), where + " transmissionTexture");
-    }
-    if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
-        out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
-    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
-        out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
-
-    // Core textures (occlusionTexture is not read: a path tracer computes occlusion).
-    auto core = [&](const tinygltf::TextureInfo& info, const char* name) {
-        return info.index < 0 ? SceneTexture{}
-                              : textures.read(info.index, info.texCoord, texture_transform(info.extensions),
-                                              where + " " + name);
-    };
-    out.base_color_texture = core(pbr.baseColorTexture, "baseColorTexture");
-    out.metallic_roughness_texture = core(pbr.metallicRoughnessTexture, "metallicRoughnessTexture");
-    out.emissive_texture = core(m.emissiveTexture, "emissiveTexture");
-    if (m.normalTexture.index >= 0) {
-        out.normal_texture = textures.read(m.normalTexture.index, m.normalTexture.texCoord,
-                                           texture_transform(m.normalTexture.extensions), where + " normalTexture");
-        out.normal_scale = static_cast<float>(m.normalTexture.scale);
-        if (!std::isfinite(out.normal_scale))
-            throw Error(source + ": " + where + ": normalTexture scale must be finite");
-    }
-    return out;
-}
-
-// The texture slots of a material, each with its glTF name (for messages).
-std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m)
-{
-    return {{&m.base_color_texture, "baseColorTexture"},
-            {&m.metallic_roughness_texture, "metallicRoughnessTexture"},
-            {&m.emissive_texture, "emissiveTexture"},
-            {&m.normal_texture, "normalTexture"},
-            {&m.specular_texture, "specularTexture"},
-            {&m.specular_color_texture, "specularColorTexture"},
-            {&m.transmission_texture, "transmissionTexture"}};
-}
-
 struct Importer {
     Importer(const tinygltf::Model& m, const std::string& src, const std::string& dir)
-        : model(m), source(src), base_dir(dir), textures(m, src, dir)
+        : model(m), source(src), base_dir(dir), textures(m, src, dir), primitives(m, src, scene.materials, geometry)
     {
     }
 
@@ -295,316 +62,9 @@ struct Importer {
     std::string base_dir;
     TextureImporter textures;
     Scene scene;
-    int default_material = -1;
-    std::size_t skipped_points_lines = 0;
-
-    // Triangles in double-precision world space, until the render-space origin is known.
-    struct PendingTriangle {
-        glm::dvec3 v[3];
-        glm::dvec3 n[3];
-        bool has_normals = false;
-        int material = 0;
-    };
-    std::vector<PendingTriangle> pending;
-    // Their optional attributes, in step with `pending` (see Scene): texcoords[n] for each
-    // set n some texture reads; tangents (world space, not yet normalized) when some
-    // material has a normal texture; colors from the first primitive with COLOR_0 on
-    // (earlier triangles get white when it arrives).
-    std::vector<std::vector<TriangleUv>> pending_texcoords;
-    std::vector<bool> texcoord_used;
-    bool tangents_used = false;
-    std::vector<std::array<glm::dvec4, 3>> pending_tangents;
-    std::vector<TriangleColor> pending_colors;
+    PendingGeometry geometry; // the triangles, in world space until the render-space origin is known
+    PrimitiveImporter primitives;
     int camera_choice = -1; // camera node to use (depth-first order); -1: the first, if any
-
-    int material_for(int gltf_material)
-    {
-        if (gltf_material >= 0) {
-            if (gltf_material >= static_cast<int>(model.materials.size()))
-                throw Error(source + ": material index " + std::to_string(gltf_material) +
-                            " does not exist");
-            return gltf_material;
-        }
-        if (default_material < 0) {
-            SceneMaterial def; // the glTF default material
-            def.name = "(default)";
-            default_material = static_cast<int>(scene.materials.size());
-            scene.materials.push_back(def);
-        }
-        return default_material;
-    }
-
-    // Vertex indices of the primitive's triangles, strips and fans converted.
-    std::vector<std::uint32_t> triangle_indices(const tinygltf::Primitive& prim,
-                                                std::size_t vertex_count, const std::string& what)
-    {
-        std::vector<std::uint32_t> idx;
-        if (prim.indices >= 0) {
-            AccessorReader r(model, prim.indices, what + " indices", source);
-            if (!r.is_index_type())
-                r.fail("indices must be unsigned byte, short or int scalars");
-            idx.resize(r.count());
-            for (std::size_t i = 0; i < r.count(); ++i) {
-                double v = r.get(i, 0);
-                if (v >= static_cast<double>(vertex_count))
-                    r.fail("index " + std::to_string(static_cast<std::uint64_t>(v)) +
-                           " is out of range (" + std::to_string(vertex_count) + " vertices)");
-                idx[i] = static_cast<std::uint32_t>(v);
-            }
-        } else {
-            idx.resize(vertex_count);
-            for (std::size_t i = 0; i < vertex_count; ++i)
-                idx[i] = static_cast<std::uint32_t>(i);
-        }
-        std::vector<std::uint32_t> tris;
-        if (prim.mode == kModeTriangles) {
-            tris.assign(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(idx.size() / 3 * 3));
-        } else if (prim.mode == kModeStrip) {
-            for (std::size_t i = 2; i < idx.size(); ++i) {
-                bool even = (i % 2) == 0; // alternate winding keeps every triangle CCW
-                tris.insert(tris.end(), {idx[i - 2], even ? idx[i - 1] : idx[i], even ? idx[i] : idx[i - 1]});
-            }
-        } else if (prim.mode == kModeFan) {
-            for (std::size_t i = 2; i < idx.size(); ++i)
-                tris.insert(tris.end(), {idx[0], idx[i - 1], idx[i]});
-        }
-        return tris;
-    }
-
-    void import_primitive(const tinygltf::Primitive& prim_in, const glm::dmat4& world,
-                          const std::string& what)
-    {
-        tinygltf::Primitive prim = prim_in;
-        if (prim.mode < 0) // unset (tinygltf's -1): glTF's default is triangles
-            prim.mode = kModeTriangles;
-        if (prim.mode < kModeTriangles) {
-            ++skipped_points_lines;
-            return;
-        }
-        if (prim.mode > kModeFan)
-            throw Error(source + ": " + what + ": invalid primitive mode " + std::to_string(prim.mode));
-        auto pos_it = prim.attributes.find("POSITION");
-        if (pos_it == prim.attributes.end())
-            throw Error(source + ": " + what + ": has no POSITION attribute");
-        AccessorReader pos(model, pos_it->second, what + " POSITION", source);
-        if (pos.components() != 3)
-            pos.fail("POSITION must be VEC3");
-        std::vector<glm::dvec3> p(pos.count());
-        for (std::size_t i = 0; i < pos.count(); ++i) {
-            glm::dvec4 w = world * glm::dvec4(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2), 1.0);
-            p[i] = glm::dvec3(w);
-            if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y) || !std::isfinite(p[i].z))
-                pos.fail("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-        }
-        glm::dmat3 m3(world);
-        glm::dmat3 normal_matrix = glm::transpose(glm::inverse(m3));
-        bool mirrored = glm::determinant(m3) < 0.0; // a mirror flips counter-clockwise
-        std::vector<glm::dvec3> n;
-        auto nrm_it = prim.attributes.find("NORMAL");
-        if (nrm_it != prim.attributes.end()) {
-            AccessorReader nr(model, nrm_it->second, what + " NORMAL", source);
-            if (nr.components() != 3 || nr.count() != pos.count())
-                nr.fail("NORMAL must be VEC3 with one normal per vertex");
-            n.resize(nr.count());
-            for (std::size_t i = 0; i < nr.count(); ++i)
-                n[i] = normal_matrix * glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
-        }
-        int material = material_for(prim.material);
-        std::vector<std::uint32_t> tris = triangle_indices(prim, p.size(), what);
-        tris.resize(tris.size() / 3 * 3);
-        VertexAttributes attr = read_vertex_attributes(prim, material, pos, tris, what);
-        const double handedness = mirrored ? -1.0 : 1.0; // a mirror flips the bitangent
-        for (std::size_t t = 0; t < tris.size(); t += 3) {
-            std::uint32_t ids[3] = {tris[t], tris[t + 1], tris[t + 2]};
-            int corner[3] = {0, 1, 2};
-            if (mirrored) {
-                std::swap(ids[1], ids[2]);
-                std::swap(corner[1], corner[2]);
-            }
-            PendingTriangle tri;
-            tri.material = material;
-            tri.has_normals = !n.empty();
-            for (int k = 0; k < 3; ++k) {
-                tri.v[k] = p[ids[k]];
-                tri.n[k] = n.empty() ? glm::dvec3(0.0) : n[ids[k]];
-            }
-            pending.push_back(tri);
-            for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
-                if (!texcoord_used[set])
-                    continue;
-                TriangleUv uv{};
-                if (!attr.texcoords[set].empty())
-                    for (int k = 0; k < 3; ++k)
-                        uv[static_cast<std::size_t>(k)] = attr.texcoords[set][ids[k]];
-                pending_texcoords[set].push_back(uv);
-            }
-            if (tangents_used) {
-                std::array<glm::dvec4, 3> tangent{};
-                if (!attr.tangents.empty())
-                    for (int k = 0; k < 3; ++k) {
-                        glm::dvec4 ot = attr.tangents[t + static_cast<std::size_t>(corner[k])];
-                        tangent[static_cast<std::size_t>(k)] = glm::dvec4(m3 * glm::dvec3(ot), ot.w * handedness);
-                    }
-                pending_tangents.push_back(tangent);
-            }
-            if (!attr.colors.empty() || !pending_colors.empty()) {
-                pending_colors.resize(pending.size() - 1, TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
-                TriangleColor c{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
-                if (!attr.colors.empty())
-                    for (int k = 0; k < 3; ++k)
-                        c[static_cast<std::size_t>(k)] = attr.colors[ids[k]];
-                pending_colors.push_back(c);
-            }
-        }
-    }
-
-    // A primitive's optional vertex attributes, for the vertices of `tris`.
-    struct VertexAttributes {
-        std::vector<std::vector<glm::vec2>> texcoords; // [set][vertex], for the used sets it has
-        std::vector<glm::dvec4> tangents;              // object space, per corner of `tris`
-        std::vector<glm::vec3> colors;                 // per vertex
-    };
-
-    VertexAttributes read_vertex_attributes(const tinygltf::Primitive& prim, int material, const AccessorReader& pos,
-                                            const std::vector<std::uint32_t>& tris, const std::string& what)
-    {
-        VertexAttributes attr;
-        const SceneMaterial& mat = scene.materials[static_cast<std::size_t>(material)];
-        // Every set the material's textures read must be there.
-        for (const auto& [slot, name] : texture_slots(mat)) {
-            if (!slot->present())
-                continue;
-            std::string attribute = "TEXCOORD_" + std::to_string(slot->texcoord);
-            if (!prim.attributes.count(attribute))
-                throw Error(source + ": " + what + ": its material's " + name + " reads " + attribute +
-                            ", which the primitive does not have");
-        }
-        attr.texcoords.resize(texcoord_used.size());
-        for (std::size_t set = 0; set < texcoord_used.size(); ++set) {
-            auto it = prim.attributes.find("TEXCOORD_" + std::to_string(set));
-            if (!texcoord_used[set] || it == prim.attributes.end())
-                continue;
-            AccessorReader r(model, it->second, what + " TEXCOORD_" + std::to_string(set), source);
-            if (r.components() != 2 || r.count() != pos.count())
-                r.fail("TEXCOORD_n must be VEC2 with one coordinate per vertex");
-            r.require_float_or_normalized();
-            attr.texcoords[set].resize(r.count());
-            for (std::size_t i = 0; i < r.count(); ++i) {
-                glm::dvec2 uv(r.get(i, 0), r.get(i, 1));
-                if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
-                    r.fail("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-                attr.texcoords[set][i] = glm::vec2(uv);
-            }
-        }
-        if (auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
-            AccessorReader r(model, it->second, what + " COLOR_0", source);
-            if ((r.components() != 3 && r.components() != 4) || r.count() != pos.count())
-                r.fail("COLOR_0 must be VEC3 or VEC4 with one colour per vertex");
-            r.require_float_or_normalized();
-            attr.colors.resize(r.count());
-            for (std::size_t i = 0; i < r.count(); ++i) {
-                glm::dvec3 c(r.get(i, 0), r.get(i, 1), r.get(i, 2)); // alpha is not used
-                for (int k = 0; k < 3; ++k)
-                    if (!(c[k] >= 0.0 && c[k] <= 1.0))
-                        r.fail("vertex " + std::to_string(i) + " has a colour component outside [0, 1]");
-                attr.colors[i] = glm::vec3(c);
-            }
-        }
-        if (mat.normal_texture.present())
-            attr.tangents = object_tangents(prim, mat.normal_texture.texcoord, pos, tris, what);
-        return attr;
-    }
-
-    // Object-space tangents per corner of `tris`: the TANGENT attribute when the primitive
-    // has it and NORMAL (glTF: without normals, tangents are ignored), else computed from
-    // the normal texture's texture coordinates.
-    std::vector<glm::dvec4> object_tangents(const tinygltf::Primitive& prim, int texcoord, const AccessorReader& pos,
-                                            const std::vector<std::uint32_t>& tris, const std::string& what)
-    {
-        auto nrm_it = prim.attributes.find("NORMAL");
-        auto tan_it = prim.attributes.find("TANGENT");
-        std::vector<glm::dvec4> out(tris.size());
-        if (tan_it != prim.attributes.end() && nrm_it != prim.attributes.end()) {
-            AccessorReader r(model, tan_it->second, what + " TANGENT", source);
-            if (r.components() != 4 || r.count() != pos.count())
-                r.fail("TANGENT must be VEC4 with one tangent per vertex");
-            std::vector<glm::dvec4> t(r.count());
-            for (std::size_t i = 0; i < r.count(); ++i) {
-                t[i] = glm::dvec4(r.get(i, 0), r.get(i, 1), r.get(i, 2), r.get(i, 3) < 0.0 ? -1.0 : 1.0);
-                if (!std::isfinite(t[i].x) || !std::isfinite(t[i].y) || !std::isfinite(t[i].z))
-                    r.fail("vertex " + std::to_string(i) + " has a NaN or infinite tangent");
-            }
-            for (std::size_t c = 0; c < tris.size(); ++c)
-                out[c] = t[tris[c]];
-            return out;
-        }
-        std::vector<glm::dvec3> positions(pos.count()), normals;
-        for (std::size_t i = 0; i < pos.count(); ++i)
-            positions[i] = glm::dvec3(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2));
-        if (nrm_it != prim.attributes.end()) {
-            AccessorReader nr(model, nrm_it->second, what + " NORMAL", source);
-            normals.resize(nr.count());
-            for (std::size_t i = 0; i < nr.count(); ++i)
-                normals[i] = glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
-        }
-        AccessorReader ur(model, prim.attributes.at("TEXCOORD_" + std::to_string(texcoord)),
-                          what + " TEXCOORD_" + std::to_string(texcoord), source);
-        std::vector<glm::dvec2> uvs(ur.count());
-        for (std::size_t i = 0; i < ur.count(); ++i)
-            uvs[i] = glm::dvec2(ur.get(i, 0), ur.get(i, 1));
-        return compute_tangents(positions, normals, uvs, tris);
-    }
-
-    // Converts the double-precision world triangles to float, relative to `origin`.
-    void finish_triangles(const glm::dvec3& origin)
-    {
-        scene.triangles.reserve(pending.size());
-        scene.texcoords.resize(texcoord_used.size());
-        if (!pending_colors.empty())
-            pending_colors.resize(pending.size(), TriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
-        for (std::size_t index = 0; index < pending.size(); ++index) {
-            const PendingTriangle& pt = pending[index];
-            SceneTriangle tri;
-            tri.material = pt.material;
-            for (int k = 0; k < 3; ++k)
-                tri.v[k] = glm::vec3(pt.v[k] - origin);
-            // Degenerate (zero area in the float positions the device will see): drop.
-            glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
-            float len = glm::length(c);
-            if (!(len > 0.0f) || !std::isfinite(len)) {
-                ++scene.dropped_degenerate;
-                continue;
-            }
-            glm::vec3 ng = c / len;
-            for (int k = 0; k < 3; ++k) {
-                glm::vec3 sn = ng;
-                if (pt.has_normals) {
-                    double l = glm::length(pt.n[k]);
-                    if (l > 0.0 && std::isfinite(l))
-                        sn = glm::vec3(pt.n[k] / l);
-                    else
-                        ++scene.repaired_normals;
-                }
-                tri.n[k] = sn;
-            }
-            scene.triangles.push_back(tri);
-            for (std::size_t set = 0; set < texcoord_used.size(); ++set)
-                if (texcoord_used[set])
-                    scene.texcoords[set].push_back(pending_texcoords[set][index]);
-            if (tangents_used) {
-                TriangleTangent t;
-                for (std::size_t k = 0; k < 3; ++k) {
-                    const glm::dvec4& wt = pending_tangents[index][k];
-                    double tl = glm::length(glm::dvec3(wt));
-                    t[k] = (tl > 0.0 && std::isfinite(tl)) ? glm::vec4(glm::dvec3(wt) / tl, wt.w) : glm::vec4(0.0f);
-                }
-                scene.tangents.push_back(t);
-            }
-            if (!pending_colors.empty())
-                scene.colors.push_back(pending_colors[index]);
-        }
-        pending.clear();
-    }
 
     void run()
     {
@@ -615,30 +75,38 @@ struct Importer {
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
 
-        for (std::size_t i = 0; i < model.materials.size(); ++i) {
-            std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
-            scene.materials.push_back(import_material(model.materials[i], textures, source, where));
-            check_material(scene.materials.back(), source + ": " + where);
-            for (const auto& [slot, name] : texture_slots(scene.materials.back())) {
-                if (!slot->present())
-                    continue;
-                std::size_t set = static_cast<std::size_t>(slot->texcoord);
-                if (set >= texcoord_used.size())
-                    texcoord_used.resize(set + 1, false);
-                texcoord_used[set] = true;
-            }
-            tangents_used = tangents_used || scene.materials.back().normal_texture.present();
-        }
-        pending_texcoords.resize(texcoord_used.size());
+        scene.materials = import_materials(model, textures, source);
+        plan_attributes(scene.materials, geometry);
 
         int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
         if (model.scenes.empty())
             throw Error(source + ": has no scene");
         if (scene_index >= static_cast<int>(model.scenes.size()))
             throw Error(source + ": default scene " + std::to_string(scene_index) + " does not exist");
+        const tinygltf::Scene& gltf_scene = model.scenes[static_cast<std::size_t>(scene_index)];
 
-        import_environment(model.scenes[static_cast<std::size_t>(scene_index)].extras);
+        scene.environment = import_environment(gltf_scene.extras, base_dir, source);
+        bool have_camera = import_nodes(gltf_scene.nodes);
+        move_to_render_space(geometry, have_camera, scene);
+        scene.images = textures.take_images();
+        if (scene.materials.empty())
+            scene.materials.push_back(SceneMaterial{});
+        if (primitives.skipped_points_lines())
+            warn(source + ": skipped " + std::to_string(primitives.skipped_points_lines()) +
+                 " point and line primitives (only triangles are rendered)");
+        if (scene.dropped_degenerate)
+            warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
+                 " degenerate (zero-area) triangles");
+        if (scene.repaired_normals)
+            warn(source + ": replaced " + std::to_string(scene.repaired_normals) +
+                 " zero-length or NaN normals by the geometric normal");
+    }
 
+    // Walks the hierarchy below `roots` depth first, composing the node transforms in
+    // double precision, and imports each node's mesh and light, and the chosen camera
+    // (into scene.camera, still in world space). Returns whether it found that camera.
+    bool import_nodes(const std::vector<int>& roots)
+    {
         bool have_camera = false;
         int camera_nodes = 0; // camera nodes seen so far, in depth-first order
         const int wanted_camera = std::max(camera_choice, 0);
@@ -648,7 +116,6 @@ struct Importer {
             int depth;
         };
         std::vector<Item> stack;
-        const auto& roots = model.scenes[static_cast<std::size_t>(scene_index)].nodes;
         for (auto it = roots.rbegin(); it != roots.rend(); ++it)
             stack.push_back({*it, glm::dmat4(1.0), 0});
         const int max_depth = static_cast<int>(model.nodes.size()) + 1; // deeper means a cycle
@@ -668,18 +135,19 @@ struct Importer {
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");
                 const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
                 for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
-                    import_primitive(mesh.primitives[i], world,
-                                     what + " mesh " + std::to_string(node.mesh) + " primitive " +
-                                         std::to_string(i));
+                    primitives.import_primitive(mesh.primitives[i], world,
+                                                what + " mesh " + std::to_string(node.mesh) + " primitive " +
+                                                    std::to_string(i));
             }
             auto light_ext = node.extensions.find("KHR_lights_punctual");
             if (light_ext != node.extensions.end() && light_ext->second.Has("light"))
-                import_light(light_ext->second.Get("light"), world, what);
+                scene.lights.push_back(import_light(model, light_ext->second.Get("light"), world, what, source));
             if (node.camera >= 0) {
                 if (node.camera >= static_cast<int>(model.cameras.size()))
                     throw Error(source + ": " + what + ": camera " + std::to_string(node.camera) + " does not exist");
                 if (camera_nodes++ == wanted_camera) {
-                    import_camera(model.cameras[static_cast<std::size_t>(node.camera)], node.extras, world, what);
+                    scene.camera = import_camera(model.cameras[static_cast<std::size_t>(node.camera)], node.extras,
+                                                 world, what, source);
                     have_camera = true;
                 }
             }
@@ -690,178 +158,7 @@ struct Importer {
             throw Error(source + ": --camera " + std::to_string(camera_choice) + ": the scene has " +
                         std::to_string(camera_nodes) + " camera node" + (camera_nodes == 1 ? "" : "s") +
                         " (counted from 0)");
-        // Render space: world space translated so that the camera (else the centre of the
-        // geometry) is the origin. Positions are composed in double and only then rounded
-        // to float, so a scene 1e5 from the world origin keeps its full float precision.
-        glm::dvec3 origin(0.0);
-        if (have_camera) {
-            origin = scene.camera.position;
-        } else if (!pending.empty()) {
-            glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-            for (const PendingTriangle& t : pending)
-                for (const glm::dvec3& v : t.v) {
-                    lo = glm::min(lo, v);
-                    hi = glm::max(hi, v);
-                }
-            origin = 0.5 * (lo + hi);
-        }
-        finish_triangles(origin);
-        scene.images = textures.take_images();
-        for (SceneLight& l : scene.lights)
-            l.position -= origin;
-        scene.render_origin = origin;
-        if (have_camera)
-            scene.camera.position -= origin;
-        else
-            scene.camera = framing_camera(scene, 0.8);
-        if (scene.materials.empty())
-            scene.materials.push_back(SceneMaterial{});
-        if (skipped_points_lines)
-            warn(source + ": skipped " + std::to_string(skipped_points_lines) +
-                 " point and line primitives (only triangles are rendered)");
-        if (scene.dropped_degenerate)
-            warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
-                 " degenerate (zero-area) triangles");
-        if (scene.repaired_normals)
-            warn(source + ": replaced " + std::to_string(scene.repaired_normals) +
-                 " zero-length or NaN normals by the geometric normal");
-    }
-
-    // Scene extras {"environment": {"uri": "sky.exr", "strength": s}}: the uri is relative
-    // to the glTF file and must stay inside its directory.
-    void import_environment(const tinygltf::Value& extras)
-    {
-        if (!extras.IsObject() || !extras.Has("environment"))
-            return;
-        const tinygltf::Value& env = extras.Get("environment");
-        if (!env.IsObject() || !env.Has("uri") || !env.Get("uri").IsString())
-            throw Error(source + ": scene extras.environment needs a string \"uri\"");
-        namespace fs = std::filesystem;
-        std::string uri = env.Get("uri").Get<std::string>();
-        fs::path dir = fs::weakly_canonical(fs::path(base_dir.empty() ? "." : base_dir));
-        fs::path file = fs::weakly_canonical(dir / uri);
-        auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
-        if (d != dir.end() || fs::path(uri).is_absolute())
-            throw Error(source + ": environment uri '" + uri + "' leaves the scene's directory");
-        scene.environment.present = true;
-        scene.environment.path = file.string();
-        scene.environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
-        if (!(scene.environment.strength >= 0.0f))
-            throw Error(source + ": environment strength must be non-negative");
-    }
-
-    void import_light(const tinygltf::Value& index_value, const glm::dmat4& world, const std::string& what)
-    {
-        int index = index_value.IsNumber() ? static_cast<int>(index_value.GetNumberAsInt()) : -1;
-        if (index < 0 || index >= static_cast<int>(model.lights.size()))
-            throw Error(source + ": " + what + ": KHR_lights_punctual light " + std::to_string(index) +
-                        " does not exist");
-        const tinygltf::Light& l = model.lights[static_cast<std::size_t>(index)];
-        std::string name = what + ": light " + std::to_string(index);
-        SceneLight out;
-        out.name = l.name;
-        glm::dvec3 color(1.0);
-        if (l.color.size() == 3)
-            color = glm::dvec3(l.color[0], l.color[1], l.color[2]);
-        if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || color.x < 0.0 || color.y < 0.0 || color.z < 0.0)
-            throw Error(source + ": " + name + ": color and intensity must be finite and non-negative");
-        out.intensity = glm::vec3(color * l.intensity);
-        glm::dmat3 m3(world);
-        glm::dvec3 dir = m3 * glm::dvec3(0.0, 0.0, -1.0);
-        glm::dvec3 right = m3 * glm::dvec3(1.0, 0.0, 0.0);
-        if (!(glm::length(dir) > 0.0))
-            throw Error(source + ": " + name + ": the node transform is degenerate");
-        out.direction = glm::normalize(dir);
-        right -= glm::dot(right, out.direction) * out.direction; // orthonormal frame even under shear
-        out.right = glm::length(right) > 0.0 ? glm::normalize(right) : glm::dvec3(1.0, 0.0, 0.0);
-        out.position = glm::dvec3(world[3]);
-        if (l.type == "point") {
-            out.type = SceneLight::Type::Point;
-            double radius = number_or(l.extras, "radius", 0.0);
-            if (l.extras.IsObject() && l.extras.Has("radius")) {
-                // The radius is in the node's units: scaled like the geometry around it.
-                double scale = std::cbrt(std::fabs(glm::determinant(m3)));
-                if (!(radius > 0.0) || !std::isfinite(radius * scale))
-                    throw Error(source + ": " + name + ": extras.radius must be a positive number");
-                out.type = SceneLight::Type::Sphere;
-                out.radius = radius * scale;
-            }
-        } else if (l.type == "spot") {
-            double h = number_or(l.extras, "hfov", -1.0), v = number_or(l.extras, "vfov", -1.0);
-            if (h >= 0.0 || v >= 0.0) {
-                if (!(h > 0.0 && h < 180.0 && v > 0.0 && v < 180.0))
-                    throw Error(source + ": " + name + ": extras hfov and vfov must both be in (0, 180) degrees");
-                out.type = SceneLight::Type::RectSpot;
-                out.tan_half_h = std::tan(0.5 * h * std::numbers::pi / 180.0);
-                out.tan_half_v = std::tan(0.5 * v * std::numbers::pi / 180.0);
-            } else {
-                double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
-                if (!(inner >= 0.0 && outer > 0.0 && outer <= 0.5 * std::numbers::pi && inner < outer))
-                    throw Error(source + ": " + name +
-                                ": spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
-                out.type = SceneLight::Type::Spot;
-                out.cos_inner = std::cos(inner);
-                out.cos_outer = std::cos(outer);
-            }
-        } else if (l.type == "directional") {
-            out.type = SceneLight::Type::Directional;
-        } else {
-            throw Error(source + ": " + name + ": unknown light type '" + l.type + "'");
-        }
-        scene.lights.push_back(out);
-    }
-
-    // A perspective or orthographic camera on a node with world transform `world`; the
-    // node's extras may give a thin lens: {"aperture": R, "focusDistance": D}.
-    void import_camera(const tinygltf::Camera& cam, const tinygltf::Value& extras, const glm::dmat4& world,
-                       const std::string& what)
-    {
-        SceneCamera& c = scene.camera;
-        if (cam.type == "perspective") {
-            double yfov = cam.perspective.yfov;
-            if (!(yfov > 0.0 && yfov < std::numbers::pi))
-                throw Error(source + ": " + what + ": perspective yfov must be in (0, pi)");
-            c.yfov = yfov;
-            c.orthographic = false;
-        } else if (cam.type == "orthographic") {
-            double ymag = cam.orthographic.ymag;
-            if (!(ymag > 0.0 && std::isfinite(ymag)))
-                throw Error(source + ": " + what + ": orthographic ymag must be positive");
-            c.ymag = ymag;
-            c.orthographic = true;
-        } else {
-            throw Error(source + ": " + what + ": unknown camera type '" + cam.type + "'");
-        }
-        glm::dmat3 m3(world);
-        glm::dvec3 forward = m3 * glm::dvec3(0.0, 0.0, -1.0);
-        glm::dvec3 up = m3 * glm::dvec3(0.0, 1.0, 0.0);
-        glm::dvec3 right = glm::cross(forward, up);
-        if (!(glm::length(forward) > 0.0) || !(glm::length(right) > 0.0))
-            throw Error(source + ": " + what + ": the camera transform is degenerate");
-        c.position = glm::dvec3(world[3]);
-        c.forward = glm::normalize(forward); // node scale does not change the projection
-        c.right = glm::normalize(right);
-        c.up = glm::cross(c.right, c.forward);
-        c.from_file = true;
-        // Thin lens, in world units (node scale does not change them).
-        auto number = [&](const char* key) {
-            const tinygltf::Value& v = extras.Get(key);
-            if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
-                throw Error(source + ": " + what + ": extras." + key + " must be a number");
-            return v.GetNumberAsDouble();
-        };
-        if (extras.IsObject() && extras.Has("aperture")) {
-            c.aperture = number("aperture");
-            if (c.aperture < 0.0)
-                throw Error(source + ": " + what + ": extras.aperture must be >= 0");
-            if (c.aperture > 0.0 && !extras.Has("focusDistance"))
-                throw Error(source + ": " + what + ": extras.aperture needs extras.focusDistance");
-        }
-        if (extras.IsObject() && extras.Has("focusDistance")) {
-            c.focus_distance = number("focusDistance");
-            if (!(c.focus_distance > 0.0))
-                throw Error(source + ": " + what + ": extras.focusDistance must be positive");
-        }
+        return have_camera;
     }
 };
 

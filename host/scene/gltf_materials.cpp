@@ -1,0 +1,132 @@
+// import_materials: the core material and its extensions (emissive strength, specular,
+// transmission, ior, volume), the texture of each slot, then the range check.
+#include "scene/gltf_materials.h"
+
+#include <cmath>
+
+#include <tiny_gltf.h>
+
+#include "common/error.h"
+#include "scene/gltf_textures.h"
+#include "scene/gltf_values.h"
+
+namespace pathcl {
+namespace {
+
+// The ranges glTF and the KHR material extensions allow; anything else is an error that
+// names the material and the field, rather than NaN or negative energy in the kernels.
+void check_material(const SceneMaterial& m, const std::string& where)
+{
+    auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
+    auto fail = [&](const char* what) { throw Error(where + ": " + what); };
+    for (int i = 0; i < 3; ++i) {
+        if (!in01(m.base_color[i]))
+            fail("baseColorFactor must lie in [0, 1]");
+        if (!(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
+            fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
+        if (!(m.specular_color[i] >= 0.0f) || !std::isfinite(m.specular_color[i]))
+            fail("KHR_materials_specular specularColorFactor must be finite and >= 0");
+    }
+    if (!in01(m.metallic))
+        fail("metallicFactor must lie in [0, 1]");
+    if (!in01(m.roughness))
+        fail("roughnessFactor must lie in [0, 1]");
+    if (!in01(m.specular))
+        fail("KHR_materials_specular specularFactor must lie in [0, 1]");
+    if (!in01(m.transmission))
+        fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
+    if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
+        fail("KHR_materials_ior ior must be finite and >= 1");
+}
+
+// The KHR_texture_transform object of a textureInfo's extensions, or null.
+const tinygltf::Value* texture_transform(const tinygltf::ExtensionMap& extensions)
+{
+    auto it = extensions.find("KHR_texture_transform");
+    return it == extensions.end() ? nullptr : &it->second;
+}
+
+SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& textures, const std::string& source,
+                              const std::string& where)
+{
+    SceneMaterial out;
+    out.name = m.name;
+    const auto& pbr = m.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() >= 3)
+        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                              pbr.baseColorFactor[2]));
+    out.metallic = static_cast<float>(pbr.metallicFactor);
+    out.roughness = static_cast<float>(pbr.roughnessFactor);
+    double strength = 1.0;
+    auto it = m.extensions.find("KHR_materials_emissive_strength");
+    if (it != m.extensions.end())
+        strength = number_or(it->second, "emissiveStrength", 1.0);
+    if (m.emissiveFactor.size() == 3)
+        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
+                                            m.emissiveFactor[2]) * strength);
+    out.double_sided = m.doubleSided;
+    if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
+        out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
+        out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
+        if (e->second.Has("specularTexture"))
+            out.specular_texture = textures.read(e->second.Get("specularTexture"), where + " specularTexture");
+        if (e->second.Has("specularColorTexture"))
+            out.specular_color_texture =
+                textures.read(e->second.Get("specularColorTexture"), where + " specularColorTexture");
+    }
+    if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
+        out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
+        if (e->second.Has("transmissionTexture"))
+            out.transmission_texture =
+                textures.read(e->second.Get("transmissionTexture"), where + " transmissionTexture");
+    }
+    if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
+        out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
+    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
+        out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
+
+    // Core textures (occlusionTexture is not read: a path tracer computes occlusion).
+    auto core = [&](const tinygltf::TextureInfo& info, const char* name) {
+        return info.index < 0 ? SceneTexture{}
+                              : textures.read(info.index, info.texCoord, texture_transform(info.extensions),
+                                              where + " " + name);
+    };
+    out.base_color_texture = core(pbr.baseColorTexture, "baseColorTexture");
+    out.metallic_roughness_texture = core(pbr.metallicRoughnessTexture, "metallicRoughnessTexture");
+    out.emissive_texture = core(m.emissiveTexture, "emissiveTexture");
+    if (m.normalTexture.index >= 0) {
+        out.normal_texture = textures.read(m.normalTexture.index, m.normalTexture.texCoord,
+                                           texture_transform(m.normalTexture.extensions), where + " normalTexture");
+        out.normal_scale = static_cast<float>(m.normalTexture.scale);
+        if (!std::isfinite(out.normal_scale))
+            throw Error(source + ": " + where + ": normalTexture scale must be finite");
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, TextureImporter& textures,
+                                            const std::string& source)
+{
+    std::vector<SceneMaterial> materials;
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
+        materials.push_back(import_material(model.materials[i], textures, source, where));
+        check_material(materials.back(), source + ": " + where);
+    }
+    return materials;
+}
+
+std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m)
+{
+    return {{&m.base_color_texture, "baseColorTexture"},
+            {&m.metallic_roughness_texture, "metallicRoughnessTexture"},
+            {&m.emissive_texture, "emissiveTexture"},
+            {&m.normal_texture, "normalTexture"},
+            {&m.specular_texture, "specularTexture"},
+            {&m.specular_color_texture, "specularColorTexture"},
+            {&m.transmission_texture, "transmissionTexture"}};
+}
+
+} // namespace pathcl

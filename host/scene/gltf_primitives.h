@@ -1,0 +1,64 @@
+// glTF mesh primitives to PendingGeometry: triangles (strips and fans converted) in
+// double-precision world space with their shading normals and the attributes the
+// materials need: the TEXCOORD_n sets their textures read, tangents for normal maps
+// (TANGENT, else computed) and COLOR_0.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/pending_geometry.h"
+#include "scene/scene.h"
+
+namespace tinygltf {
+class Model;
+struct Primitive;
+} // namespace tinygltf
+
+namespace pathcl {
+
+class AccessorReader;
+
+// Decides which attributes the pending triangles carry: each TEXCOORD_n set that a
+// texture of `materials` reads, and tangents when one of them has a normal texture.
+// Called once, with all of the file's materials, before the first primitive.
+void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometry& geometry);
+
+class PrimitiveImporter {
+public:
+    // Appends triangles to `geometry`, and the glTF default material to `materials` when
+    // a primitive without a material first needs it. `source` names the file in errors.
+    PrimitiveImporter(const tinygltf::Model& model, const std::string& source, std::vector<SceneMaterial>& materials,
+                      PendingGeometry& geometry);
+
+    // The triangles of `prim` on a node with world transform `world`; `what` names the
+    // primitive in errors ("node 2 'floor' mesh 0 primitive 1"). Points and lines are
+    // skipped and counted.
+    void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& what);
+
+    std::size_t skipped_points_lines() const { return skipped_points_lines_; }
+
+private:
+    struct VertexAttributes;
+
+    int material_for(int gltf_material);
+    std::vector<std::uint32_t> triangle_indices(const tinygltf::Primitive& prim, std::size_t vertex_count,
+                                                const std::string& what);
+    VertexAttributes read_vertex_attributes(const tinygltf::Primitive& prim, int material, const AccessorReader& pos,
+                                            const std::vector<std::uint32_t>& tris, const std::string& what);
+    std::vector<glm::dvec4> object_tangents(const tinygltf::Primitive& prim, int texcoord, const AccessorReader& pos,
+                                            const std::vector<std::uint32_t>& tris, const std::string& what);
+
+    const tinygltf::Model& model_;
+    std::string source_;
+    std::vector<SceneMaterial>& materials_;
+    PendingGeometry& geometry_;
+    int default_material_ = -1;
+    std::size_t skipped_points_lines_ = 0;
+};
+
+} // namespace pathcl
