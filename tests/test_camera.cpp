@@ -108,7 +108,9 @@ TEST(CameraImport, CameraIndexBeyondTheCameraNodesIsAnErrorNamingTheCount)
         import_gltf(one_camera(false).model, "one.gltf", "", 1);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("--camera 1: the scene has 1 camera node"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("camera: there is no camera node 1: one.gltf has 1 camera node"),
+                  std::string::npos)
+            << e.what();
     }
     // No camera at all: --camera 0 is an error, the default frames the scene.
     GltfBuilder b;
@@ -159,35 +161,37 @@ TEST(CameraOverrides, LookAtAloneKeepsThePositionAndFovIsDegrees)
     EXPECT_DOUBLE_EQ(s.camera.yfov, std::numbers::pi / 2.0);
 }
 
-TEST(CameraOverrides, InconsistentValuesAreErrorsNamingTheFlag)
+TEST(CameraOverrides, InconsistentValuesAreErrorsNamingTheParameter)
 {
+    // The library names parameters (the CLI names them by their flags: Cli tests).
     auto error_of = [](Scene s, const CameraOverrides& o) {
         try {
             apply_camera_overrides(s, o);
-        } catch (const Error& e) {
-            return std::string(e.what());
+        } catch (const ParameterError& e) {
+            return e.parameter() + " | " + e.what();
         }
         return std::string();
     };
+    auto starts = [](const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; };
     CameraOverrides same;
     same.look_from = same.look_at = glm::dvec3(1, 2, 3);
-    EXPECT_NE(error_of(offset_scene(), same).find("--look-at"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(offset_scene(), same), "look_at | look_at: must differ"));
     CameraOverrides parallel;
     parallel.look_at = glm::dvec3(0, 10, 5); // straight up from (0, 0, 5), camera up is +Y
-    EXPECT_NE(error_of(offset_scene(), parallel).find("--up"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(offset_scene(), parallel), "up | up: must not be parallel"));
     CameraOverrides fov;
     fov.fov_degrees = 180.0;
-    EXPECT_NE(error_of(offset_scene(), fov).find("--fov"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(offset_scene(), fov), "fov | fov: must be in (0, 180)"));
     Scene ortho = offset_scene();
     ortho.camera.orthographic = true;
     fov.fov_degrees = 40.0;
-    EXPECT_NE(error_of(ortho, fov).find("--fov"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(ortho, fov), "fov | fov: the selected camera is orthographic"));
     CameraOverrides lens;
     lens.aperture = 0.1; // no focus distance anywhere
-    EXPECT_NE(error_of(offset_scene(), lens).find("--aperture needs --focus-distance"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(offset_scene(), lens), "aperture | aperture: needs focus_distance"));
     lens.aperture = -0.1;
     lens.focus_distance = 2.0;
-    EXPECT_NE(error_of(offset_scene(), lens).find("--aperture"), std::string::npos);
+    EXPECT_TRUE(starts(error_of(offset_scene(), lens), "aperture | aperture: must be >= 0"));
     lens.aperture = 0.1;
     EXPECT_EQ(error_of(offset_scene(), lens), "");
 }
@@ -220,7 +224,7 @@ TEST(SamplerSpp, RoundingAsDocumented)
 {
     // Jittered and multi-jittered: the next square; Hammersley: the next power of two;
     // the others: as asked.
-    for (std::uint32_t s : {SAMPLER_JITTERED, SAMPLER_MULTI_JITTERED}) {
+    for (SamplerType s : {SamplerType::Jittered, SamplerType::MultiJittered}) {
         EXPECT_EQ(sampler_spp(s, 1), 1u);
         EXPECT_EQ(sampler_spp(s, 2), 4u);
         EXPECT_EQ(sampler_spp(s, 50), 64u);
@@ -229,18 +233,18 @@ TEST(SamplerSpp, RoundingAsDocumented)
         EXPECT_EQ(sampler_spp(s, 1u << 30), 1u << 30);
         EXPECT_EQ(sampler_spp(s, (1u << 30) - 1), 1u << 30);
     }
-    EXPECT_EQ(sampler_spp(SAMPLER_HAMMERSLEY, 1), 1u);
-    EXPECT_EQ(sampler_spp(SAMPLER_HAMMERSLEY, 3), 4u);
-    EXPECT_EQ(sampler_spp(SAMPLER_HAMMERSLEY, 64), 64u);
-    EXPECT_EQ(sampler_spp(SAMPLER_HAMMERSLEY, 65), 128u);
-    EXPECT_EQ(sampler_spp(SAMPLER_HAMMERSLEY, (1u << 30) - 5), 1u << 30);
-    for (std::uint32_t s : {SAMPLER_INDEPENDENT, SAMPLER_N_ROOKS, SAMPLER_SOBOL, SAMPLER_HALTON})
+    EXPECT_EQ(sampler_spp(SamplerType::Hammersley, 1), 1u);
+    EXPECT_EQ(sampler_spp(SamplerType::Hammersley, 3), 4u);
+    EXPECT_EQ(sampler_spp(SamplerType::Hammersley, 64), 64u);
+    EXPECT_EQ(sampler_spp(SamplerType::Hammersley, 65), 128u);
+    EXPECT_EQ(sampler_spp(SamplerType::Hammersley, (1u << 30) - 5), 1u << 30);
+    for (SamplerType s : {SamplerType::Independent, SamplerType::NRooks, SamplerType::Sobol, SamplerType::Halton})
         EXPECT_EQ(sampler_spp(s, 50), 50u);
-    EXPECT_THROW(sampler_spp(SAMPLER_COUNT, 4), Error);
+    EXPECT_THROW(sampler_spp(static_cast<SamplerType>(SAMPLER_COUNT), 4), Error);
     // The names --sampler takes, one per sampler.
     EXPECT_EQ(sampler_names().size(), static_cast<std::size_t>(SAMPLER_COUNT));
     for (std::uint32_t s = 0; s < SAMPLER_COUNT; ++s)
-        EXPECT_EQ(sampler_names().at(sampler_name(s)), s);
+        EXPECT_EQ(sampler_names().at(sampler_name(static_cast<SamplerType>(s))), static_cast<SamplerType>(s));
 }
 
 } // namespace

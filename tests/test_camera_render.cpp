@@ -16,6 +16,7 @@
 #include "scene/gltf_loader.h"
 #include "types.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 
 namespace pathcl {
 namespace {
@@ -111,9 +112,9 @@ ColumnCheck check_columns(const Image& img, double r)
     return c;
 }
 
-RenderOptions stripe_options(std::uint32_t sampler = SAMPLER_INDEPENDENT)
+RenderOptions stripe_options(SamplerType sampler = SamplerType::Independent)
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = kW;
     o.height = kH;
     o.spp = 256;
@@ -164,9 +165,9 @@ TEST(ThinLens, PlaneOffFocusIsBlurredByThePredictedCircleOfConfusion)
     // (the per-pixel variance overestimates Sobol's error: conservative). Broken
     // variants seen to fail: the lens radius used as a diameter; a square lens (no
     // concentric disk map).
-    for (std::uint32_t sampler : {SAMPLER_INDEPENDENT, SAMPLER_SOBOL})
+    for (SamplerType sampler : {SamplerType::Independent, SamplerType::Sobol})
         for (double focus : {2.0, 8.0}) {
-            SCOPED_TRACE("sampler " + std::to_string(sampler) + " focus distance " + std::to_string(focus));
+            SCOPED_TRACE("sampler " + sampler_name(sampler) + " focus distance " + std::to_string(focus));
             const double aperture = 0.125;
             const double r_pixels = aperture * std::abs(kPlaneDepth - focus) / focus / kPixel;
             RenderResult lens = render(with_lens(aperture, focus), stripe_options(sampler));
@@ -186,7 +187,7 @@ TEST(ThinLens, ApertureZeroIsExactlyThePinholeImage)
     // moved off the render-space origin (--look-from), where a lens ray of radius 0
     // would round differently from the pinhole ray. Broken variant seen to fail:
     // sending aperture 0 through the thin-lens code.
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = 32;
     o.spp = 4;
     CameraOverrides moved;
@@ -239,7 +240,7 @@ TEST(OrthographicCamera, ImagesARectangleAtItsTrueSizeAtAnyDepth)
     // covers, at depth 2 and at depth 50. Broken variant seen to fail: the perspective
     // mapping (film offset on the direction).
     for (double depth : {2.0, 50.0}) {
-        RenderOptions o;
+        RenderOptions o = test::independent_options();
         o.width = 48;
         o.height = 32;
         o.spp = 256;

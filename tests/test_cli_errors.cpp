@@ -229,14 +229,14 @@ TEST_F(Cli, UnknownSamplerIsOneLineError)
 TEST_F(Cli, ApertureWithoutFocusDistance)
 {
     RunResult r = run("render " + quoted(kCornell) + " -o out.exr --aperture 0.01" + kTiny);
-    expect_clean_failure(r, "--aperture");
+    expect_clean_failure(r, "--aperture: needs --focus-distance");
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
 }
 
 TEST_F(Cli, CameraIndexPastTheLastCameraNode)
 {
     RunResult r = run("render " + quoted(kCornell) + " -o out.exr --camera 1" + kTiny);
-    expect_clean_failure(r, "--camera 1");
+    expect_clean_failure(r, "--camera: there is no camera node 1");
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
 }
 

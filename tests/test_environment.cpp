@@ -16,6 +16,7 @@
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 
 namespace pathcl {
 namespace {
@@ -38,8 +39,8 @@ Scene furnace(float background)
 TEST(Environment, WhiteFurnaceSphereShowsItsAlbedoForEveryStrategy)
 {
     // Every direction from a convex surface escapes: L = albedo x background exactly.
-    for (std::uint32_t strategy : {STRATEGY_BSDF, STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS}) {
-        RenderOptions o;
+    for (Strategy strategy : {Strategy::Bsdf, Strategy::Nee, Strategy::OneSample, Strategy::Mis}) {
+        RenderOptions o = test::independent_options();
         o.width = o.height = 16;
         o.spp = 64;
         o.strategy = strategy;
@@ -55,7 +56,7 @@ TEST(Environment, WhiteFurnaceSphereShowsItsAlbedoForEveryStrategy)
                 ++n;
             }
         double mean = sum / n, se = std::sqrt(var) / n;
-        EXPECT_NEAR(mean, 0.8, 1e-5 + 5.0 * se) << "strategy " << strategy;
+        EXPECT_NEAR(mean, 0.8, 1e-5 + 5.0 * se) << "strategy " << strategy_name(strategy);
         // The corner pixels see the background itself: exactly 1.
         EXPECT_NEAR(r.image.rgb[1], 1.0f, 1e-6f);
     }
@@ -176,7 +177,7 @@ TEST(Environment, SamplingASingleBrightTexel)
 
 TEST(Environment, AllBlackMapRendersBlackAndFinite)
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = 8;
     o.spp = 8;
     RenderResult r = render(furnace(0.0f), o);

@@ -12,6 +12,7 @@
 #include "scene/gltf_loader.h"
 #include "types.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 
 namespace pathcl {
 namespace {
@@ -29,7 +30,7 @@ struct Measurement {
 // Mean radiance (green channel) of a tiny patch of the plane y = 0 around (x, 0, z),
 // lit by the light the caller adds to `b`.
 Measurement radiance_at(test::GltfBuilder b, double x, double z, double height_scale,
-                        std::uint32_t strategy = STRATEGY_MIS, std::uint32_t spp = 4)
+                        Strategy strategy = Strategy::Mis, std::uint32_t spp = 4)
 {
     double s = 50.0 * height_scale;
     std::vector<glm::vec3> quad = {{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}; // normal +Y
@@ -38,7 +39,7 @@ Measurement radiance_at(test::GltfBuilder b, double x, double z, double height_s
                           mat);
     b.add_root(b.add_node(mesh));
     b.add_camera_node(b.add_perspective_camera(1e-3), {x, 3.0 * height_scale, z}, kLookDown);
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = 8;
     o.spp = spp;
     o.max_bounces = 1;
@@ -98,9 +99,9 @@ TEST(PointLight, EveryStrategyButBsdfGivesTheSameValue)
     test::GltfBuilder b;
     b.add_light_node(b.add_light("point", glm::vec3(1.0f), 1.0), {0.0, 1.0, 0.0});
     const double expected = kRho / kPi;
-    expect_radiance(radiance_at(b, 0.0, 0.0, 1.0, STRATEGY_NEE), expected, "nee");
-    expect_radiance(radiance_at(b, 0.0, 0.0, 1.0, STRATEGY_ONE_SAMPLE, 1024), expected, "one-sample");
-    EXPECT_EQ(radiance_at(b, 0.0, 0.0, 1.0, STRATEGY_BSDF).mean, 0.0);
+    expect_radiance(radiance_at(b, 0.0, 0.0, 1.0, Strategy::Nee), expected, "nee");
+    expect_radiance(radiance_at(b, 0.0, 0.0, 1.0, Strategy::OneSample, 1024), expected, "one-sample");
+    EXPECT_EQ(radiance_at(b, 0.0, 0.0, 1.0, Strategy::Bsdf).mean, 0.0);
 }
 
 TEST(SpotLight, ConeFalloffInsideBetweenAndOutside)
@@ -163,13 +164,13 @@ TEST(SphereLight, IrradianceEqualsThePointLightsForEveryStrategy)
     // exactly a point light's, whatever its radius. It hangs beside the camera's view.
     // bsdf finds it by chance: more samples.
     const double d2 = 0.6 * 0.6 + 1.0, expected = kRho / kPi * 2.0 / d2 / std::sqrt(d2);
-    for (std::uint32_t strategy : {STRATEGY_BSDF, STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS}) {
+    for (Strategy strategy : {Strategy::Bsdf, Strategy::Nee, Strategy::OneSample, Strategy::Mis}) {
         test::GltfBuilder b;
         add_sphere_light(b, 2.0, 0.2, {0.6, 1.0, 0.0});
-        Measurement m = radiance_at(b, 0.0, 0.0, 1.0, strategy, strategy == STRATEGY_BSDF ? 4096 : 256);
+        Measurement m = radiance_at(b, 0.0, 0.0, 1.0, strategy, strategy == Strategy::Bsdf ? 4096 : 256);
         EXPECT_GT(m.stderr_, 0.0);
-        EXPECT_LT(m.stderr_, 0.02 * expected) << "too noisy to test, strategy " << strategy;
-        expect_radiance(m, expected, "strategy " + std::to_string(strategy));
+        EXPECT_LT(m.stderr_, 0.02 * expected) << "too noisy to test, strategy " << strategy_name(strategy);
+        expect_radiance(m, expected, "strategy " + std::string(strategy_name(strategy)));
     }
 }
 
@@ -178,7 +179,7 @@ TEST(SphereLight, SeenDirectlyItHasRadianceIntensityOverPiRSquared)
     test::GltfBuilder b;
     add_sphere_light(b, 3.0, 0.5, {0.0, 0.0, -4.0});
     b.add_camera_node(b.add_perspective_camera(0.05), {0.0, 0.0, 0.0});
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = 4;
     o.spp = 4;
     RenderResult r = render(import_gltf(b.model, "sphere-view"), o);
@@ -192,7 +193,7 @@ TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
         test::GltfBuilder b;
         add_sphere_light(b, 1.0, 2.0, {0.0, 0.0, 0.0});
         b.add_camera_node(b.add_perspective_camera(1.0), {0.0, 0.0, 0.0});
-        RenderOptions o;
+        RenderOptions o = test::independent_options();
         o.width = o.height = 8;
         o.spp = 4;
         RenderResult r = render(import_gltf(b.model, "inside-sphere"), o);
@@ -204,7 +205,7 @@ TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
         test::GltfBuilder b;
         add_sphere_light(b, 1.0, 0.25, {0.0, 0.25, 0.0});
         for (double x : {0.0, 1e-4, 0.3}) {
-            Measurement m = radiance_at(b, x, 0.0, 1.0, STRATEGY_MIS, 16);
+            Measurement m = radiance_at(b, x, 0.0, 1.0, Strategy::Mis, 16);
             EXPECT_EQ(m.bad, 0u) << "x " << x;
             EXPECT_TRUE(std::isfinite(m.mean)) << "x " << x;
         }

@@ -12,6 +12,7 @@
 #include "scene/gltf_loader.h"
 #include "types.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 #include <tiny_gltf.h>
 
 namespace pathcl {
@@ -22,7 +23,7 @@ const std::string kSource = PATHCL_SOURCE_DIR;
 // Settings of tests/references/cornell-box-64.exr (tools/make_references.sh).
 RenderOptions cornell_test_options()
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = 64;
     o.height = 64;
     o.spp = 64;
@@ -102,10 +103,10 @@ ImageMean image_mean(const Image& img)
 TEST(Render, FurnaceSphereMatchesAnalyticRadianceForEveryStrategy)
 {
     Scene scene = furnace_sphere();
-    for (std::uint32_t strategy : {STRATEGY_BSDF, STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS})
+    for (Strategy strategy : {Strategy::Bsdf, Strategy::Nee, Strategy::OneSample, Strategy::Mis})
     for (std::uint32_t bounces : {0u, 1u, 2u, 1000u}) {
-        SCOPED_TRACE("strategy " + std::to_string(strategy) + " bounces " + std::to_string(bounces));
-        RenderOptions o;
+        SCOPED_TRACE("strategy " + std::string(strategy_name(strategy)) + " bounces " + std::to_string(bounces));
+        RenderOptions o = test::independent_options();
         o.strategy = strategy;
         o.width = 32;
         o.height = 32;
@@ -178,7 +179,7 @@ TEST(Render, WhiteFurnaceOfAlbedoOneGainsExactlyLePerBounce)
     b.add_camera_node(b.add_perspective_camera(1.0), {0.2, 0.1, -0.3});
     Scene scene = import_gltf(b.model, "white-furnace");
     for (std::uint32_t bounces : {3u, 6u}) {
-        RenderOptions o;
+        RenderOptions o = test::independent_options();
         o.width = o.height = 16;
         o.spp = 32;
         o.max_bounces = bounces;
@@ -198,7 +199,7 @@ TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
     // BSDF-only sampling finds the small light so rarely that single pixels are far from
     // normal at this spp, so for it only the tile and image scales are judged.
     Image ref = read_image(kSource + "/tests/references/cornell-box-64.exr");
-    for (std::uint32_t strategy : {STRATEGY_BSDF, STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS}) {
+    for (Strategy strategy : {Strategy::Bsdf, Strategy::Nee, Strategy::OneSample, Strategy::Mis}) {
         RenderOptions o = cornell_test_options();
         o.spp = 256;
         o.strategy = strategy;
@@ -206,10 +207,10 @@ TEST(Render, EveryStrategyConvergesToTheCornellBoxReference)
         EXPECT_EQ(r.stats.bad_samples, 0u);
         CompareOptions co;
         co.pooled_variance = false;
-        co.judge_pixels = strategy != STRATEGY_BSDF;
+        co.judge_pixels = strategy != Strategy::Bsdf;
         CompareReport cmp = compare_images(r.image, ref, co);
-        std::cout << "strategy " << strategy << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << "strategy " << strategy << "\n" << cmp.summary();
+        std::cout << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
+        EXPECT_TRUE(cmp.passed) << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
     }
 }
 
@@ -255,7 +256,7 @@ TEST(Render, MaterialScenesMatchTheirCommittedReferences)
 
 TEST(Render, SameSeedGivesIdenticalImageOtherSeedDoesNot)
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = 24;
     o.height = 24;
     o.spp = 4;
@@ -275,7 +276,7 @@ TEST(Render, SceneWithoutLightsIsBlack)
     int mat = b.add_material(glm::vec3(0.8f));
     b.add_root(b.add_node(b.add_sphere_mesh(1.0, 8, 16, mat, false)));
     Scene scene = import_gltf(b.model, "no-lights");
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = 16;
     o.height = 16;
     o.spp = 2;

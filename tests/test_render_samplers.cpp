@@ -20,6 +20,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "sampling/samplers.h"
+#include "support/test_options.h"
 #include "scene/gltf_loader.h"
 #include "types.h"
 
@@ -46,8 +47,8 @@ TEST(SamplerRender, EverySamplerRendersTheCornellBoxReference)
     // pick, light point and BSDF direction), for every stratified sampler.
     Scene scene = load_gltf(kSource + "/scenes/cornell-box.gltf");
     Image ref = read_image(kSource + "/tests/references/cornell-box-64.exr");
-    for (std::uint32_t sampler = 0; sampler < SAMPLER_COUNT; ++sampler) {
-        RenderOptions o;
+    for (const auto& [sampler_label, sampler] : sampler_names()) {
+        RenderOptions o = test::independent_options();
         o.width = o.height = 64;
         o.spp = 64;
         o.max_bounces = 8;
@@ -67,14 +68,14 @@ TEST(SamplerRender, RoundedSppIsWhatTheImageRecords)
     // Jittered rounds 5 spp up to 9 (3 x 3 strata), Hammersley to 8; the image and the
     // statistics say so.
     Scene scene = load_gltf(kSource + "/scenes/cornell-box.gltf");
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = 8;
     o.spp = 5;
-    o.sampler = SAMPLER_JITTERED;
+    o.sampler = SamplerType::Jittered;
     RenderResult r = render(scene, o);
     EXPECT_EQ(r.image.spp, 9u);
     EXPECT_EQ(r.stats.spp, 9u);
-    o.sampler = SAMPLER_HAMMERSLEY;
+    o.sampler = SamplerType::Hammersley;
     EXPECT_EQ(render(scene, o).image.spp, 8u);
 }
 

@@ -17,6 +17,7 @@
 #include "scene/gltf_loader.h"
 #include "types.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 #include <tiny_gltf.h>
 
 namespace pathcl {
@@ -27,7 +28,7 @@ constexpr int kNearest = 9728, kLinear = 9729, kRepeat = 10497, kMirror = 33648;
 
 RenderOptions small_options(std::uint32_t size, std::uint32_t spp, std::uint32_t seed)
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = size;
     o.spp = spp;
     o.seed = seed;
@@ -207,20 +208,20 @@ TEST(RenderTextures, TexturedEmitterGivesTheSameImageByEveryStrategy)
     Scene scene = textured_emitter_scene();
     RenderOptions o = small_options(32, 1024, 11);
     o.max_bounces = 3;
-    o.strategy = STRATEGY_BSDF;
+    o.strategy = Strategy::Bsdf;
     RenderResult reference = render(scene, o);
     EXPECT_EQ(reference.stats.bad_samples, 0u);
-    for (std::uint32_t strategy : {STRATEGY_NEE, STRATEGY_ONE_SAMPLE, STRATEGY_MIS}) {
+    for (Strategy strategy : {Strategy::Nee, Strategy::OneSample, Strategy::Mis}) {
         o.strategy = strategy;
         o.spp = 256;
-        o.seed = 20 + strategy;
+        o.seed = 20 + static_cast<std::uint32_t>(strategy);
         RenderResult r = render(scene, o);
         EXPECT_EQ(r.stats.bad_samples, 0u);
         CompareOptions co;
         co.pooled_variance = false; // different estimators share the mean only
         CompareReport cmp = compare_images(r.image, reference.image, co);
-        std::cout << "strategy " << strategy << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << "strategy " << strategy << "\n" << cmp.summary();
+        std::cout << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
+        EXPECT_TRUE(cmp.passed) << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
     }
 }
 

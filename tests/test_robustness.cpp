@@ -17,6 +17,7 @@
 #include "types.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
+#include "support/test_options.h"
 
 namespace pathcl {
 namespace {
@@ -26,7 +27,7 @@ namespace {
 RenderResult render_square(const Scene& scene, std::uint32_t size, std::uint32_t spp, std::uint32_t max_bounces,
                            const std::vector<KernelPatch>& patches = {})
 {
-    RenderOptions o;
+    RenderOptions o = test::independent_options();
     o.width = o.height = size;
     o.spp = spp;
     o.max_bounces = max_bounces;

@@ -42,7 +42,7 @@ std::vector<std::uint32_t> pixel_range(std::uint32_t first, std::uint32_t n)
 
 // Points of `pixels`, spp each, for the 2D decision at dim (or two 1D decisions at dim
 // and dim + 2 when one_d).
-std::vector<glm::vec2> points(std::uint32_t sampler, std::uint32_t spp, const std::vector<std::uint32_t>& pixels,
+std::vector<glm::vec2> points(SamplerType sampler, std::uint32_t spp, const std::vector<std::uint32_t>& pixels,
                               std::uint32_t dim, bool one_d = false, std::uint32_t seed = 11)
 {
     SamplerPointsRequest r;
@@ -99,8 +99,8 @@ TEST(Samplers, JitteredHasExactlyOneSamplePerStratum)
         for (std::uint32_t dim : kDims) {
             SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
             auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(spp)));
-            std::vector<glm::vec2> p = points(SAMPLER_JITTERED, spp, pixel_range(100, 8), dim);
-            std::vector<glm::vec2> q = points(SAMPLER_JITTERED, spp, pixel_range(100, 8), dim, /*one_d=*/true);
+            std::vector<glm::vec2> p = points(SamplerType::Jittered, spp, pixel_range(100, 8), dim);
+            std::vector<glm::vec2> q = points(SamplerType::Jittered, spp, pixel_range(100, 8), dim, /*one_d=*/true);
             for (std::size_t px = 0; px < 8; ++px) {
                 EXPECT_TRUE(one_per_cell(&p[px * spp], spp, side, side));
                 // 1D decisions: spp strata each.
@@ -116,8 +116,8 @@ TEST(Samplers, NRooksHasOneSamplePerRowAndColumn)
     for (std::uint32_t spp : {1u, 2u, 7u, 64u, 100u, 256u})
         for (std::uint32_t dim : kDims) {
             SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
-            std::vector<glm::vec2> p = points(SAMPLER_N_ROOKS, spp, pixel_range(7, 8), dim);
-            std::vector<glm::vec2> q = points(SAMPLER_N_ROOKS, spp, pixel_range(7, 8), dim, true);
+            std::vector<glm::vec2> p = points(SamplerType::NRooks, spp, pixel_range(7, 8), dim);
+            std::vector<glm::vec2> q = points(SamplerType::NRooks, spp, pixel_range(7, 8), dim, true);
             for (std::size_t px = 0; px < 8; ++px) {
                 EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 0));
                 EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 1));
@@ -135,7 +135,7 @@ TEST(Samplers, MultiJitteredIsJitteredAndNRooks)
         for (std::uint32_t dim : kDims) {
             SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
             auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(spp)));
-            std::vector<glm::vec2> p = points(SAMPLER_MULTI_JITTERED, spp, pixel_range(3, 8), dim);
+            std::vector<glm::vec2> p = points(SamplerType::MultiJittered, spp, pixel_range(3, 8), dim);
             for (std::size_t px = 0; px < 8; ++px) {
                 EXPECT_TRUE(one_per_cell(&p[px * spp], spp, side, side));
                 EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 0));
@@ -161,7 +161,7 @@ TEST(Samplers, SobolAndHammersleyAre02NetsForM2To10)
 {
     // Broken variants seen to fail: a Cranley-Patterson rotation (adding a random offset
     // mod 1) instead of Owen scrambling; Hammersley's second coordinate in base 3.
-    for (std::uint32_t sampler : {SAMPLER_SOBOL, SAMPLER_HAMMERSLEY})
+    for (SamplerType sampler : {SamplerType::Sobol, SamplerType::Hammersley})
         for (std::uint32_t m = 2; m <= 10; ++m)
             for (std::uint32_t dim : kDims) {
                 SCOPED_TRACE(sampler_name(sampler) + " m " + std::to_string(m) + " dim " + std::to_string(dim));
@@ -180,7 +180,7 @@ TEST(Samplers, PixelsGetDifferentPointSets)
     // Per-pixel scrambling: two pixels never share a point set (else the image would
     // show the sampler's structure as aliasing). Broken variant seen to fail: the
     // scramble seed without the pixel.
-    for (std::uint32_t sampler = 0; sampler < SAMPLER_COUNT; ++sampler) {
+    for (const auto& [sampler_label, sampler] : sampler_names()) {
         std::vector<glm::vec2> p = points(sampler, 16, {5, 6}, DIM_PIXEL);
         std::set<std::pair<float, float>> a, b;
         for (int k = 0; k < 16; ++k) {
@@ -367,14 +367,14 @@ TEST(Samplers, ScrambledHaltonKeepsTheDigitStrata)
         std::uint32_t n = 1;
         for (std::uint32_t i = 0; i < ks[dim]; ++i)
             n *= bases[dim];
-        std::vector<glm::vec2> p = points(SAMPLER_HALTON, n, pixel_range(40, 4), dim, /*one_d=*/true);
+        std::vector<glm::vec2> p = points(SamplerType::Halton, n, pixel_range(40, 4), dim, /*one_d=*/true);
         for (std::size_t px = 0; px < 4; ++px)
             EXPECT_TRUE(one_per_stratum_1d(&p[px * n], n, 0)) << "dim " << dim;
     }
     for (std::uint32_t a : {1u, 3u})
         for (std::uint32_t b : {1u, 2u}) {
             std::uint32_t cols = 1u << a, rows = b == 1 ? 3u : 9u, n = cols * rows;
-            std::vector<glm::vec2> p = points(SAMPLER_HALTON, n, pixel_range(40, 4), DIM_PIXEL);
+            std::vector<glm::vec2> p = points(SamplerType::Halton, n, pixel_range(40, 4), DIM_PIXEL);
             for (std::size_t px = 0; px < 4; ++px)
                 EXPECT_TRUE(one_per_cell(&p[px * n], n, cols, rows)) << cols << "x" << rows;
         }
@@ -391,7 +391,7 @@ TEST(Samplers, ValuesDoNotDependOnTheOrderOfComputation)
     std::mt19937 rng(5);
     std::shuffle(shuffled.begin(), shuffled.end(), rng);
     const std::uint32_t spp = 64;
-    for (std::uint32_t sampler = 0; sampler < SAMPLER_COUNT; ++sampler)
+    for (const auto& [sampler_label, sampler] : sampler_names())
         for (bool one_d : {false, true}) {
             SCOPED_TRACE(sampler_name(sampler) + (one_d ? " 1D" : " 2D"));
             const std::uint32_t dim = DIM_PATH_START + 2 * DIMS_PER_BOUNCE + 3;
@@ -479,7 +479,7 @@ TEST(Samplers, ConvergenceOrderOfSmooth2DIntegrals)
     const std::uint32_t replicates = 256;
     for (std::uint32_t dim : {static_cast<std::uint32_t>(DIM_PIXEL),
                               static_cast<std::uint32_t>(DIM_PATH_START + 4 * DIMS_PER_BOUNCE + 5)})
-        for (std::uint32_t sampler = 0; sampler < SAMPLER_COUNT; ++sampler) {
+        for (const auto& [sampler_label, sampler] : sampler_names()) {
             std::vector<double> mse_bump, mse_exp;
             for (double spp_d : spps) {
                 auto spp = static_cast<std::uint32_t>(spp_d);
@@ -506,17 +506,17 @@ TEST(Samplers, ConvergenceOrderOfSmooth2DIntegrals)
                         slope_exp, mse_exp.front(), mse_exp.back());
             const std::string what = sampler_name(sampler) + " dims " + std::to_string(dim);
             switch (sampler) {
-            case SAMPLER_INDEPENDENT:
+            case SamplerType::Independent:
                 EXPECT_NEAR(slope_bump, -1.0, 0.2) << what;
                 EXPECT_NEAR(slope_exp, -1.0, 0.2) << what;
                 break;
-            case SAMPLER_MULTI_JITTERED:
+            case SamplerType::MultiJittered:
                 EXPECT_LE(slope_bump, -1.5) << what;
                 EXPECT_LE(slope_exp, -1.3) << what; // see above
                 break;
-            case SAMPLER_JITTERED:
-            case SAMPLER_SOBOL:
-            case SAMPLER_HAMMERSLEY:
+            case SamplerType::Jittered:
+            case SamplerType::Sobol:
+            case SamplerType::Hammersley:
                 EXPECT_LE(slope_bump, -1.5) << what;
                 EXPECT_LE(slope_exp, -1.5) << what;
                 break;

@@ -108,8 +108,8 @@ ClDevice open_device(int index)
     if (all.empty())
         throw Error("no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
     if (index < 0 || index >= static_cast<int>(all.size()))
-        throw Error("--device " + std::to_string(index) + ": no such device (" +
-                    std::to_string(all.size()) + " found; see 'pathcl devices')");
+        throw ParameterError("device", "there is no device " + std::to_string(index) + " (" +
+                                           std::to_string(all.size()) + " found)");
     ClDevice dev;
     dev.info = all[static_cast<std::size_t>(index)].info;
     dev.device = all[static_cast<std::size_t>(index)].device;

@@ -1,7 +1,8 @@
-// The one exception type pathcl throws for bad input or a failing device: its message is
-// the complete one-line error the CLI prints (it names the file and what is wrong).
+// The exceptions pathcl throws for bad input or a failing device: the message is the
+// complete one-line error (it names the file, or the parameter, and what is wrong).
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,22 @@ namespace pathcl {
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message);
+};
+
+// A bad value of one named parameter of a request (a render option, a camera override):
+// what() reads "<parameter>: <detail>". The detail may name other parameters as
+// {parameter}. The library speaks only of parameters; a front end names them its own way
+// (the CLI: by their flags, host/cli/parameter_flags.cpp) through describe().
+class ParameterError : public Error {
+public:
+    ParameterError(const std::string& parameter, const std::string& detail);
+
+    const std::string& parameter() const { return parameter_; }
+    // The message with every parameter (this one and those in the detail) named by `name`.
+    std::string describe(const std::function<std::string(const std::string&)>& name) const;
+
+private:
+    std::string parameter_, detail_;
 };
 
 // Prints a warning line to stderr ("pathcl: warning: ...").

@@ -11,7 +11,7 @@ namespace pathcl {
 void check_ray_log_path(const std::string& path)
 {
     if (lowercase_extension(path) != ".ply")
-        throw Error(path + ": --ray-log must be a .ply file");
+        throw ParameterError("ray_log", path + " must be a .ply file");
     check_output_location(path);
 }
 

@@ -10,6 +10,7 @@
 #include "render/film.h"
 #include "render/kernel_features.h"
 #include "sampling/samplers.h"
+#include "scene/render_space.h"
 
 namespace pathcl {
 namespace {
@@ -55,11 +56,12 @@ void check_options(const RenderOptions& opt)
     if (opt.width == 0 || opt.height == 0)
         throw Error("image size must be at least 1x1");
     if (opt.spp == 0)
-        throw Error("samples per pixel must be at least 1");
+        throw ParameterError("spp", "must be at least 1");
     if (opt.devices.empty())
         throw Error("no device selected");
-    if (opt.strategy > STRATEGY_MIS)
-        throw Error("unknown light-sampling strategy " + std::to_string(opt.strategy));
+    if (static_cast<std::uint32_t>(opt.strategy) > STRATEGY_MIS)
+        throw ParameterError("strategy", "unknown light-sampling strategy " +
+                                             std::to_string(static_cast<std::uint32_t>(opt.strategy)));
 }
 
 // The pixels whose camera rays the ray log keeps: an evenly spaced grid.
@@ -103,10 +105,10 @@ struct Renderer::Impl {
         frame.height = opt.height;
         frame.max_bounces = opt.max_bounces;
         frame.light_count = static_cast<pcl_uint>(compiled.arrays.lights.size());
-        frame.strategy = opt.strategy;
+        frame.strategy = static_cast<pcl_uint>(opt.strategy);
         frame.sphere_count = static_cast<pcl_uint>(compiled.sphere_count);
         frame.environment = compiled.environment_light;
-        frame.sampler = opt.sampler;
+        frame.sampler = static_cast<pcl_uint>(opt.sampler);
         frame.spp = spp;
     }
 
@@ -171,7 +173,7 @@ struct Renderer::Impl {
                 for (std::uint32_t y : log_ys)
                     for (std::uint32_t x : log_xs) {
                         const Ray& r = logged[static_cast<std::size_t>(y) * options.width + x];
-                        camera_rays.push_back({glm::dvec3(r.origin.x, r.origin.y, r.origin.z) + render_origin,
+                        camera_rays.push_back({render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
                                                glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
                     }
             }

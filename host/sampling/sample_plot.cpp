@@ -93,15 +93,16 @@ struct GridLines {
     glm::vec3 colour{0.0f};
 };
 
-std::vector<GridLines> strata_lines(std::uint32_t sampler, std::uint32_t spp, bool two_d)
+std::vector<GridLines> strata_lines(SamplerType sampler, std::uint32_t spp, bool two_d)
 {
     const glm::vec3 light = display(0.82f, 0.82f, 0.82f), medium = display(0.55f, 0.55f, 0.55f);
     std::vector<GridLines> g;
     auto fits = [](std::uint32_t n) { return n > 0 && n <= kPanel / 3; }; // at least 3 pixels apart
     const bool pow2 = spp > 0 && (spp & (spp - 1)) == 0;
     if (!two_d) { // two 1D decisions, each its own 1D set: stratified into spp intervals
-        if ((sampler == SAMPLER_JITTERED || sampler == SAMPLER_MULTI_JITTERED || sampler == SAMPLER_N_ROOKS ||
-             sampler == SAMPLER_HAMMERSLEY || (sampler == SAMPLER_SOBOL && pow2)) &&
+        if ((sampler == SamplerType::Jittered || sampler == SamplerType::MultiJittered ||
+             sampler == SamplerType::NRooks || sampler == SamplerType::Hammersley ||
+             (sampler == SamplerType::Sobol && pow2)) &&
             fits(spp))
             g.push_back({spp, spp, light});
         return g;
@@ -110,8 +111,8 @@ std::vector<GridLines> strata_lines(std::uint32_t sampler, std::uint32_t spp, bo
     if (s.fine && fits(s.fine))
         g.push_back({s.fine, s.fine, light});
     if (s.cols && fits(s.cols) && fits(s.rows))
-        g.push_back({s.cols, s.rows, sampler == SAMPLER_N_ROOKS ? light : medium});
-    if ((sampler == SAMPLER_SOBOL || sampler == SAMPLER_HAMMERSLEY) && pow2) {
+        g.push_back({s.cols, s.rows, sampler == SamplerType::NRooks ? light : medium});
+    if ((sampler == SamplerType::Sobol || sampler == SamplerType::Hammersley) && pow2) {
         int m = 0;
         while ((1u << m) < spp)
             ++m;
@@ -177,7 +178,7 @@ Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const Sa
                        std::string* note)
 {
     if (rq.spectrum && rq.spp > kSpectrumMaxSpp)
-        throw Error("--spectrum needs --spp at most " + std::to_string(kSpectrumMaxSpp));
+        throw ParameterError("spectrum", "needs {spp} at most " + std::to_string(kSpectrumMaxSpp));
     const bool two_d = rq.dim1 == rq.dim0 + 1;
     SamplerPointsRequest pr;
     pr.sampler = rq.sampler;
@@ -215,7 +216,7 @@ Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const Sa
     labels.push_back({{x0, 20}, sampler_name(rq.sampler) + ", " + std::to_string(rq.spp) + " spp, pixel " +
                                     rq.pixel_label + ", seed " + std::to_string(rq.seed)});
     labels.push_back({{x0, 40}, dims});
-    labels.push_back({{x0, y0 + kPanel + 26}, two_d || rq.sampler == SAMPLER_HALTON || rq.sampler == SAMPLER_INDEPENDENT
+    labels.push_back({{x0, y0 + kPanel + 26}, two_d || rq.sampler == SamplerType::Halton || rq.sampler == SamplerType::Independent
                                                   ? "x: dim " + std::to_string(rq.dim0) + " (right), y: dim " +
                                                         std::to_string(rq.dim1) + " (up)"
                                                   : "x: dim " + std::to_string(rq.dim0) + ", y: dim " +

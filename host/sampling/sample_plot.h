@@ -11,6 +11,7 @@
 
 #include "cl/cl_runtime.h"
 #include "image/image.h"
+#include "sampling/samplers.h"
 
 namespace pathcl {
 
@@ -31,7 +32,7 @@ struct PowerSpectrum {
 PowerSpectrum power_spectrum(const std::vector<glm::vec2>& points, std::size_t set_size, int max_frequency);
 
 struct SamplePlotRequest {
-    std::uint32_t sampler = 0;
+    SamplerType sampler = SamplerType::Independent;
     std::uint32_t spp = 1; // the set size (after sampler_spp)
     std::uint32_t seed = 0;
     std::uint32_t dim0 = 0, dim1 = 1;

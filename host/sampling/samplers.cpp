@@ -9,75 +9,74 @@
 
 namespace pathcl {
 
-const std::map<std::string, std::uint32_t>& sampler_names()
+const std::map<std::string, SamplerType>& sampler_names()
 {
-    static const std::map<std::string, std::uint32_t> names = {
-        {"independent", SAMPLER_INDEPENDENT}, {"jittered", SAMPLER_JITTERED},
-        {"multi-jittered", SAMPLER_MULTI_JITTERED}, {"n-rooks", SAMPLER_N_ROOKS},
-        {"sobol", SAMPLER_SOBOL}, {"halton", SAMPLER_HALTON},
-        {"hammersley", SAMPLER_HAMMERSLEY}};
+    static const std::map<std::string, SamplerType> names = {
+        {"independent", SamplerType::Independent}, {"jittered", SamplerType::Jittered},
+        {"multi-jittered", SamplerType::MultiJittered}, {"n-rooks", SamplerType::NRooks},
+        {"sobol", SamplerType::Sobol}, {"halton", SamplerType::Halton},
+        {"hammersley", SamplerType::Hammersley}};
     return names;
 }
 
-std::string sampler_name(std::uint32_t sampler)
+std::string sampler_name(SamplerType sampler)
 {
     for (const auto& [name, value] : sampler_names())
         if (value == sampler)
             return name;
-    throw Error("unknown sampler " + std::to_string(sampler));
+    throw Error("unknown sampler " + std::to_string(static_cast<std::uint32_t>(sampler)));
 }
 
-std::uint32_t sampler_spp(std::uint32_t sampler, std::uint32_t requested)
+std::uint32_t sampler_spp(SamplerType sampler, std::uint32_t requested)
 {
     std::uint64_t n = std::max<std::uint32_t>(requested, 1u);
     switch (sampler) {
-    case SAMPLER_JITTERED:
-    case SAMPLER_MULTI_JITTERED: {
+    case SamplerType::Jittered:
+    case SamplerType::MultiJittered: {
         auto r = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(n)));
         while (r * r < n)
             ++r;
         while (r > 1 && (r - 1) * (r - 1) >= n)
             --r;
         if (r * r > (1u << 30))
-            throw Error("--spp " + std::to_string(requested) + " rounds up to " + std::to_string(r * r) +
-                        " for this sampler, more than the 2^30 allowed");
+            throw ParameterError("spp", std::to_string(requested) + " rounds up to " + std::to_string(r * r) +
+                                            " for this sampler, more than the 2^30 allowed");
         return static_cast<std::uint32_t>(r * r);
     }
-    case SAMPLER_HAMMERSLEY: {
+    case SamplerType::Hammersley: {
         std::uint64_t p = 1;
         while (p < n)
             p <<= 1;
         if (p > (1u << 30))
-            throw Error("--spp " + std::to_string(requested) + " rounds up to " + std::to_string(p) +
-                        " for hammersley, more than the 2^30 allowed");
+            throw ParameterError("spp", std::to_string(requested) + " rounds up to " + std::to_string(p) +
+                                            " for hammersley, more than the 2^30 allowed");
         return static_cast<std::uint32_t>(p);
     }
-    case SAMPLER_INDEPENDENT:
-    case SAMPLER_N_ROOKS:
-    case SAMPLER_SOBOL:
-    case SAMPLER_HALTON:
+    case SamplerType::Independent:
+    case SamplerType::NRooks:
+    case SamplerType::Sobol:
+    case SamplerType::Halton:
         return static_cast<std::uint32_t>(n);
-    default:
-        throw Error("unknown sampler " + std::to_string(sampler));
     }
+    throw Error("unknown sampler " + std::to_string(static_cast<std::uint32_t>(sampler)));
 }
 
-StrataGrid sampler_strata(std::uint32_t sampler, std::uint32_t spp)
+StrataGrid sampler_strata(SamplerType sampler, std::uint32_t spp)
 {
     StrataGrid g;
     // The kernels' grid (sample/strata.h).
     const std::uint32_t cols = strata_cols(spp), rows = strata_rows(spp, cols);
     switch (sampler) {
-    case SAMPLER_JITTERED:
+    case SamplerType::Jittered:
         g.cols = cols;
         g.rows = rows;
         break;
-    case SAMPLER_MULTI_JITTERED:
+    case SamplerType::MultiJittered:
         g.cols = cols;
         g.rows = rows;
         g.fine = cols * rows;
         break;
-    case SAMPLER_N_ROOKS:
+    case SamplerType::NRooks:
         g.cols = g.rows = spp;
         break;
     default:

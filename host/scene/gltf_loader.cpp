@@ -155,9 +155,9 @@ struct Importer {
                 stack.push_back({*it, world, item.depth + 1});
         }
         if (camera_choice >= 0 && !have_camera)
-            throw Error(source + ": --camera " + std::to_string(camera_choice) + ": the scene has " +
-                        std::to_string(camera_nodes) + " camera node" + (camera_nodes == 1 ? "" : "s") +
-                        " (counted from 0)");
+            throw ParameterError("camera", "there is no camera node " + std::to_string(camera_choice) + ": " + source +
+                                               " has " + std::to_string(camera_nodes) + " camera node" +
+                                               (camera_nodes == 1 ? "" : "s") + " (counted from 0)");
         return have_camera;
     }
 };

@@ -40,7 +40,7 @@ void finish_triangles(PendingGeometry& geometry, const glm::dvec3& origin, Scene
         SceneTriangle tri;
         tri.material = pt.material;
         for (int k = 0; k < 3; ++k)
-            tri.v[k] = glm::vec3(pt.v[k] - origin);
+            tri.v[k] = glm::vec3(world_to_render(origin, pt.v[k]));
         // Degenerate (zero area in the float positions the device will see): drop.
         glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
         float len = glm::length(c);
@@ -86,10 +86,10 @@ void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& sc
     const glm::dvec3 origin = render_origin(geometry, have_camera, scene.camera);
     finish_triangles(geometry, origin, scene);
     for (SceneLight& l : scene.lights)
-        l.position -= origin;
+        l.position = world_to_render(origin, l.position);
     scene.render_origin = origin;
     if (have_camera)
-        scene.camera.position -= origin;
+        scene.camera.position = world_to_render(origin, scene.camera.position);
     else
         scene.camera = framing_camera(scene, 0.8);
 }

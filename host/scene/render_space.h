@@ -16,4 +16,17 @@ namespace pathcl {
 // after the subtraction keeps a scene 1e5 from the world origin at full float precision.
 void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& scene);
 
+// A world-space point in the render space whose origin is `render_origin`
+// (Scene::render_origin), and back: what everything after loading uses (camera
+// overrides given in world space, the camera-ray log written in world space).
+inline glm::dvec3 world_to_render(const glm::dvec3& render_origin, const glm::dvec3& world)
+{
+    return world - render_origin;
+}
+
+inline glm::dvec3 render_to_world(const glm::dvec3& render_origin, const glm::dvec3& render)
+{
+    return render + render_origin;
+}
+
 } // namespace pathcl

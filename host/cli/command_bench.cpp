@@ -1,0 +1,66 @@
+// `pathcl bench`: times repeated renders of one scene with one Renderer (compiled, built
+// and uploaded once), after one warm-up render, and prints min / median / max.
+#include <algorithm>
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+
+namespace pathcl::cli {
+namespace {
+
+struct BenchRequest {
+    std::string scene_path;
+    RenderOptions options;
+    int device = 0;
+    int runs = 5;
+};
+
+int run_bench(BenchRequest rq)
+{
+    Scene scene = load_gltf(rq.scene_path);
+    rq.options.devices = {rq.device};
+    Renderer renderer(scene, rq.options);
+    const RenderStats& setup = renderer.setup_stats();
+    std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s",
+                rq.scene_path.c_str(), setup.triangles, setup.bvh_nodes, setup.bvh_build_seconds * 1e3,
+                setup.kernel_build_seconds, setup.kernel_from_cache ? " (from cache)" : " (compiled)");
+    if (setup.texel_bytes > 0)
+        std::printf(" | texels %.1f KiB", static_cast<double>(setup.texel_bytes) / 1024.0);
+    std::printf("\n");
+    renderer.render(0); // warm-up: the driver's first launch compiles the kernels' machine code
+    std::vector<double> rates, seconds;
+    for (int i = 0; i < rq.runs; ++i) {
+        RenderResult r = renderer.render(static_cast<std::uint32_t>(i));
+        rates.push_back(r.stats.samples_per_second);
+        seconds.push_back(r.stats.render_seconds);
+    }
+    std::sort(rates.begin(), rates.end());
+    std::sort(seconds.begin(), seconds.end());
+    std::size_t mid = rates.size() / 2;
+    std::printf("%ux%u, %u spp, max bounces %u, %d runs: samples/s min %.4g median %.4g max %.4g | "
+                "render s min %.3f median %.3f max %.3f\n",
+                rq.options.width, rq.options.height, renderer.spp(), rq.options.max_bounces, rq.runs, rates.front(),
+                rates[mid], rates.back(), seconds.front(), seconds[mid], seconds.back());
+    return 0;
+}
+
+} // namespace
+
+Command add_bench_command(CLI::App& app)
+{
+    auto rq = std::make_shared<BenchRequest>();
+    rq->options.width = rq->options.height = 256;
+    rq->options.spp = 16;
+    CLI::App* bench = app.add_subcommand("bench", "Time repeated renders of a scene (min/median/max samples/s)");
+    bench->add_option("scene", rq->scene_path, "glTF 2.0 scene")->required();
+    add_render_options(bench, rq->options, rq->device);
+    bench->add_option("--runs", rq->runs, "timed runs after one warm-up")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    return {bench, [rq] { return run_bench(*rq); }};
+}
+
+} // namespace pathcl::cli

@@ -1,0 +1,52 @@
+// `pathcl compare`: the statistical image comparison the tests use, or a bit-for-bit one.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
+
+namespace pathcl::cli {
+namespace {
+
+struct CompareRequest {
+    std::string a, b;
+    CompareOptions options;
+    bool welch = false, bitwise = false;
+};
+
+int run_compare(const CompareRequest& rq)
+{
+    if (rq.bitwise) {
+        BitwiseReport r = compare_bitwise(read_image(rq.a), read_image(rq.b));
+        std::cout << r.summary();
+        return r.identical() ? 0 : 1;
+    }
+    CompareOptions options = rq.options;
+    options.pooled_variance = !rq.welch;
+    CompareReport r = compare_images(read_image(rq.a), read_image(rq.b), options);
+    std::cout << r.summary();
+    return r.passed ? 0 : 1;
+}
+
+} // namespace
+
+Command add_compare_command(CLI::App& app)
+{
+    auto rq = std::make_shared<CompareRequest>();
+    CLI::App* compare = app.add_subcommand(
+        "compare", "Statistically compare two EXR renders (per-pixel, tile and image z-tests); exit 1 if they differ");
+    compare->add_option("a", rq->a, "first EXR (with variance channels)")->required();
+    compare->add_option("b", rq->b, "second EXR")->required();
+    compare->add_option("--alpha", rq->options.alpha, "family-wise significance level")->capture_default_str();
+    compare->add_option("--max-fail-fraction", rq->options.max_fail_fraction, "tolerated failing fraction per scale")
+        ->capture_default_str();
+    compare->add_flag("--welch", rq->welch,
+                      "separate variances, for renders by different estimators (default: pooled, for a render "
+                      "against a reference made by the same estimator)");
+    compare->add_flag("--bitwise", rq->bitwise,
+                      "instead: are the pixel data (means, variances, spp) identical bit for bit? (reproducibility, "
+                      "refactors)");
+    return {compare, [rq] { return run_compare(*rq); }};
+}
+
+} // namespace pathcl::cli

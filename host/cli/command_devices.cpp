@@ -1,0 +1,28 @@
+// `pathcl devices`: every OpenCL platform and device, with the index --device takes.
+#include <cstdio>
+#include <iostream>
+
+#include "cl/cl_runtime.h"
+#include "cli/commands.h"
+
+namespace pathcl::cli {
+
+Command add_devices_command(CLI::App& app)
+{
+    CLI::App* devices = app.add_subcommand("devices", "List every OpenCL platform and device with its index");
+    return {devices, [] {
+                std::vector<DeviceInfo> list = list_devices();
+                if (list.empty()) {
+                    std::cout << "no OpenCL devices found\n";
+                    return 1;
+                }
+                for (const DeviceInfo& d : list)
+                    std::printf("%d: %s | %s | %s | %u compute units | %.1f GiB | %s%s\n", d.index,
+                                d.platform.c_str(), d.name.c_str(), d.type.c_str(), d.compute_units,
+                                static_cast<double>(d.global_memory) / (1024.0 * 1024.0 * 1024.0), d.version.c_str(),
+                                d.fp64 ? " | fp64" : "");
+                return 0;
+            }};
+}
+
+} // namespace pathcl::cli

@@ -1,0 +1,182 @@
+// `pathcl render`: loads a scene, applies the environment and camera flags, renders, and
+// writes every requested image (and the camera-ray log) or none of them.
+#include <cmath>
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "common/error.h"
+#include "common/staged_files.h"
+#include "image/image_io.h"
+#include "render/ray_log.h"
+#include "render/renderer.h"
+#include "scene/camera_overrides.h"
+#include "scene/gltf_loader.h"
+
+namespace pathcl::cli {
+namespace {
+
+struct EnvironmentFlags {
+    std::string file;
+    float strength = -1.0f; // < 0: keep the scene's
+    double rotation_degrees = 0.0;
+    std::vector<float> background; // empty or R, G, B
+};
+
+void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
+{
+    SceneEnvironment& env = scene.environment;
+    if (!f.background.empty()) {
+        for (float c : f.background)
+            if (!(c >= 0.0f) || !std::isfinite(c))
+                throw Error("--background: components must be finite and non-negative");
+        env = SceneEnvironment{};
+        env.present = true;
+        env.constant = glm::vec3(f.background[0], f.background[1], f.background[2]);
+    }
+    if (!f.file.empty()) {
+        env.present = true;
+        env.path = f.file;
+        env.strength = 1.0f;
+    }
+    if (f.strength >= 0.0f)
+        env.strength = f.strength;
+    env.rotation_degrees = f.rotation_degrees;
+}
+
+struct CameraFlags {
+    int camera = -1; // --camera N; -1: the first camera node
+    std::vector<double> look_from, look_at, up;
+    double fov = 0.0, aperture = 0.0, focus_distance = 0.0;
+    CLI::Option *fov_option = nullptr, *aperture_option = nullptr, *focus_option = nullptr;
+
+    CameraOverrides overrides() const
+    {
+        CameraOverrides co;
+        auto vec = [](const std::vector<double>& v) { return glm::dvec3(v[0], v[1], v[2]); };
+        if (fov_option->count())
+            co.fov_degrees = fov;
+        if (!look_from.empty())
+            co.look_from = vec(look_from);
+        if (!look_at.empty())
+            co.look_at = vec(look_at);
+        if (!up.empty())
+            co.up = vec(up);
+        if (aperture_option->count())
+            co.aperture = aperture;
+        if (focus_option->count())
+            co.focus_distance = focus_distance;
+        return co;
+    }
+};
+
+struct RenderRequest {
+    std::string scene_path;
+    std::vector<std::string> outputs;
+    RenderOptions options;
+    int device = 0;
+    EnvironmentFlags environment;
+    CameraFlags camera;
+    std::string ray_log; // --ray-log FILE.ply
+};
+
+void print_summary(const RenderRequest& rq, const RenderResult& r)
+{
+    const RenderStats& s = r.stats;
+    std::string names;
+    for (const std::string& output : rq.outputs)
+        names += (names.empty() ? "" : ", ") + output;
+    if (!rq.ray_log.empty())
+        names += ", " + rq.ray_log + " (" + std::to_string(r.camera_rays.size()) + " rays)";
+    std::string spp = std::to_string(s.spp) + " spp " + sampler_name(rq.options.sampler);
+    if (s.spp != rq.options.spp)
+        spp += " (rounded up from " + std::to_string(rq.options.spp) + ")";
+    std::printf("%s: %zu triangles, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
+                "%.3g samples/s | %llu NaN/Inf samples\n",
+                names.c_str(), s.triangles, s.lights, spp.c_str(), s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
+                s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
+                static_cast<unsigned long long>(s.bad_samples));
+}
+
+int run_render(RenderRequest rq)
+{
+    for (const std::string& output : rq.outputs)
+        check_output_path(output); // fail before spending time on the render
+    if (!rq.ray_log.empty())
+        check_ray_log_path(rq.ray_log);
+    if (rq.camera.camera < -1)
+        throw Error("--camera must be >= 0");
+    Scene scene = load_gltf(rq.scene_path, rq.camera.camera);
+    apply_environment_flags(scene, rq.environment);
+    apply_camera_overrides(scene, rq.camera.overrides());
+    RenderOptions& opt = rq.options;
+    opt.devices = {rq.device};
+    if (!rq.ray_log.empty())
+        opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
+    RenderResult r = render(scene, opt);
+    // Every output complete before any replaces what the user has.
+    StagedFiles staged;
+    for (const std::string& output : rq.outputs)
+        write_image_file(staged.stage(output), output, r.image);
+    if (!rq.ray_log.empty())
+        write_ray_log_file(staged.stage(rq.ray_log), rq.ray_log, r.camera_rays);
+    staged.commit();
+    print_summary(rq, r);
+    return 0;
+}
+
+void add_camera_flags(CLI::App* render, CameraFlags& c)
+{
+    render->add_option("--camera", c.camera,
+                       "camera node to render from: N-th camera node (perspective or orthographic) in depth-first "
+                       "node order, from 0 (default: the first)");
+    c.fov_option = render->add_option("--fov", c.fov, "vertical field of view in degrees (perspective camera)");
+    render->add_option("--look-from", c.look_from, "camera position X,Y,Z (world space)")->delimiter(',')->expected(3);
+    render->add_option("--look-at", c.look_at, "point the camera looks at X,Y,Z (world space)")
+        ->delimiter(',')
+        ->expected(3);
+    render->add_option("--up", c.up, "up direction X,Y,Z for --look-at (default: the camera's up)")
+        ->delimiter(',')
+        ->expected(3);
+    c.aperture_option = render->add_option("--aperture", c.aperture, "thin-lens radius in world units (0: pinhole)");
+    c.focus_option =
+        render->add_option("--focus-distance", c.focus_distance, "distance of the plane of focus along the view");
+}
+
+void add_environment_flags(CLI::App* render, EnvironmentFlags& e)
+{
+    render->add_option("--env", e.file, "equirectangular environment map (EXR/HDR), overrides the scene's")
+        ->check(CLI::ExistingFile);
+    render->add_option("--env-strength", e.strength, "environment radiance scale (default: the scene's, else 1)");
+    render->add_option("--env-rotation", e.rotation_degrees, "rotate the environment about +Y, degrees");
+    render->add_option("--background", e.background, "constant environment radiance R,G,B")
+        ->delimiter(',')
+        ->expected(3);
+}
+
+} // namespace
+
+Command add_render_command(CLI::App& app)
+{
+    auto rq = std::make_shared<RenderRequest>();
+    CLI::App* render = app.add_subcommand("render", "Render a glTF scene to an EXR or PNG image");
+    render->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
+    render->add_option("-o,--output", rq->outputs,
+                       "output image, repeatable (.exr: linear float + variance; .png: sRGB, clamped)")
+        ->required()
+        ->allow_extra_args(false);
+    add_render_options(render, rq->options, rq->device);
+    render->add_option("--seed", rq->options.seed, "random seed (same seed, scene, options: same image)")
+        ->capture_default_str();
+    add_environment_flags(render, rq->environment);
+    add_camera_flags(render, rq->camera);
+    render->add_option("--ray-log", rq->ray_log,
+                       "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
+                       "directions as normals");
+    render->add_flag("--single-scattering", rq->options.single_scattering,
+                     "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
+                     "render them; for cross-checks)");
+    return {render, [rq] { return run_render(*rq); }};
+}
+
+} // namespace pathcl::cli

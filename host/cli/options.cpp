@@ -1,0 +1,74 @@
+#include "cli/options.h"
+
+#include <algorithm>
+#include <map>
+
+namespace pathcl::cli {
+namespace {
+
+std::string lowercase(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+// --sampler NAME with a readable message for a bad name (CheckedTransformer's would list
+// the numeric values too).
+CLI::Validator sampler_validator()
+{
+    return CLI::Validator(
+        [](std::string& value) {
+            auto it = sampler_names().find(lowercase(value));
+            if (it == sampler_names().end())
+                return "unknown sampler '" + value +
+                       "' (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
+            value = std::to_string(static_cast<std::uint32_t>(it->second));
+            return std::string();
+        },
+        "SAMPLER");
+}
+
+const char* const kSamplerHelp =
+    "sampler: independent, jittered, multi-jittered, n-rooks, sobol, halton or hammersley (jittered and "
+    "multi-jittered round --spp up to a square, hammersley to a power of two)";
+
+} // namespace
+
+void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::string& default_name)
+{
+    command->add_option("--sampler", sampler, kSamplerHelp)
+        ->transform(sampler_validator())
+        ->type_name("NAME")
+        ->default_str(default_name);
+}
+
+void add_render_options(CLI::App* command, RenderOptions& options, int& device)
+{
+    command->add_option("--spp", options.spp, "samples per pixel")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1u << 30));
+    command->add_option("--width", options.width, "image width")->capture_default_str()->check(CLI::Range(1u, 32768u));
+    command->add_option("--height", options.height, "image height")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 32768u));
+    command->add_option("--max-bounces", options.max_bounces,
+                        "scattering events per path (0: emission only, 1: direct light)")
+        ->capture_default_str()
+        ->check(CLI::Range(0u, 1u << 16));
+    static const std::map<std::string, Strategy> strategies = {
+        {"bsdf", Strategy::Bsdf}, {"nee", Strategy::Nee}, {"one-sample", Strategy::OneSample}, {"mis", Strategy::Mis}};
+    command->add_option("--strategy", options.strategy, "light sampling: bsdf, nee, one-sample or mis")
+        ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
+        ->default_str("mis");
+    add_sampler_option(command, options.sampler, sampler_name(options.sampler));
+    command->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
+}
+
+std::string flag_for(const std::string& parameter)
+{
+    std::string flag = "--" + parameter;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+}
+
+} // namespace pathcl::cli

@@ -1,0 +1,23 @@
+// Option groups several subcommands share, and the flag that names each library
+// parameter in error messages (the library names parameters, the CLI names flags).
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "render/render_options.h"
+
+namespace pathcl::cli {
+
+// --spp, --width, --height, --max-bounces, --strategy, --sampler and --device, with the
+// values in `options` (and `device`) as their defaults: the group `render` and `bench` share.
+void add_render_options(CLI::App* command, RenderOptions& options, int& device);
+
+// --sampler NAME alone (the sample visualizer), with the default `default_name`.
+void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::string& default_name);
+
+// The flag of a library parameter ("look_at" -> "--look-at").
+std::string flag_for(const std::string& parameter);
+
+} // namespace pathcl::cli
