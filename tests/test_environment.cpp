@@ -6,9 +6,12 @@
 #include <filesystem>
 #include <numbers>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "image/image_io.h"
 #include "render/environment.h"
 #include "render/light_distribution.h"
 #include "render/renderer.h"
@@ -199,12 +202,34 @@ TEST(Environment, SceneExtrasUriMustStayInsideTheSceneDirectory)
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("leaves the scene's directory"), std::string::npos) << e.what();
     }
+    // Inside the directory: the image is read when the scene is loaded (a missing one is
+    // an error naming it then, not at render time).
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("pathcl-env-" + std::to_string(::getpid()));
+    fs::create_directories(dir / "maps");
     env["uri"] = tinygltf::Value(std::string("maps/sky.exr"));
     extras["environment"] = tinygltf::Value(env);
     b.model.scenes[0].extras = tinygltf::Value(extras);
-    Scene s = import_gltf(b.model, "ok.gltf", "/tmp/scene");
+    try {
+        import_gltf(b.model, "missing.gltf", dir.string());
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("sky.exr"), std::string::npos) << e.what();
+    }
+    Image sky;
+    sky.width = 2;
+    sky.height = 1;
+    sky.spp = 1;
+    sky.rgb = {0.5f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
+    sky.variance.assign(6, 0.0f);
+    write_image((dir / "maps" / "sky.exr").string(), sky);
+    Scene s = import_gltf(b.model, "ok.gltf", dir.string());
     EXPECT_TRUE(s.environment.present);
-    EXPECT_EQ(s.environment.path, "/tmp/scene/maps/sky.exr");
+    EXPECT_EQ(s.environment.path, (dir / "maps" / "sky.exr").string());
+    EXPECT_EQ(s.environment.width, 2u);
+    EXPECT_EQ(s.environment.height, 1u);
+    EXPECT_EQ(s.environment.rgb, sky.rgb);
+    fs::remove_all(dir);
 }
 
 } // namespace

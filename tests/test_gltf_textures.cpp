@@ -148,9 +148,9 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
     Scene s = import_gltf(q.b.model, "slots.gltf");
     const SceneMaterial& sm = s.materials[0];
-    const SceneTexture* slots[7] = {&sm.base_color_texture,  &sm.metallic_roughness_texture, &sm.emissive_texture,
-                                    &sm.normal_texture,      &sm.specular_texture,           &sm.specular_color_texture,
-                                    &sm.transmission_texture};
+    const SceneTexture* slots[7] = {&sm.textures[TEXTURE_SLOT_BASE_COLOR],  &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS], &sm.textures[TEXTURE_SLOT_EMISSIVE],
+                                    &sm.textures[TEXTURE_SLOT_NORMAL],      &sm.textures[TEXTURE_SLOT_SPECULAR],           &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
+                                    &sm.textures[TEXTURE_SLOT_TRANSMISSION]};
     const int sets[7] = {1, 0, 0, 0, 1, 0, 0};
     ASSERT_EQ(s.images.size(), 7u);
     for (int i = 0; i < 7; ++i) {
@@ -181,15 +181,15 @@ TEST(GltfTextures, SamplersGiveWrapModesAndFilter)
     q.mat().pbrMetallicRoughness.metallicRoughnessTexture.index = white_texture(q.b); // no sampler: defaults
     Scene s = import_gltf(q.b.model, "samplers.gltf");
     const SceneMaterial& m = s.materials[0];
-    EXPECT_EQ(m.base_color_texture.wrap_s, TextureWrap::ClampToEdge);
-    EXPECT_EQ(m.base_color_texture.wrap_t, TextureWrap::MirroredRepeat);
-    EXPECT_TRUE(m.base_color_texture.nearest);
-    EXPECT_EQ(m.emissive_texture.wrap_s, TextureWrap::MirroredRepeat);
-    EXPECT_EQ(m.emissive_texture.wrap_t, TextureWrap::Repeat);
-    EXPECT_FALSE(m.emissive_texture.nearest);
-    EXPECT_EQ(m.metallic_roughness_texture.wrap_s, TextureWrap::Repeat);
-    EXPECT_EQ(m.metallic_roughness_texture.wrap_t, TextureWrap::Repeat);
-    EXPECT_FALSE(m.metallic_roughness_texture.nearest);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_BASE_COLOR].wrap_s, TextureWrap::ClampToEdge);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_BASE_COLOR].wrap_t, TextureWrap::MirroredRepeat);
+    EXPECT_TRUE(m.textures[TEXTURE_SLOT_BASE_COLOR].nearest);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_EMISSIVE].wrap_s, TextureWrap::MirroredRepeat);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_EMISSIVE].wrap_t, TextureWrap::Repeat);
+    EXPECT_FALSE(m.textures[TEXTURE_SLOT_EMISSIVE].nearest);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS].wrap_s, TextureWrap::Repeat);
+    EXPECT_EQ(m.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS].wrap_t, TextureWrap::Repeat);
+    EXPECT_FALSE(m.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS].nearest);
 }
 
 glm::vec2 apply(const SceneTexture& t, glm::vec2 uv)
@@ -216,7 +216,7 @@ TEST(GltfTextures, TextureTransformFollowsTheSpecificationsExample)
     t["texCoord"] = tinygltf::Value(1);
     info.extensions["KHR_texture_transform"] = tinygltf::Value(t);
     Scene s = import_gltf(q.b.model, "transform.gltf");
-    const SceneTexture& tex = s.materials[0].base_color_texture;
+    const SceneTexture& tex = s.materials[0].textures[TEXTURE_SLOT_BASE_COLOR];
     EXPECT_EQ(tex.texcoord, 1);
     const std::pair<glm::vec2, glm::vec2> corners[4] = {
         {{0, 0}, {0, 1}}, {{1, 0}, {0, 0.5f}}, {{1, 1}, {0.5f, 0.5f}}, {{0, 1}, {0.5f, 1}}};
@@ -701,7 +701,7 @@ TEST(DeviceTextures, TexturedEmitterPowerFollowsTheTextureUnderIt)
     ASSERT_EQ(cs.arrays.lights.size(), 2u);
     std::vector<double> mean;
     for (std::size_t t = 0; t < 2; ++t)
-        mean.push_back(texture_mean_over_triangle(s.images[0], s.materials[0].emissive_texture, true, s.texcoords[0][t]).x);
+        mean.push_back(texture_mean_over_triangle(s.images[0], s.materials[0].textures[TEXTURE_SLOT_EMISSIVE], true, s.texcoords[0][t]).x);
     EXPECT_GT(std::max(mean[0], mean[1]), 0.6);
     EXPECT_LT(std::min(mean[0], mean[1]), 0.4);
     // Light i names its triangle by leaf index; map back to scene triangles.

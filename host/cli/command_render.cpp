@@ -11,6 +11,7 @@
 #include "render/ray_log.h"
 #include "render/renderer.h"
 #include "scene/camera_overrides.h"
+#include "scene/environment_image.h"
 #include "scene/gltf_loader.h"
 
 namespace pathcl::cli {
@@ -35,8 +36,7 @@ void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
         env.constant = glm::vec3(f.background[0], f.background[1], f.background[2]);
     }
     if (!f.file.empty()) {
-        env.present = true;
-        env.path = f.file;
+        read_environment_image(env, f.file);
         env.strength = 1.0f;
     }
     if (f.strength >= 0.0f)

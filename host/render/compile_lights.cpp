@@ -91,10 +91,11 @@ void add_triangle_lights(const Scene& scene, const std::vector<std::uint32_t>& l
         // estimate: it only sets how often the light is picked; the floor keeps every
         // emitter pickable, so the estimator stays unbiased).
         glm::dvec3 radiance(m.emission);
-        if (m.emissive_texture.present()) {
-            const SceneImage& img = scene.images[static_cast<std::size_t>(m.emissive_texture.image)];
-            const TriangleUv& uv = scene.texcoords[static_cast<std::size_t>(m.emissive_texture.texcoord)][leaf_order[i]];
-            radiance *= texture_mean_over_triangle(img, m.emissive_texture, true, uv);
+        const SceneTexture& emissive = m.textures[TEXTURE_SLOT_EMISSIVE];
+        if (emissive.present()) {
+            const SceneImage& img = scene.images[static_cast<std::size_t>(emissive.image)];
+            const TriangleUv& uv = scene.texcoords[static_cast<std::size_t>(emissive.texcoord)][leaf_order[i]];
+            radiance *= texture_mean_over_triangle(img, emissive, true, uv);
         }
         power.push_back(std::numbers::pi * area * power_luminance(glm::vec3(radiance)));
     }
@@ -146,7 +147,7 @@ void add_punctual_lights(const Scene& scene, std::vector<Light>& lights, std::ve
 
 void add_environment_light(const Scene& scene, CompiledScene& out, std::vector<double>& power)
 {
-    EnvironmentMap map = load_environment(scene.environment);
+    EnvironmentMap map = build_environment_map(scene.environment);
     double rot = scene.environment.rotation_degrees * std::numbers::pi / 180.0;
     Light l{};
     l.type = LIGHT_ENVIRONMENT;

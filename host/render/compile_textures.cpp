@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "render/compile_scene.h"
 #include "render/texture_lookup.h"
+#include "scene/texture_slots.h"
 
 namespace pathcl {
 namespace {
@@ -89,15 +90,9 @@ void compile_textures(const Scene& scene, const std::vector<std::uint32_t>& leaf
         return static_cast<pcl_int>(a.texture_views.size() - 1);
     };
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        const SceneMaterial& sm = scene.materials[i];
-        pcl_int* slots = a.materials[i].textures;
-        slots[TEXTURE_SLOT_BASE_COLOR] = view_of(sm.base_color_texture, true);
-        slots[TEXTURE_SLOT_METALLIC_ROUGHNESS] = view_of(sm.metallic_roughness_texture, false);
-        slots[TEXTURE_SLOT_EMISSIVE] = view_of(sm.emissive_texture, true);
-        slots[TEXTURE_SLOT_NORMAL] = view_of(sm.normal_texture, false);
-        slots[TEXTURE_SLOT_SPECULAR] = view_of(sm.specular_texture, false);
-        slots[TEXTURE_SLOT_SPECULAR_COLOR] = view_of(sm.specular_color_texture, true);
-        slots[TEXTURE_SLOT_TRANSMISSION] = view_of(sm.transmission_texture, false);
+        for (const TextureSlot& ts : texture_slot_table())
+            a.materials[i].textures[ts.slot] =
+                view_of(scene.materials[i].textures[static_cast<std::size_t>(ts.slot)], ts.srgb);
     }
 }
 

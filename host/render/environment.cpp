@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include "common/error.h"
-#include "image/image_io.h"
 
 namespace pathcl {
 namespace {
@@ -55,7 +54,7 @@ void build_environment_distribution(EnvironmentMap& map)
     map.average_radiance = solid_angle_sum * (pi / map.height) * (2.0 * pi / map.width) / (4.0 * pi);
 }
 
-EnvironmentMap load_environment(const SceneEnvironment& env)
+EnvironmentMap build_environment_map(const SceneEnvironment& env)
 {
     EnvironmentMap map;
     if (env.path.empty()) {
@@ -63,16 +62,15 @@ EnvironmentMap load_environment(const SceneEnvironment& env)
         glm::vec3 c = env.constant * env.strength;
         map.texels = {{c.x, c.y, c.z, 0.0f}};
     } else {
-        Image img = read_image(env.path);
-        map.width = img.width;
-        map.height = img.height;
-        map.texels.resize(static_cast<std::size_t>(img.width) * img.height);
+        map.width = env.width;
+        map.height = env.height;
+        map.texels.resize(static_cast<std::size_t>(env.width) * env.height);
         for (std::size_t i = 0; i < map.texels.size(); ++i) {
-            float r = img.rgb[i * 3] * env.strength, g = img.rgb[i * 3 + 1] * env.strength,
-                  b = img.rgb[i * 3 + 2] * env.strength;
+            float r = env.rgb[i * 3] * env.strength, g = env.rgb[i * 3 + 1] * env.strength,
+                  b = env.rgb[i * 3 + 2] * env.strength;
             if (!std::isfinite(r) || !std::isfinite(g) || !std::isfinite(b) || r < 0.0f || g < 0.0f || b < 0.0f)
-                throw Error(env.path + ": environment texel " + std::to_string(i % img.width) + "," +
-                            std::to_string(i / img.width) + " is negative, NaN or infinite");
+                throw Error(env.path + ": environment texel " + std::to_string(i % env.width) + "," +
+                            std::to_string(i / env.width) + " is negative, NaN or infinite");
             map.texels[i] = {r, g, b, 0.0f};
         }
     }

@@ -20,8 +20,10 @@ struct EnvironmentMap {
     double average_radiance = 0.0; // luminance, solid-angle weighted
 };
 
-// Loads the image (OpenImageIO) or makes the constant 1x1 map; throws pathcl::Error.
-EnvironmentMap load_environment(const SceneEnvironment& env);
+// The map of the scene's environment (its image, or a constant 1x1 map) times its
+// strength, with its sampling distribution; throws pathcl::Error naming the file for a
+// negative, NaN or infinite texel.
+EnvironmentMap build_environment_map(const SceneEnvironment& env);
 
 // Builds the sampling distribution of an already filled map.
 void build_environment_distribution(EnvironmentMap& map);

@@ -21,7 +21,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_GLOSSY, m.metallic > 0.0f || m.specular > 0.0f);
         set(FEATURE_TRANSMISSION, m.transmission > 0.0f);
         set(FEATURE_TEXTURES, m.has_textures());
-        set(FEATURE_NORMAL_MAPS, m.normal_texture.present());
+        set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
     }
     set(FEATURE_VERTEX_COLORS, !scene.colors.empty());
     for (const SceneLight& l : scene.lights) {

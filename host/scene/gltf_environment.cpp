@@ -8,6 +8,7 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/environment_image.h"
 #include "scene/gltf_values.h"
 
 namespace pathcl {
@@ -28,8 +29,7 @@ SceneEnvironment import_environment(const tinygltf::Value& extras, const std::st
     auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
     if (d != dir.end() || fs::path(uri).is_absolute())
         throw Error(source + ": environment uri '" + uri + "' leaves the scene's directory");
-    environment.present = true;
-    environment.path = file.string();
+    read_environment_image(environment, file.string());
     environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
     if (!(environment.strength >= 0.0f))
         throw Error(source + ": environment strength must be non-negative");

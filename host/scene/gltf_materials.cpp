@@ -9,6 +9,7 @@
 #include "common/error.h"
 #include "scene/gltf_textures.h"
 #include "scene/gltf_values.h"
+#include "scene/texture_slots.h"
 
 namespace pathcl {
 namespace {
@@ -46,6 +47,32 @@ const tinygltf::Value* texture_transform(const tinygltf::ExtensionMap& extension
     return it == extensions.end() ? nullptr : &it->second;
 }
 
+// Where the core material keeps the textureInfo of a slot (tinygltf gives each its own
+// member; the normal texture's type differs, so the three fields it shares are taken).
+struct CoreTextureInfo {
+    int index, texcoord;
+    const tinygltf::ExtensionMap* extensions;
+};
+
+CoreTextureInfo core_texture_info(const tinygltf::Material& m, int slot)
+{
+    switch (slot) {
+    case TEXTURE_SLOT_BASE_COLOR:
+        return {m.pbrMetallicRoughness.baseColorTexture.index, m.pbrMetallicRoughness.baseColorTexture.texCoord,
+                &m.pbrMetallicRoughness.baseColorTexture.extensions};
+    case TEXTURE_SLOT_METALLIC_ROUGHNESS:
+        return {m.pbrMetallicRoughness.metallicRoughnessTexture.index,
+                m.pbrMetallicRoughness.metallicRoughnessTexture.texCoord,
+                &m.pbrMetallicRoughness.metallicRoughnessTexture.extensions};
+    case TEXTURE_SLOT_EMISSIVE:
+        return {m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions};
+    case TEXTURE_SLOT_NORMAL:
+        return {m.normalTexture.index, m.normalTexture.texCoord, &m.normalTexture.extensions};
+    default:
+        return {-1, 0, nullptr};
+    }
+}
+
 SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& textures, const std::string& source,
                               const std::string& where)
 {
@@ -68,35 +95,31 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
         out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
         out.specular_color = vec3_or(e->second, "specularColorFactor", glm::vec3(1.0f));
-        if (e->second.Has("specularTexture"))
-            out.specular_texture = textures.read(e->second.Get("specularTexture"), where + " specularTexture");
-        if (e->second.Has("specularColorTexture"))
-            out.specular_color_texture =
-                textures.read(e->second.Get("specularColorTexture"), where + " specularColorTexture");
     }
     if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
         out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
-        if (e->second.Has("transmissionTexture"))
-            out.transmission_texture =
-                textures.read(e->second.Get("transmissionTexture"), where + " transmissionTexture");
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
     if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
         out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
 
-    // Core textures (occlusionTexture is not read: a path tracer computes occlusion).
-    auto core = [&](const tinygltf::TextureInfo& info, const char* name) {
-        return info.index < 0 ? SceneTexture{}
-                              : textures.read(info.index, info.texCoord, texture_transform(info.extensions),
-                                              where + " " + name);
-    };
-    out.base_color_texture = core(pbr.baseColorTexture, "baseColorTexture");
-    out.metallic_roughness_texture = core(pbr.metallicRoughnessTexture, "metallicRoughnessTexture");
-    out.emissive_texture = core(m.emissiveTexture, "emissiveTexture");
+    // The texture of every slot (occlusionTexture is not read: a path tracer computes
+    // occlusion).
+    for (const TextureSlot& ts : texture_slot_table()) {
+        const std::string slot_where = where + " " + ts.name;
+        if (ts.extension) {
+            auto e = m.extensions.find(ts.extension);
+            if (e != m.extensions.end() && e->second.Has(ts.name))
+                out.textures[static_cast<std::size_t>(ts.slot)] = textures.read(e->second.Get(ts.name), slot_where);
+            continue;
+        }
+        CoreTextureInfo info = core_texture_info(m, ts.slot);
+        if (info.index >= 0)
+            out.textures[static_cast<std::size_t>(ts.slot)] =
+                textures.read(info.index, info.texcoord, texture_transform(*info.extensions), slot_where);
+    }
     if (m.normalTexture.index >= 0) {
-        out.normal_texture = textures.read(m.normalTexture.index, m.normalTexture.texCoord,
-                                           texture_transform(m.normalTexture.extensions), where + " normalTexture");
         out.normal_scale = static_cast<float>(m.normalTexture.scale);
         if (!std::isfinite(out.normal_scale))
             throw Error(source + ": " + where + ": normalTexture scale must be finite");
@@ -118,15 +141,5 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
     return materials;
 }
 
-std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m)
-{
-    return {{&m.base_color_texture, "baseColorTexture"},
-            {&m.metallic_roughness_texture, "metallicRoughnessTexture"},
-            {&m.emissive_texture, "emissiveTexture"},
-            {&m.normal_texture, "normalTexture"},
-            {&m.specular_texture, "specularTexture"},
-            {&m.specular_color_texture, "specularColorTexture"},
-            {&m.transmission_texture, "transmissionTexture"}};
-}
 
 } // namespace pathcl

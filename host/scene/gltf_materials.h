@@ -22,7 +22,4 @@ class TextureImporter;
 std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, TextureImporter& textures,
                                             const std::string& source);
 
-// The texture slots of a material, each with its glTF name (for messages).
-std::vector<std::pair<const SceneTexture*, const char*>> texture_slots(const SceneMaterial& m);
-
 } // namespace pathcl

@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_materials.h"
+#include "scene/texture_slots.h"
 #include "scene/tangents.h"
 
 namespace pathcl {
@@ -25,15 +26,15 @@ constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometry& geometry)
 {
     for (const SceneMaterial& material : materials) {
-        for (const auto& [slot, name] : texture_slots(material)) {
-            if (!slot->present())
+        for (const SceneTexture& texture : material.textures) {
+            if (!texture.present())
                 continue;
-            std::size_t set = static_cast<std::size_t>(slot->texcoord);
+            std::size_t set = static_cast<std::size_t>(texture.texcoord);
             if (set >= geometry.texcoord_used.size())
                 geometry.texcoord_used.resize(set + 1, false);
             geometry.texcoord_used[set] = true;
         }
-        geometry.tangents_used = geometry.tangents_used || material.normal_texture.present();
+        geometry.tangents_used = geometry.tangents_used || material.textures[TEXTURE_SLOT_NORMAL].present();
     }
     geometry.texcoords.resize(geometry.texcoord_used.size());
 }
@@ -199,12 +200,13 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(
     VertexAttributes attr;
     const SceneMaterial& mat = materials_[static_cast<std::size_t>(material)];
     // Every set the material's textures read must be there.
-    for (const auto& [slot, name] : texture_slots(mat)) {
-        if (!slot->present())
+    for (const TextureSlot& ts : texture_slot_table()) {
+        const SceneTexture& texture = mat.textures[static_cast<std::size_t>(ts.slot)];
+        if (!texture.present())
             continue;
-        std::string attribute = "TEXCOORD_" + std::to_string(slot->texcoord);
+        std::string attribute = "TEXCOORD_" + std::to_string(texture.texcoord);
         if (!prim.attributes.count(attribute))
-            throw Error(source_ + ": " + what + ": its material's " + name + " reads " + attribute +
+            throw Error(source_ + ": " + what + ": its material's " + ts.name + " reads " + attribute +
                         ", which the primitive does not have");
     }
     attr.texcoords.resize(geometry_.texcoord_used.size());
@@ -238,8 +240,8 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(
             attr.colors[i] = glm::vec3(c);
         }
     }
-    if (mat.normal_texture.present())
-        attr.tangents = object_tangents(prim, mat.normal_texture.texcoord, pos, tris, what);
+    if (mat.textures[TEXTURE_SLOT_NORMAL].present())
+        attr.tangents = object_tangents(prim, mat.textures[TEXTURE_SLOT_NORMAL].texcoord, pos, tris, what);
     return attr;
 }
 

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "texture/texture_slots.h"
+
 namespace pathcl {
 
 // A decoded image: RGBA, row-major from the top row, 8 or 16 bits per channel (grey and
@@ -55,20 +57,18 @@ struct SceneMaterial {
     float ior = 1.5f;                  // KHR_materials_ior
     bool thin_walled = true;           // no KHR_materials_volume with thicknessFactor > 0
 
-    // Textures (each multiplies its factor): base colour (RGB, sRGB), metallic-roughness
-    // (B metal, G rough), emissive (RGB, sRGB), normal (tangent space, scaled by
-    // normal_scale), KHR_materials_specular specularTexture (A) and specularColorTexture
-    // (RGB, sRGB), KHR_materials_transmission transmissionTexture (R).
-    SceneTexture base_color_texture, metallic_roughness_texture, emissive_texture, normal_texture;
-    SceneTexture specular_texture, specular_color_texture, transmission_texture;
+    // Textures, one per slot (TEXTURE_SLOT_*, the table in scene/texture_slots.h); each
+    // value multiplies its factor.
+    std::array<SceneTexture, TEXTURE_SLOT_COUNT> textures;
     float normal_scale = 1.0f;
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool has_textures() const
     {
-        return base_color_texture.present() || metallic_roughness_texture.present() || emissive_texture.present() ||
-               normal_texture.present() || specular_texture.present() || specular_color_texture.present() ||
-               transmission_texture.present();
+        for (const SceneTexture& t : textures)
+            if (t.present())
+                return true;
+        return false;
     }
 };
 
@@ -92,11 +92,14 @@ struct SceneLight {
     std::string name;
 };
 
-// The environment seen by escaping rays: an equirectangular image (path) or a constant
-// colour; radiance = texel x strength; rotated about +Y by rotation_degrees.
+// The environment seen by escaping rays: an equirectangular image or a constant colour;
+// radiance = texel x strength; rotated about +Y by rotation_degrees. The image is read
+// when the scene is loaded (scene/environment_image.h), so a Scene is complete.
 struct SceneEnvironment {
     bool present = false;
-    std::string path;               // empty: constant
+    std::string path;               // the image file; empty: constant
+    std::uint32_t width = 0, height = 0;
+    std::vector<float> rgb;         // the image's texels as read, rows from the top
     glm::vec3 constant{0.0f};
     float strength = 1.0f;
     double rotation_degrees = 0.0;

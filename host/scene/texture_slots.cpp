@@ -1,0 +1,19 @@
+#include "scene/texture_slots.h"
+
+namespace pathcl {
+
+const std::array<TextureSlot, TEXTURE_SLOT_COUNT>& texture_slot_table()
+{
+    static const std::array<TextureSlot, TEXTURE_SLOT_COUNT> table = {{
+        {TEXTURE_SLOT_BASE_COLOR, "baseColorTexture", nullptr, true},
+        {TEXTURE_SLOT_METALLIC_ROUGHNESS, "metallicRoughnessTexture", nullptr, false},
+        {TEXTURE_SLOT_EMISSIVE, "emissiveTexture", nullptr, true},
+        {TEXTURE_SLOT_NORMAL, "normalTexture", nullptr, false},
+        {TEXTURE_SLOT_SPECULAR, "specularTexture", "KHR_materials_specular", false},
+        {TEXTURE_SLOT_SPECULAR_COLOR, "specularColorTexture", "KHR_materials_specular", true},
+        {TEXTURE_SLOT_TRANSMISSION, "transmissionTexture", "KHR_materials_transmission", false},
+    }};
+    return table;
+}
+
+} // namespace pathcl
