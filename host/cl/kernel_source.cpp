@@ -1,7 +1,7 @@
 #include "cl/kernel_source.h"
 
 #include <map>
-#include <regex>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -10,6 +10,25 @@
 
 namespace pathcl {
 namespace {
+
+// The path of a line `#include "path"` (whitespace allowed around the #), else nothing.
+// Includes with <> are left alone: only host-side parts of shared headers use them.
+std::optional<std::string> quoted_include(const std::string& line)
+{
+    std::size_t i = line.find_first_not_of(" \t");
+    if (i == std::string::npos || line[i] != '#')
+        return std::nullopt;
+    i = line.find_first_not_of(" \t", i + 1);
+    if (i == std::string::npos || line.compare(i, 7, "include") != 0)
+        return std::nullopt;
+    i = line.find_first_not_of(" \t", i + 7);
+    if (i == std::string::npos || line[i] != '"')
+        return std::nullopt;
+    std::size_t close = line.find('"', i + 1);
+    if (close == std::string::npos)
+        return std::nullopt;
+    return line.substr(i + 1, close - i - 1);
+}
 
 class Assembler {
 public:
@@ -25,19 +44,18 @@ public:
 private:
     void append(const std::string& name, const std::string& text)
     {
-        static const std::regex include_line(R"(^\s*#\s*include\s*"([^"]+)\".*$)");
         stack_.push_back(name);
         out_ += "#line 1 \"" + name + "\"\n";
         std::istringstream in(text);
         std::string line;
         for (int number = 1; std::getline(in, line); ++number) {
-            std::smatch m;
-            if (!std::regex_match(line, m, include_line)) {
+            std::optional<std::string> include = quoted_include(line);
+            if (!include) {
                 out_ += line;
                 out_ += '\n';
                 continue;
             }
-            const std::string target = m[1].str();
+            const std::string target = *include;
             for (const std::string& open : stack_)
                 if (open == target)
                     throw Error("kernel source " + name + ":" + std::to_string(number) + ": includes \"" + target +
