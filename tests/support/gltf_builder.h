@@ -11,6 +11,11 @@
 
 namespace pathcl::test {
 
+// Accessor component types, for add_indices and add_accessor.
+inline constexpr int kU8 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+inline constexpr int kU16 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+inline constexpr int kU32 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+
 class GltfBuilder {
 public:
     GltfBuilder();

@@ -1,0 +1,187 @@
+#include "support/bsdf_harness.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "features.h"
+#include "render/layer_albedo.h"
+#include "support/device_fixture.h"
+#include "support/reference_bsdf.h"
+
+namespace pathcl::test {
+
+namespace {
+
+pcl_float4 f4(const glm::dvec3& v)
+{
+    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
+}
+
+} // namespace
+
+const cl::Program& full_program()
+{
+    static cl::Program p = test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION);
+    return p;
+}
+
+const cl::Program& lambertian_program()
+{
+    static cl::Program p = test::build_test_program("bsdf_test_kernels.cl");
+    return p;
+}
+
+Material make_material(const MaterialSpec& s)
+{
+    Material m{};
+    m.base_color = {s.base.x, s.base.y, s.base.z, 1.0f};
+    m.specular_color = {s.specular_color.x, s.specular_color.y, s.specular_color.z, s.specular};
+    m.metallic = s.metallic;
+    m.roughness = s.roughness;
+    m.transmission = s.transmission;
+    m.ior = s.ior;
+    m.flags = s.thin ? MATERIAL_THIN_WALLED : 0u;
+    m.normal_scale = 1.0f;
+    for (pcl_int& t : m.textures)
+        t = TEXTURE_NONE;
+    m.smooth_layer_average = static_cast<float>(smooth_layer_average(s.ior));
+    return m;
+}
+
+MaterialSpec conductor(float roughness, glm::vec3 base)
+{
+    MaterialSpec s;
+    s.base = base;
+    s.metallic = 1.0f;
+    s.roughness = roughness;
+    return s;
+}
+
+MaterialSpec dielectric(float roughness, float ior, bool thin)
+{
+    MaterialSpec s;
+    s.roughness = roughness;
+    s.transmission = 1.0f;
+    s.ior = ior;
+    s.thin = thin;
+    return s;
+}
+
+MaterialSpec lambertian(glm::vec3 base)
+{
+    MaterialSpec s;
+    s.base = base;
+    s.specular = 0.0f;
+    return s;
+}
+
+std::vector<MaterialSpec> reflective_materials()
+{
+    MaterialSpec plastic = lambertian({0.3f, 0.6f, 0.9f});
+    plastic.specular = 1.0f;
+    plastic.roughness = 0.4f;
+    MaterialSpec tinted = plastic;
+    tinted.specular = 0.5f;
+    tinted.specular_color = {2.0f, 1.0f, 0.2f};
+    MaterialSpec half = conductor(0.7f, {0.9f, 0.5f, 0.1f});
+    half.metallic = 0.3f;
+    return {lambertian({0.5f, 0.6f, 0.7f}), conductor(0.2f), conductor(0.8f, {0.9f, 0.6f, 0.3f}), plastic, tinted,
+            half};
+}
+
+glm::dvec3 incident(double c)
+{
+    double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+    return {s * std::cos(0.3), s * std::sin(0.3), c};
+}
+
+const cl::Buffer& layer_buffer()
+{
+    static cl::Buffer b(test::test_device().context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                        layer_albedo_table().size() * sizeof(float), const_cast<float*>(layer_albedo_table().data()));
+    return b;
+}
+
+Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face,
+                    std::size_t n, std::uint32_t seed, glm::dvec3 normal)
+{
+    ClDevice& dev = test::test_device();
+    cl::Buffer dir_pdf(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Buffer weight(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Buffer eval(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Kernel k(program, "test_bsdf_sample");
+    set_kernel_args(k, m, f4(normal), f4(wo), static_cast<cl_uint>(front_face), seed, layer_buffer(), dir_pdf, weight,
+                    eval);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    Samples s;
+    s.dir_pdf.resize(n);
+    s.weight.resize(n);
+    s.eval.resize(n);
+    dev.queue.enqueueReadBuffer(dir_pdf, CL_TRUE, 0, n * sizeof(pcl_float4), s.dir_pdf.data());
+    dev.queue.enqueueReadBuffer(weight, CL_TRUE, 0, n * sizeof(pcl_float4), s.weight.data());
+    dev.queue.enqueueReadBuffer(eval, CL_TRUE, 0, n * sizeof(pcl_float4), s.eval.data());
+    return s;
+}
+
+std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m, bool front_face,
+                                  const std::vector<glm::dvec3>& wo, const std::vector<glm::dvec3>& wi,
+                                  glm::dvec3 normal)
+{
+    ClDevice& dev = test::test_device();
+    std::vector<pcl_float4> o, i;
+    for (std::size_t k = 0; k < wo.size(); ++k) {
+        o.push_back(f4(wo[k]));
+        i.push_back(f4(wi[k]));
+    }
+    std::size_t n = wo.size();
+    cl::Buffer ob(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), o.data());
+    cl::Buffer ib(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), i.data());
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
+    cl::Kernel k(program, "test_bsdf_eval");
+    set_kernel_args(k, m, f4(normal), static_cast<cl_uint>(front_face), layer_buffer(), ob, ib, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<pcl_float4> r(n);
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), r.data());
+    return r;
+}
+
+glm::dvec3 xyz(const pcl_float4& v)
+{
+    return {v.x, v.y, v.z};
+}
+
+bool near_rel(double a, double b, double rel, double abs_floor)
+{
+    return std::abs(a - b) <= rel * std::max(std::abs(a), std::abs(b)) + abs_floor;
+}
+
+Albedo directional_albedo(const cl::Program& program, const MaterialSpec& spec, double cos_o, bool front_face,
+                          bool energy, std::size_t n)
+{
+    Material m = make_material(spec);
+    test::ReferenceBsdf ref = test::ReferenceBsdf::from_material(m, front_face);
+    Samples s = sample_bsdf(program, m, incident(cos_o), front_face, n, 99);
+    Albedo a;
+    glm::dvec3 sum(0.0), sum_sq(0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const pcl_float4 &d = s.dir_pdf[i], &w = s.weight[i];
+        glm::dvec3 v(0.0);
+        if (d.w > 0.0f) {
+            v = xyz(w);
+            if (energy && d.z < 0.0f && !ref.thin)
+                v *= ref.eta * ref.eta;
+        }
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(d.w)) {
+            ++a.not_finite;
+            continue;
+        }
+        sum += v;
+        sum_sq += v * v;
+    }
+    a.mean = sum / static_cast<double>(n);
+    glm::dvec3 var = sum_sq / static_cast<double>(n) - a.mean * a.mean;
+    a.stderr_ = glm::sqrt(glm::max(var, glm::dvec3(0.0)) / static_cast<double>(n));
+    return a;
+}
+
+} // namespace pathcl::test

@@ -1,0 +1,133 @@
+// The stratification each of the seven samplers of kernels/samplers.cl promises, through
+// the real kernel code (the kernel sampler_points the visualizer uses): one sample per
+// stratum, row and column, (0,m,2)-nets, and a different point set for every pixel. Each
+// property test names, beside it, the deliberately broken variant that was seen to fail
+// it (checked once, by hand).
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sample/dimensions.h"
+#include "sampling/samplers.h"
+#include "support/sampler_points.h"
+
+namespace pathcl {
+namespace {
+
+using test::one_per_cell;
+using test::one_per_stratum_1d;
+using test::pixel_range;
+using test::points;
+
+// Dimension pairs the tests look at: the film position, the lens, and decisions of the
+// first and of a deep bounce (1D decisions at odd starts too).
+const std::vector<std::uint32_t> kDims = {DIM_PIXEL, DIM_LENS, DIM_PATH_START + 1, DIM_PATH_START + 5 * DIMS_PER_BOUNCE + 5};
+
+TEST(Samplers, JitteredHasExactlyOneSamplePerStratum)
+{
+    // Broken variant seen to fail: the stratum taken from a hash of the sample index
+    // instead of a permutation (two samples in one stratum, another empty).
+    for (std::uint32_t spp : {1u, 4u, 9u, 16u, 64u, 256u})
+        for (std::uint32_t dim : kDims) {
+            SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
+            auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(spp)));
+            std::vector<glm::vec2> p = points(SamplerType::Jittered, spp, pixel_range(100, 8), dim);
+            std::vector<glm::vec2> q = points(SamplerType::Jittered, spp, pixel_range(100, 8), dim, /*one_d=*/true);
+            for (std::size_t px = 0; px < 8; ++px) {
+                EXPECT_TRUE(one_per_cell(&p[px * spp], spp, side, side));
+                // 1D decisions: spp strata each.
+                EXPECT_TRUE(one_per_stratum_1d(&q[px * spp], spp, 0));
+                EXPECT_TRUE(one_per_stratum_1d(&q[px * spp], spp, 1));
+            }
+        }
+}
+
+TEST(Samplers, NRooksHasOneSamplePerRowAndColumn)
+{
+    // Broken variant seen to fail: the y stratum from a hash of the sample index.
+    for (std::uint32_t spp : {1u, 2u, 7u, 64u, 100u, 256u})
+        for (std::uint32_t dim : kDims) {
+            SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
+            std::vector<glm::vec2> p = points(SamplerType::NRooks, spp, pixel_range(7, 8), dim);
+            std::vector<glm::vec2> q = points(SamplerType::NRooks, spp, pixel_range(7, 8), dim, true);
+            for (std::size_t px = 0; px < 8; ++px) {
+                EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 0));
+                EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 1));
+                EXPECT_TRUE(one_per_stratum_1d(&q[px * spp], spp, 0));
+            }
+        }
+}
+
+TEST(Samplers, MultiJitteredIsJitteredAndNRooks)
+{
+    // Broken variant seen to fail: the sub-column taken from the sample's own column
+    // (sx where sy belongs), which keeps the coarse cells but puts two samples in one
+    // fine column.
+    for (std::uint32_t spp : {1u, 4u, 16u, 64u, 256u})
+        for (std::uint32_t dim : kDims) {
+            SCOPED_TRACE("spp " + std::to_string(spp) + " dim " + std::to_string(dim));
+            auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(spp)));
+            std::vector<glm::vec2> p = points(SamplerType::MultiJittered, spp, pixel_range(3, 8), dim);
+            for (std::size_t px = 0; px < 8; ++px) {
+                EXPECT_TRUE(one_per_cell(&p[px * spp], spp, side, side));
+                EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 0));
+                EXPECT_TRUE(one_per_stratum_1d(&p[px * spp], spp, 1));
+            }
+        }
+}
+
+// (0,m,2)-net in base 2: for every a = 0..m, every elementary interval
+// [i / 2^a, (i + 1) / 2^a) x [j / 2^(m-a), (j + 1) / 2^(m-a)) holds exactly one point.
+::testing::AssertionResult is_02_net(const glm::vec2* p, std::uint32_t m)
+{
+    const std::uint32_t n = 1u << m;
+    for (std::uint32_t a = 0; a <= m; ++a) {
+        ::testing::AssertionResult r = one_per_cell(p, n, 1u << a, 1u << (m - a));
+        if (!r)
+            return r << " (elementary intervals 2^-" << a << " x 2^-" << (m - a) << ")";
+    }
+    return ::testing::AssertionSuccess();
+}
+
+TEST(Samplers, SobolAndHammersleyAre02NetsForM2To10)
+{
+    // Broken variants seen to fail: a Cranley-Patterson rotation (adding a random offset
+    // mod 1) instead of Owen scrambling; Hammersley's second coordinate in base 3.
+    for (SamplerType sampler : {SamplerType::Sobol, SamplerType::Hammersley})
+        for (std::uint32_t m = 2; m <= 10; ++m)
+            for (std::uint32_t dim : kDims) {
+                SCOPED_TRACE(sampler_name(sampler) + " m " + std::to_string(m) + " dim " + std::to_string(dim));
+                const std::uint32_t spp = 1u << m;
+                std::vector<glm::vec2> p = points(sampler, spp, pixel_range(1000, 4), dim);
+                std::vector<glm::vec2> q = points(sampler, spp, pixel_range(1000, 4), dim, true);
+                for (std::size_t px = 0; px < 4; ++px) {
+                    EXPECT_TRUE(is_02_net(&p[px * spp], m));
+                    EXPECT_TRUE(one_per_stratum_1d(&q[px * spp], spp, 0)); // 1D decisions
+                }
+            }
+}
+
+TEST(Samplers, PixelsGetDifferentPointSets)
+{
+    // Per-pixel scrambling: two pixels never share a point set (else the image would
+    // show the sampler's structure as aliasing). Broken variant seen to fail: the
+    // scramble seed without the pixel.
+    for (const auto& [sampler_label, sampler] : sampler_names()) {
+        std::vector<glm::vec2> p = points(sampler, 16, {5, 6}, DIM_PIXEL);
+        std::set<std::pair<float, float>> a, b;
+        for (int k = 0; k < 16; ++k) {
+            a.insert({p[k].x, p[k].y});
+            b.insert({p[16 + k].x, p[16 + k].y});
+        }
+        EXPECT_NE(a, b) << sampler_name(sampler);
+    }
+}
+
+} // namespace
+} // namespace pathcl
