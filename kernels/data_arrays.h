@@ -13,27 +13,27 @@
 #define PATHCL_DATA_ARRAYS_H
 
 #define PATHCL_SCENE_ARRAYS(X)                                                                                         \
-    X(BvhNode, nodes)                    /* four-wide BVH, root first */                                              \
-    X(Triangle, triangles)               /* positions, BVH leaf order */                                              \
-    X(TriangleShading, shading)          /* normals, material, emitter; leaf order */                                 \
-    X(Material, materials)                                                                                            \
-    X(Light, lights)                     /* sphere lights first */                                                    \
-    X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                         \
-    X(pcl_float4, env_texels)            /* environment radiance, width x height, top row first */                    \
-    X(pcl_float, env_marginal)           /* its CDF over rows (height + 1) */                                         \
-    X(pcl_float, env_conditional)        /* per row, the CDF over columns (height x (width + 1)) */                   \
-    X(pcl_float, layer_albedo)           /* LAYER_* tables (closure/layer_table.h); glossy scenes only */             \
-    X(pcl_uint, texels)                  /* every texture image (TEXTURE_FORMAT_*) */                                 \
-    X(TextureImage, texture_images)                                                                                   \
-    X(TextureView, texture_views)                                                                                     \
-    X(TriangleTexcoords, texcoords)      /* texture-coordinate sets, leaf order */                                    \
-    X(TriangleTangents, tangents)        /* normal-mapped scenes only, leaf order */                                  \
-    X(TriangleColors, colors)            /* COLOR_0 scenes only, leaf order */                                        \
-    X(Camera, camera)                    /* one element */
+    X(BvhNode, nodes)           /* four-wide BVH, root first */                                                        \
+    X(Triangle, triangles)      /* positions, BVH leaf order */                                                        \
+    X(TriangleShading, shading) /* normals, material, emitter; leaf order */                                           \
+    X(Material, materials)                                                                                             \
+    X(Light, lights)                       /* sphere lights first */                                                   \
+    X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                          \
+    X(pcl_float4, env_texels)              /* environment radiance, width x height, top row first */                   \
+    X(pcl_float, env_marginal)             /* its CDF over rows (height + 1) */                                        \
+    X(pcl_float, env_conditional)          /* per row, the CDF over columns (height x (width + 1)) */                  \
+    X(pcl_float, layer_albedo)             /* LAYER_* tables (closure/layer_table.h); glossy scenes only */            \
+    X(pcl_uint, texels)                    /* every texture image (TEXTURE_FORMAT_*) */                                \
+    X(TextureImage, texture_images)                                                                                    \
+    X(TextureView, texture_views)                                                                                      \
+    X(TriangleTexcoords, texcoords) /* texture-coordinate sets, leaf order */                                          \
+    X(TriangleTangents, tangents)   /* normal-mapped scenes only, leaf order */                                        \
+    X(TriangleColors, colors)       /* COLOR_0 scenes only, leaf order */                                              \
+    X(Camera, camera)               /* one element */
 
 #define PATHCL_FILM_ARRAYS(X)                                                                                          \
-    X(Ray, rays)              /* one camera ray per pixel */                                                          \
-    X(FilmPixel, film)        /* per pixel */                                                                         \
-    X(pcl_uint, bad_samples)  /* NaN/Inf samples rejected, per pixel */
+    X(Ray, rays)             /* one camera ray per pixel */                                                            \
+    X(FilmPixel, film)       /* per pixel */                                                                           \
+    X(pcl_uint, bad_samples) /* NaN/Inf samples rejected, per pixel */
 
 #endif

@@ -98,10 +98,10 @@ typedef struct {
  *   u' = dot(transform_u.xyz, (u, v, 1)),  v' = dot(transform_v.xyz, (u, v, 1)),
  * then wrapped and filtered with texel centres at ((i + 0.5) / width, (j + 0.5) / height). */
 typedef struct {
-    pcl_float4 transform_u; /* w unused */
-    pcl_float4 transform_v; /* w unused */
-    pcl_int image;          /* index into the TextureImage array */
-    pcl_uint texcoord_base; /* where this view's texture-coordinate set starts in the texcoord buffer */
+    pcl_float4 transform_u;  /* w unused */
+    pcl_float4 transform_v;  /* w unused */
+    pcl_int image;           /* index into the TextureImage array */
+    pcl_uint texcoord_base;  /* where this view's texture-coordinate set starts in the texcoord buffer */
     pcl_uint wrap_s, wrap_t; /* TEXTURE_WRAP_* for u and v */
     pcl_uint flags;          /* TEXTURE_SRGB, TEXTURE_NEAREST */
     pcl_uint pad0, pad1, pad2;
@@ -124,13 +124,13 @@ typedef struct {
     pcl_float4 emission;       /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
     pcl_float4 specular_color; /* rgb specularColorFactor; w specularFactor */
     pcl_float metallic;
-    pcl_float roughness;    /* perceptual; GGX alpha = roughness^2 */
-    pcl_float transmission; /* transmissionFactor */
-    pcl_float ior;          /* KHR_materials_ior, default 1.5 */
-    pcl_uint flags;         /* MATERIAL_* */
-    pcl_float normal_scale; /* normalTexture.scale */
+    pcl_float roughness;                  /* perceptual; GGX alpha = roughness^2 */
+    pcl_float transmission;               /* transmissionFactor */
+    pcl_float ior;                        /* KHR_materials_ior, default 1.5 */
+    pcl_uint flags;                       /* MATERIAL_* */
+    pcl_float normal_scale;               /* normalTexture.scale */
     pcl_int textures[TEXTURE_SLOT_COUNT]; /* TextureView per slot (texture/texture_slots.h) */
-    pcl_float smooth_layer_average; /* 2 int s(mu, ior) mu dmu, see layer_albedo.h */
+    pcl_float smooth_layer_average;       /* 2 int s(mu, ior) mu dmu, see layer_albedo.h */
     pcl_int pad1, pad2;
 } Material;
 
@@ -166,15 +166,15 @@ typedef struct {
 
 typedef struct {
     pcl_float4 position;
-    pcl_float4 axis;  /* the way light travels (node -Z) */
-    pcl_float4 right; /* node +X */
+    pcl_float4 axis;                  /* the way light travels (node -Z) */
+    pcl_float4 right;                 /* node +X */
     pcl_float tan_half_h, tan_half_v; /* tan(hfov / 2), tan(vfov / 2) */
     pcl_int pad0, pad1;
 } RectSpotLight; /* 64 bytes */
 
 typedef struct {
     pcl_float4 direction; /* the way light travels */
-} DirectionalLight; /* 16 bytes */
+} DirectionalLight;       /* 16 bytes */
 
 typedef struct {
     pcl_float4 centre;
@@ -183,9 +183,9 @@ typedef struct {
 } SphereLight; /* 32 bytes */
 
 typedef struct {
-    pcl_uint width, height; /* of the map; texels and distribution: the env_* arrays */
+    pcl_uint width, height;               /* of the map; texels and distribution: the env_* arrays */
     pcl_float cos_rotation, sin_rotation; /* turn about +Y (the map's +Z towards +X) */
-} EnvironmentLight; /* 16 bytes */
+} EnvironmentLight;                       /* 16 bytes */
 
 /* A light: 96 bytes. `radiance` is what the type emits: TRIANGLE the emitted radiance
  * (emissiveFactor x strength, times the emissive texel at the point when data.triangle has
@@ -203,7 +203,7 @@ typedef struct {
         DirectionalLight directional;
         SphereLight sphere;
         EnvironmentLight environment;
-    } data; /* by type */
+    } data;              /* by type */
     pcl_float4 radiance; /* rgb; w unused */
     pcl_int type;        /* LIGHT_* */
     pcl_int pad0, pad1, pad2;
@@ -236,7 +236,7 @@ typedef struct {
     pcl_float4 forward; /* unit */
     pcl_float4 right;
     pcl_float4 up;
-    pcl_int type;            /* CAMERA_* */
+    pcl_int type;             /* CAMERA_* */
     pcl_float lens_radius;    /* 0: pinhole */
     pcl_float focus_distance; /* > 0 when lens_radius > 0 */
     pcl_int pad0;

@@ -50,7 +50,8 @@ TEST(BsdfDelta, SmoothGlassSplitsByExactFresnelAndConservesEnergy)
             std::size_t reflected = 0, bad_dir = 0, bad_weight = 0, not_delta = 0;
             double sin2_t = (1.0 - c * c) / (eta * eta);
             glm::dvec3 refl(-wo.x, -wo.y, wo.z);
-            glm::dvec3 refr = sin2_t < 1.0 ? glm::dvec3(-wo.x / eta, -wo.y / eta, -std::sqrt(1.0 - sin2_t)) : glm::dvec3(0.0);
+            glm::dvec3 refr =
+                sin2_t < 1.0 ? glm::dvec3(-wo.x / eta, -wo.y / eta, -std::sqrt(1.0 - sin2_t)) : glm::dvec3(0.0);
             for (std::size_t i = 0; i < n; ++i) {
                 glm::dvec3 d = xyz(s.dir_pdf[i]), w = xyz(s.weight[i]);
                 not_delta += s.weight[i].w != 1.0f;
@@ -115,8 +116,8 @@ TEST(BsdfRoughness, SweepConvergesToTheDeltaLobesWithoutNaN)
             Albedo delta = directional_albedo(full_program(), make(0.0f), c, front, true, 20000);
             double previous_gap = 1e30;
             for (double alpha : {1e-1, 1e-2, 1.01e-3}) {
-                Albedo a = directional_albedo(full_program(), make(static_cast<float>(std::sqrt(alpha))), c, front, true,
-                                              100000);
+                Albedo a = directional_albedo(full_program(), make(static_cast<float>(std::sqrt(alpha))), c, front,
+                                              true, 100000);
                 EXPECT_EQ(a.not_finite, 0u) << "alpha " << alpha;
                 double gap = std::abs(a.mean.x - delta.mean.x);
                 EXPECT_LE(gap, previous_gap + 5.0 * a.stderr_.x) << "alpha " << alpha;
@@ -124,8 +125,8 @@ TEST(BsdfRoughness, SweepConvergesToTheDeltaLobesWithoutNaN)
             }
             EXPECT_LT(previous_gap, 0.01 + 5.0 * delta.stderr_.x) << "alpha 1e-3 vs delta";
             for (double alpha : {9.9e-4, 1e-5, 1e-7}) {
-                Albedo a = directional_albedo(full_program(), make(static_cast<float>(std::sqrt(alpha))), c, front, true,
-                                              20000);
+                Albedo a = directional_albedo(full_program(), make(static_cast<float>(std::sqrt(alpha))), c, front,
+                                              true, 20000);
                 EXPECT_EQ(a.not_finite, 0u) << "alpha " << alpha;
             }
         }

@@ -91,8 +91,8 @@ TEST(BsdfEnergy, GltfOwnDiffuseWeightGainsEnergyAndIsCaught)
             e.f_cos = p->base_color * ((1.0f - p->metallic) * (1.0f - p->transmission) *
                                        (1.0f - max3(fresnel_specular_layer(p, fabs(dot(wo, hf))))) * INV_PI * wi.z);
 )"};
-    static cl::Program faulty = test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION,
-                                                         {gltf_diffuse_weight});
+    static cl::Program faulty =
+        test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION, {gltf_diffuse_weight});
     Albedo a = directional_albedo(faulty, white_plastic(0.3f), 0.05, true, false);
     EXPECT_GT(a.mean.x, 1.0 + 5.0 * a.stderr_.x + kLayerTableError + 0.1);
 }

@@ -98,9 +98,9 @@ void expect_sampling_matches(const cl::Program& program, const MaterialSpec& spe
         bad_weight += !w_ok;
         if ((!pdf_ok || !f_ok || !w_ok) && first_bad.empty())
             first_bad = "wi (" + std::to_string(wi.x) + ", " + std::to_string(wi.y) + ", " + std::to_string(wi.z) +
-                        "): sample pdf " + std::to_string(d.w) + ", eval pdf " + std::to_string(e.w) + ", reference pdf " +
-                        std::to_string(host_pdf) + "; eval f_cos.r " + std::to_string(e.x) + ", reference " +
-                        std::to_string(host_f.x) + "; weight.r " + std::to_string(w.x);
+                        "): sample pdf " + std::to_string(d.w) + ", eval pdf " + std::to_string(e.w) +
+                        ", reference pdf " + std::to_string(host_pdf) + "; eval f_cos.r " + std::to_string(e.x) +
+                        ", reference " + std::to_string(host_f.x) + "; weight.r " + std::to_string(w.x);
     }
     EXPECT_GT(checked, s.dir_pdf.size() / 10);
     EXPECT_LT(near_critical, checked / 1000 + 1) << "too many samples near the critical angle to skip";

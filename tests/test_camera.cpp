@@ -8,12 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "support/compiled_scene.h"
 #include "sampling/samplers.h"
 #include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
+#include "support/compiled_scene.h"
 #include "support/gltf_builder.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {
@@ -44,8 +44,8 @@ tinygltf::Value object(const std::vector<std::pair<std::string, tinygltf::Value>
 GltfBuilder one_camera(bool orthographic, const tinygltf::Value& extras = {})
 {
     GltfBuilder b;
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{0, 0, -1}, {1, 0, -1}, {0, 1, -1}}), -1,
-                                     b.add_material(glm::vec3(0.5f)))));
+    b.add_root(b.add_node(
+        b.add_mesh(b.add_positions({{0, 0, -1}, {1, 0, -1}, {0, 1, -1}}), -1, b.add_material(glm::vec3(0.5f)))));
     int cam = orthographic ? add_orthographic_camera(b, 4.0, 1.5) : b.add_perspective_camera(0.6);
     int node = b.add_node(-1, {}, {1.0, 2.0, 3.0}, {}, {2.0, 2.0, 2.0});
     b.model.nodes[static_cast<std::size_t>(node)].camera = cam;
@@ -114,8 +114,8 @@ TEST(CameraImport, CameraIndexBeyondTheCameraNodesIsAnErrorNamingTheCount)
     }
     // No camera at all: --camera 0 is an error, the default frames the scene.
     GltfBuilder b;
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1,
-                                     b.add_material(glm::vec3(0.5f)))));
+    b.add_root(b.add_node(
+        b.add_mesh(b.add_positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, b.add_material(glm::vec3(0.5f)))));
     EXPECT_THROW(import_gltf(b.model, "none.gltf", "", 0), Error);
     EXPECT_FALSE(import_gltf(b.model, "none.gltf").camera.from_file);
 }

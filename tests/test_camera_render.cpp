@@ -14,9 +14,9 @@
 #include "render/renderer.h"
 #include "scene/camera_overrides.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {
@@ -28,8 +28,8 @@ constexpr double kPlaneDepth = 4.0, kPixel = 1.0 / 16.0;
 
 // Vertical emissive stripes on z = -4, in pixel columns from the left image border
 // (x = -2): widths from 0.55 to 8 pixels, edges never on a pixel border.
-const std::vector<std::pair<double, double>> kStripes = {
-    {4.3, 4.85}, {8.3, 9.6}, {13.2, 16.7}, {21.4, 29.4}, {35.6, 36.4}, {40.25, 43.1}, {50.7, 51.9}, {55.5, 59.2}};
+const std::vector<std::pair<double, double>> kStripes = {{4.3, 4.85},  {8.3, 9.6},    {13.2, 16.7}, {21.4, 29.4},
+                                                         {35.6, 36.4}, {40.25, 43.1}, {50.7, 51.9}, {55.5, 59.2}};
 
 Scene stripes_scene()
 {
@@ -173,7 +173,8 @@ TEST(ThinLens, PlaneOffFocusIsBlurredByThePredictedCircleOfConfusion)
             RenderResult lens = render(with_lens(aperture, focus), stripe_options(sampler));
             EXPECT_EQ(lens.stats.bad_samples, 0u);
             ColumnCheck blurred = check_columns(lens.image, r_pixels);
-            EXPECT_EQ(blurred.failures, 0) << "circle of confusion " << r_pixels << " px, worst |z| " << blurred.worst_z;
+            EXPECT_EQ(blurred.failures, 0)
+                << "circle of confusion " << r_pixels << " px, worst |z| " << blurred.worst_z;
             EXPECT_GT(check_columns(lens.image, 0.0).failures, 10);
             EXPECT_GT(check_columns(lens.image, 0.5 * r_pixels).failures, 5);
             EXPECT_GT(check_columns(lens.image, 2.0 * r_pixels).failures, 5);

@@ -54,8 +54,14 @@ glm::dvec3 to_world(const glm::dvec3& n, const glm::dvec3& local)
     return local.x * t + local.y * b + local.z * n;
 }
 
-double uniform_sphere_pdf(const glm::dvec3&) { return 1.0 / (4.0 * pi); }
-double cosine_pdf(const glm::dvec3& d) { return std::max(0.0, d.z) / pi; }
+double uniform_sphere_pdf(const glm::dvec3&)
+{
+    return 1.0 / (4.0 * pi);
+}
+double cosine_pdf(const glm::dvec3& d)
+{
+    return std::max(0.0, d.z) / pi;
+}
 
 TEST(ChiSquare, UniformSpherePasses)
 {
@@ -144,8 +150,7 @@ TEST(ChiSquare, SamplesOnTheHorizonAreNotAFailure)
 TEST(ChiSquare, InvalidSamplesAreDiscarded)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<glm::dvec3> samples = {
-        {0, 0, 0}, {nan, 0, 0}, {0, 0, 1.01}, {0, 0, 1.0005}, {0, 0, -1}, {1, 0, 0}};
+    std::vector<glm::dvec3> samples = {{0, 0, 0}, {nan, 0, 0}, {0, 0, 1.01}, {0, 0, 1.0005}, {0, 0, -1}, {1, 0, 0}};
     auto r = chi_square_directions(samples, uniform_sphere_pdf);
     EXPECT_EQ(r.samples_discarded, 3u);
     EXPECT_EQ(r.samples_used, 3u);

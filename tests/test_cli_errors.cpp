@@ -68,7 +68,8 @@ std::string gltf_with_external_buffer(const std::string& bin_uri)
  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                 "min": [0, 0, 0], "max": [1, 1, 0]}],
  "bufferViews": [{"buffer": 0, "byteLength": 36}],
- "buffers": [{"uri": ")" + bin_uri + R"(", "byteLength": 36}]}
+ "buffers": [{"uri": ")" +
+           bin_uri + R"(", "byteLength": 36}]}
 )";
 }
 

@@ -66,7 +66,8 @@ TEST(Environment, WhiteFurnaceSphereShowsItsAlbedoForEveryStrategy)
 }
 
 // A map of w x h texels, value(i, j) each, as the device reads it.
-EnvironmentMap make_map(std::uint32_t w, std::uint32_t h, const std::function<float(std::uint32_t, std::uint32_t)>& value)
+EnvironmentMap make_map(std::uint32_t w, std::uint32_t h,
+                        const std::function<float(std::uint32_t, std::uint32_t)>& value)
 {
     EnvironmentMap m;
     m.width = w;
@@ -147,7 +148,8 @@ void expect_sampling_matches(const EnvironmentMap& m, double rotation, int tests
     std::size_t wrong_radiance = 0;
     for (std::size_t i = 0; i < s.size(); ++i)
         if (s[i].w > 0.0f)
-            wrong_radiance += radiance[i].y != host_texel(m, rotation, glm::normalize(glm::dvec3(s[i].x, s[i].y, s[i].z)));
+            wrong_radiance +=
+                radiance[i].y != host_texel(m, rotation, glm::normalize(glm::dvec3(s[i].x, s[i].y, s[i].z)));
     EXPECT_LE(wrong_radiance, s.size() / 100000) << "samples whose radiance is not the map's value in their direction";
     test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, tests);
     EXPECT_TRUE(r.passed) << r.summary();
@@ -174,7 +176,8 @@ TEST(Environment, SamplingMatchesPdfWithBlackRowsAndRotation)
 TEST(Environment, SamplingASingleBrightTexel)
 {
     // Everything black but one texel: every sample must land in that texel's region.
-    EnvironmentMap m = make_map(8, 4, [](std::uint32_t i, std::uint32_t j) { return (i == 5 && j == 1) ? 50.0f : 0.0f; });
+    EnvironmentMap m =
+        make_map(8, 4, [](std::uint32_t i, std::uint32_t j) { return (i == 5 && j == 1) ? 50.0f : 0.0f; });
     expect_sampling_matches(m, 0.0, 1);
 }
 

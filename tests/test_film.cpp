@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "types.h"
 #include "support/device_fixture.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {

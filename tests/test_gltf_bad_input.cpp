@@ -88,7 +88,10 @@ struct PastEndCase {
     std::function<void(GltfBuilder&, int pos_accessor, int index_accessor)> breakit;
 };
 
-void PrintTo(const PastEndCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const PastEndCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
 
 class AccessorPastEnd : public ::testing::TestWithParam<PastEndCase> {};
 
@@ -112,13 +115,10 @@ INSTANTIATE_TEST_SUITE_P(
     GltfBrokenData, AccessorPastEnd,
     ::testing::Values(
         PastEndCase{"PositionCountTooLarge",
-                    [](GltfBuilder& b, int pos, int) {
-                        b.model.accessors[static_cast<std::size_t>(pos)].count = 4;
-                    }},
-        PastEndCase{"PositionByteOffsetTooLarge",
-                    [](GltfBuilder& b, int pos, int) {
-                        b.model.accessors[static_cast<std::size_t>(pos)].byteOffset = 4;
-                    }},
+                    [](GltfBuilder& b, int pos, int) { b.model.accessors[static_cast<std::size_t>(pos)].count = 4; }},
+        PastEndCase{
+            "PositionByteOffsetTooLarge",
+            [](GltfBuilder& b, int pos, int) { b.model.accessors[static_cast<std::size_t>(pos)].byteOffset = 4; }},
         PastEndCase{"ViewLongerThanBuffer",
                     [](GltfBuilder& b, int pos, int) {
                         // The view claims more than the buffer holds, and the accessor uses it.
@@ -127,9 +127,7 @@ INSTANTIATE_TEST_SUITE_P(
                         acc.count = 600;
                     }},
         PastEndCase{"IndexCountTooLarge",
-                    [](GltfBuilder& b, int, int ind) {
-                        b.model.accessors[static_cast<std::size_t>(ind)].count = 4;
-                    }},
+                    [](GltfBuilder& b, int, int ind) { b.model.accessors[static_cast<std::size_t>(ind)].count = 4; }},
         PastEndCase{"ByteStrideTooLarge",
                     [](GltfBuilder& b, int pos, int) {
                         auto& acc = b.model.accessors[static_cast<std::size_t>(pos)];
@@ -145,7 +143,7 @@ TEST(GltfBrokenData, WrappingAccessorByteOffsetThrows)
     // to byte 28, inside the buffer but before the view. The read must be refused (the
     // buggy check passes it and silently reads the wrong bytes).
     GltfBuilder b;
-    b.add_positions(kTilted); // view 0: bytes 0..36
+    b.add_positions(kTilted);                                              // view 0: bytes 0..36
     int view = b.add_view(kQuad.data(), kQuad.size() * sizeof(glm::vec3)); // bytes 36..84
     ASSERT_EQ(b.model.bufferViews[static_cast<std::size_t>(view)].byteOffset, 36u);
     int pos = b.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 3);

@@ -89,8 +89,7 @@ protected:
     void SetUp() override
     {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("pathcl-gltf-" + std::to_string(::getpid()) + "-" + info->name());
+        dir_ = fs::temp_directory_path() / ("pathcl-gltf-" + std::to_string(::getpid()) + "-" + info->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -24,12 +24,14 @@ using test::quaternion;
 using test::rodrigues;
 using test::str;
 
-glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p)
+{
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
 
 // True when `t` has the vertices a, b, c in this counter-clockwise order, up to which
 // vertex comes first (a cyclic rotation keeps the winding).
-bool same_triangle(const SceneTriangle& t, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
-                   double rel)
+bool same_triangle(const SceneTriangle& t, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double rel)
 {
     const glm::dvec3 e[3] = {a, b, c};
     for (int s = 0; s < 3; ++s) {
@@ -57,9 +59,9 @@ struct Hierarchy {
     double angle = 0.7;
     glm::dvec3 s{2.0, 3.0, 0.5};
     // Column-major, as glTF stores it: columns c0, c1, c2, c3.
-    std::vector<double> child_matrix = {1.0, 0.2, 0.0, 0.0, //
-                                        0.0, 1.0, 0.3, 0.0, //
-                                        0.1, 0.0, 1.5, 0.0, //
+    std::vector<double> child_matrix = {1.0,  0.2, 0.0, 0.0, //
+                                        0.0,  1.0, 0.3, 0.0, //
+                                        0.1,  0.0, 1.5, 0.0, //
                                         -0.5, 4.0, 2.0, 1.0};
 
     glm::dmat4 expected_world() const
@@ -98,8 +100,8 @@ TEST(GltfHierarchy, ParentTrsTimesChildMatrixGivesWorldPositions)
         e[k] = transform_point(w, d3(p[static_cast<std::size_t>(k)]));
     const SceneTriangle& t = scene.triangles[0];
     EXPECT_TRUE(same_triangle(t, e[0], e[1], e[2], 1e-5))
-        << "got " << str(d3(t.v[0])) << " " << str(d3(t.v[1])) << " " << str(d3(t.v[2])) << ", expected "
-        << str(e[0]) << " " << str(e[1]) << " " << str(e[2]);
+        << "got " << str(d3(t.v[0])) << " " << str(d3(t.v[1])) << " " << str(d3(t.v[2])) << ", expected " << str(e[0])
+        << " " << str(e[1]) << " " << str(e[2]);
 }
 
 TEST(GltfHierarchy, MeshInstancedByTwoNodesGivesTwoCopies)

@@ -32,7 +32,10 @@ using test::write_bytes;
 // ---------------------------------------------------------------------------------------
 // Image decoding
 
-SceneImage decoded(const std::vector<unsigned char>& png) { return decode_image(png.data(), png.size(), "test"); }
+SceneImage decoded(const std::vector<unsigned char>& png)
+{
+    return decode_image(png.data(), png.size(), "test");
+}
 
 TEST(GltfImages, PngAlphaStaysUnassociated)
 {
@@ -127,8 +130,7 @@ TEST(GltfImages, GlbBufferViewImages)
     // variant seen to fail: the view's byteOffset ignored.
     TempDir dir;
     Quad q = quad(false);
-    q.mat().pbrMetallicRoughness.baseColorTexture.index =
-        q.b.add_texture(q.b.add_image_bytes(kPngRgba16, "image/png"));
+    q.mat().pbrMetallicRoughness.baseColorTexture.index = q.b.add_texture(q.b.add_image_bytes(kPngRgba16, "image/png"));
     Scene s = write_and_load(q.b, dir.path() / "scene.glb", true);
     ASSERT_EQ(s.images.size(), 1u);
     EXPECT_EQ(s.images[0].rgba16[1], 20000);

@@ -279,8 +279,8 @@ TEST(GltfNormals, MirroredShadingNormalsAgreeWithTheGeometricNormal)
 {
     // Tolerance: 1e-6. The file's NORMAL is the exact face normal, so after any transform
     // the shading normal must equal the (flipped-winding) geometric normal.
-    Scene scene = import(one_triangle(kTilted, {}, quaternion({1, 1, 0}, 0.9), {-1.0, 2.0, 1.0}, true,
-                                      glm::vec3(kTiltedNormal)));
+    Scene scene =
+        import(one_triangle(kTilted, {}, quaternion({1, 1, 0}, 0.9), {-1.0, 2.0, 1.0}, true, glm::vec3(kTiltedNormal)));
     ASSERT_EQ(scene.triangles.size(), 1u);
     glm::dvec3 ng = geometric_normal(scene.triangles[0]);
     for (int k = 0; k < 3; ++k)

@@ -43,7 +43,10 @@ struct BadCase {
     const char* expected; // part of the message
 };
 
-void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BadCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
 
 class GltfBrokenTextures : public ::testing::TestWithParam<BadCase> {};
 
@@ -67,14 +70,14 @@ INSTANTIATE_TEST_SUITE_P(
                 "texture index 7 does not exist"},
         BadCase{"ImageIndexOutOfRange", [](Quad& q) { q.b.model.textures[0].source = 3; },
                 "image index 3 does not exist"},
-        BadCase{"TextureWithoutSource", [](Quad& q) { q.b.model.textures[0].source = -1; }, "has no PNG or JPEG source"},
+        BadCase{"TextureWithoutSource", [](Quad& q) { q.b.model.textures[0].source = -1; },
+                "has no PNG or JPEG source"},
         BadCase{"SamplerIndexOutOfRange", [](Quad& q) { q.b.model.textures[0].sampler = 2; },
                 "sampler index 2 does not exist"},
         BadCase{"UnknownWrapMode",
                 [](Quad& q) { q.b.model.textures[0].sampler = q.b.add_sampler(kLinear, 12345, kRepeat); },
                 "unknown wrap mode 12345"},
-        BadCase{"TexcoordTheMeshLacks",
-                [](Quad& q) { q.mat().pbrMetallicRoughness.baseColorTexture.texCoord = 1; },
+        BadCase{"TexcoordTheMeshLacks", [](Quad& q) { q.mat().pbrMetallicRoughness.baseColorTexture.texCoord = 1; },
                 "baseColorTexture reads TEXCOORD_1, which the primitive does not have"},
         BadCase{"TexcoordOutOfRange", [](Quad& q) { q.mat().pbrMetallicRoughness.baseColorTexture.texCoord = 100000; },
                 "texCoord 100000 is out of range"},
@@ -125,7 +128,10 @@ struct UriCase {
     const char* expected;
 };
 
-void PrintTo(const UriCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const UriCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
 
 class GltfBadImageUri : public ::testing::TestWithParam<UriCase> {};
 

@@ -76,7 +76,9 @@ TEST(DeviceTextures, TexturedEmitterPowerFollowsTheTextureUnderIt)
     ASSERT_EQ(cs.arrays.lights.size(), 2u);
     std::vector<double> mean;
     for (std::size_t t = 0; t < 2; ++t)
-        mean.push_back(texture_mean_over_triangle(s.images[0], s.materials[0].textures[TEXTURE_SLOT_EMISSIVE], true, s.texcoords[0][t]).x);
+        mean.push_back(texture_mean_over_triangle(s.images[0], s.materials[0].textures[TEXTURE_SLOT_EMISSIVE], true,
+                                                  s.texcoords[0][t])
+                           .x);
     EXPECT_GT(std::max(mean[0], mean[1]), 0.6);
     EXPECT_LT(std::min(mean[0], mean[1]), 0.4);
     // Light i names its triangle by leaf index; map back to scene triangles.

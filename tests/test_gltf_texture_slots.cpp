@@ -63,9 +63,11 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
     Scene s = import_gltf(q.b.model, "slots.gltf");
     const SceneMaterial& sm = s.materials[0];
-    const SceneTexture* slots[7] = {&sm.textures[TEXTURE_SLOT_BASE_COLOR],  &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS], &sm.textures[TEXTURE_SLOT_EMISSIVE],
-                                    &sm.textures[TEXTURE_SLOT_NORMAL],      &sm.textures[TEXTURE_SLOT_SPECULAR],           &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
-                                    &sm.textures[TEXTURE_SLOT_TRANSMISSION]};
+    const SceneTexture* slots[7] = {
+        &sm.textures[TEXTURE_SLOT_BASE_COLOR],  &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS],
+        &sm.textures[TEXTURE_SLOT_EMISSIVE],    &sm.textures[TEXTURE_SLOT_NORMAL],
+        &sm.textures[TEXTURE_SLOT_SPECULAR],    &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
+        &sm.textures[TEXTURE_SLOT_TRANSMISSION]};
     const int sets[7] = {1, 0, 0, 0, 1, 0, 0};
     ASSERT_EQ(s.images.size(), 7u);
     for (int i = 0; i < 7; ++i) {
@@ -91,7 +93,8 @@ TEST(GltfTextures, SamplersGiveWrapModesAndFilter)
 {
     // Broken variant seen to fail: wrapS and wrapT exchanged.
     Quad q = quad();
-    q.mat().pbrMetallicRoughness.baseColorTexture.index = white_texture(q.b, q.b.add_sampler(kNearest, kClamp, kMirror));
+    q.mat().pbrMetallicRoughness.baseColorTexture.index =
+        white_texture(q.b, q.b.add_sampler(kNearest, kClamp, kMirror));
     q.mat().emissiveTexture.index = white_texture(q.b, q.b.add_sampler(kLinear, kMirror, kRepeat));
     q.mat().pbrMetallicRoughness.metallicRoughnessTexture.index = white_texture(q.b); // no sampler: defaults
     Scene s = import_gltf(q.b.model, "samplers.gltf");

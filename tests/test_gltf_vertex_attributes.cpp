@@ -139,7 +139,8 @@ TEST(GltfTangents, ComputedTangentsAreOrthonormalAndRightHanded)
             EXPECT_NEAR(glm::length(tt), 1.0, 1e-12);
             EXPECT_NEAR(glm::dot(tt, nn), 0.0, 1e-12);
             // dP/du points along the strip's length (+x side) when u grows with i.
-            glm::dvec3 along = glm::normalize(glm::dvec3(std::cos(0.3 * (tris[c] / 2)), 0.0, std::sin(0.3 * (tris[c] / 2))));
+            glm::dvec3 along =
+                glm::normalize(glm::dvec3(std::cos(0.3 * (tris[c] / 2)), 0.0, std::sin(0.3 * (tris[c] / 2))));
             EXPECT_GT(glm::dot(tt, along) * (mirrored ? -1.0 : 1.0), 0.9);
             // v decreases with +y (v = 1 - 0.8 j), so "up" in the image is +y.
             glm::dvec3 bitangent = t[c].w * glm::cross(nn, tt);
@@ -158,7 +159,8 @@ TEST(GltfTangents, FlatShadingGetsOneFramePerFace)
     std::vector<std::uint32_t> tris = {0, 1, 2, 3, 4, 5};
     std::vector<glm::dvec4> t = compute_tangents(p, {}, uv, tris);
     for (int f = 0; f < 2; ++f) {
-        glm::dvec3 fn = glm::normalize(glm::cross(p[tris[3 * f + 1]] - p[tris[3 * f]], p[tris[3 * f + 2]] - p[tris[3 * f]]));
+        glm::dvec3 fn =
+            glm::normalize(glm::cross(p[tris[3 * f + 1]] - p[tris[3 * f]], p[tris[3 * f + 2]] - p[tris[3 * f]]));
         for (int k = 0; k < 3; ++k) {
             EXPECT_NEAR(glm::dot(glm::dvec3(t[static_cast<std::size_t>(3 * f + k)]), fn), 0.0, 1e-12) << "face " << f;
             EXPECT_EQ(t[static_cast<std::size_t>(3 * f + k)], t[static_cast<std::size_t>(3 * f)]);

@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include <gtest/gtest.h>
 #include <OpenImageIO/imagebuf.h>
+#include <gtest/gtest.h>
 
 #include "common/error.h"
 #include "image/image_io.h"

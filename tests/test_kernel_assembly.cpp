@@ -48,11 +48,15 @@ TEST(KernelAssembly, TheRenderProgramHoldsEveryKernel)
 
 TEST(KernelAssembly, MissingIncludesAndCyclesAreErrors)
 {
-    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(root("\n#include \"util/nothing.cl\"\n")); }), "tests/root.cl:2: includes \"util/nothing.cl\", which is not a file of the kernel tree"));
-    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(root("#include \"tests/root.cl\"\n")); }), "an include cycle"));
+    EXPECT_TRUE(
+        test::contains(test::error_of([&] { assemble_kernel_source(root("\n#include \"util/nothing.cl\"\n")); }),
+                       "tests/root.cl:2: includes \"util/nothing.cl\", which is not a file of the kernel tree"));
+    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(root("#include \"tests/root.cl\"\n")); }),
+                               "an include cycle"));
     ProgramSource unknown;
     unknown.root = "nothing.cl";
-    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(unknown); }), "nothing.cl is not a file of the kernel tree"));
+    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(unknown); }),
+                               "nothing.cl is not a file of the kernel tree"));
 }
 
 TEST(KernelAssembly, PatchesApplyExactlyOnceOrFail)
@@ -65,9 +69,11 @@ TEST(KernelAssembly, PatchesApplyExactlyOnceOrFail)
     s.patches = {{"util/hash.cl", "no such text", ""}};
     EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(s); }), "occurs nowhere in util/hash.cl"));
     s.patches = {{"util/hash.cl", "x ^= x >> 16;", ""}}; // twice in hash_u32
-    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(s); }), "occurs more than once in util/hash.cl"));
+    EXPECT_TRUE(
+        test::contains(test::error_of([&] { assemble_kernel_source(s); }), "occurs more than once in util/hash.cl"));
     s.patches = {{"util/none.cl", "a", "b"}};
-    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(s); }), "util/none.cl is not a file of the kernel tree"));
+    EXPECT_TRUE(test::contains(test::error_of([&] { assemble_kernel_source(s); }),
+                               "util/none.cl is not a file of the kernel tree"));
 }
 
 TEST(KernelAssembly, EveryKernelFileOpensWithWhatItHolds)

@@ -11,10 +11,10 @@
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
-#include "render/layer_albedo.h"
 #include "closure/layer_table.h"
-#include "types.h"
+#include "render/layer_albedo.h"
 #include "support/reference_bsdf.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {
@@ -46,7 +46,7 @@ LayerAlbedo brute_force(double mu, double roughness, double eta, int n)
         glm::dvec3 wi(r * std::cos(phi), r * std::sin(phi), z);
         glm::dvec3 h = glm::normalize(wo + wi);
         double f_cos = test::ggx_d(h, a) * g1(wo) * g1(wi) / (4.0 * mu); // f cos_i, Fresnel 1
-        double w = f_cos * 2.0 * kPi;                      // / uniform pdf 1 / (2 pi)
+        double w = f_cos * 2.0 * kPi;                                    // / uniform pdf 1 / (2 pi)
         e += w;
         b += w * std::clamp((fresnel(glm::dot(wo, h), eta) - f0) / (1.0 - f0), 0.0, 1.0);
     }

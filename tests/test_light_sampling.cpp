@@ -68,9 +68,8 @@ std::function<double(const glm::dvec3&)> sphere_cone_pdf(glm::dvec3 centre, doub
     double dc = glm::length(axis);
     double cos_max = std::sqrt(1.0 - r * r / (dc * dc));
     axis /= dc;
-    return [=](const glm::dvec3& w) {
-        return glm::dot(w, axis) >= cos_max ? 1.0 / (2.0 * kPi * (1.0 - cos_max)) : 0.0;
-    };
+    return
+        [=](const glm::dvec3& w) { return glm::dot(w, axis) >= cos_max ? 1.0 / (2.0 * kPi * (1.0 - cos_max)) : 0.0; };
 }
 
 TEST(LightSampling, SphereFromOutsideIsUniformOverItsCone)
@@ -120,7 +119,7 @@ TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
 {
     // Selection (equal power: pmf 1/3 each) times each light's own solid-angle pdf. A
     // triangle facing away from ref contributes nothing and must never be sampled.
-    glm::vec3 a0(-1, -1, 2), a1(1, -1, 2), a2(0, 1, 2.5f);  // faces -z... towards ref? see below
+    glm::vec3 a0(-1, -1, 2), a1(1, -1, 2), a2(0, 1, 2.5f); // faces -z... towards ref? see below
     glm::vec3 b0(1, 2, -1), b1(2, 2, 1), b2(1, 3, 0);
     glm::vec3 sc(-1.5f, 0.0f, -1.0f);
     auto tri = [](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {

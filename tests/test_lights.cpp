@@ -10,9 +10,9 @@
 
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {
@@ -29,14 +29,14 @@ struct Measurement {
 
 // Mean radiance (green channel) of a tiny patch of the plane y = 0 around (x, 0, z),
 // lit by the light the caller adds to `b`.
-Measurement radiance_at(test::GltfBuilder b, double x, double z, double height_scale,
-                        Strategy strategy = Strategy::Mis, std::uint32_t spp = 4)
+Measurement radiance_at(test::GltfBuilder b, double x, double z, double height_scale, Strategy strategy = Strategy::Mis,
+                        std::uint32_t spp = 4)
 {
     double s = 50.0 * height_scale;
     std::vector<glm::vec3> quad = {{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}; // normal +Y
     int mat = b.add_material(glm::vec3(static_cast<float>(kRho)));
-    int mesh = b.add_mesh(b.add_positions(quad), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT),
-                          mat);
+    int mesh =
+        b.add_mesh(b.add_positions(quad), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat);
     b.add_root(b.add_node(mesh));
     b.add_camera_node(b.add_perspective_camera(1e-3), {x, 3.0 * height_scale, z}, kLookDown);
     RenderOptions o = test::independent_options();
@@ -189,7 +189,7 @@ TEST(SphereLight, SeenDirectlyItHasRadianceIntensityOverPiRSquared)
 
 TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
 {
-    {   // the camera inside the sphere sees its back side: black, finite
+    { // the camera inside the sphere sees its back side: black, finite
         test::GltfBuilder b;
         add_sphere_light(b, 1.0, 2.0, {0.0, 0.0, 0.0});
         b.add_camera_node(b.add_perspective_camera(1.0), {0.0, 0.0, 0.0});
@@ -201,7 +201,7 @@ TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
         for (float v : r.image.rgb)
             EXPECT_EQ(v, 0.0f);
     }
-    {   // a sphere resting on the plane: the contact point and its surroundings
+    { // a sphere resting on the plane: the contact point and its surroundings
         test::GltfBuilder b;
         add_sphere_light(b, 1.0, 0.25, {0.0, 0.25, 0.0});
         for (double x : {0.0, 1e-4, 0.3}) {
@@ -215,7 +215,8 @@ TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
 // Node rotation that makes -Z point along (sin a, -cos a, 0): down and towards +X.
 std::vector<double> slanted_down(double a)
 {
-    glm::dquat q = glm::angleAxis(a, glm::dvec3(0, 0, 1)) * glm::dquat(kLookDown[3], kLookDown[0], kLookDown[1], kLookDown[2]);
+    glm::dquat q =
+        glm::angleAxis(a, glm::dvec3(0, 0, 1)) * glm::dquat(kLookDown[3], kLookDown[0], kLookDown[1], kLookDown[2]);
     return {q.x, q.y, q.z, q.w};
 }
 
@@ -236,8 +237,8 @@ TEST(DirectionalLight, AnOccluderOutOfViewCastsAShadow)
         b.add_light_node(b.add_light("directional", glm::vec3(1.0f), 1.0), {0.0, 5.0, 0.0}, slanted_down(kPi / 4));
         std::vector<glm::vec3> sq = {{-1.1f, 1, -0.1f}, {-0.9f, 1, -0.1f}, {-0.9f, 1, 0.1f}, {-1.1f, 1, 0.1f}};
         int mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), true);
-        b.add_root(b.add_node(
-            b.add_mesh(b.add_positions(sq), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
+        b.add_root(b.add_node(b.add_mesh(
+            b.add_positions(sq), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
         return b;
     };
     EXPECT_EQ(radiance_at(scene_with_blocker(), 0.0, 0.0, 1.0).mean, 0.0) << "in the shadow";

@@ -30,8 +30,8 @@ using test::texture_program;
 using test::upload;
 
 struct QuadOptions {
-    bool mirrored_uv = false;     // u runs along -x instead of +x
-    bool file_tangents = false;   // TANGENT attribute instead of computed tangents
+    bool mirrored_uv = false;   // u runs along -x instead of +x
+    bool file_tangents = false; // TANGENT attribute instead of computed tangents
     bool double_sided = false;
     std::vector<std::uint8_t> normal_texel = {128, 128, 255, 255};
     double normal_scale = 1.0;
@@ -123,7 +123,10 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
             read_back(outs[4], n)};
 }
 
-glm::vec3 v3(const pcl_float4& p) { return {p.x, p.y, p.z}; }
+glm::vec3 v3(const pcl_float4& p)
+{
+    return {p.x, p.y, p.z};
+}
 
 TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
 {

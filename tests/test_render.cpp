@@ -10,9 +10,9 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
+#include "types.h"
 #include <tiny_gltf.h>
 
 namespace pathcl {
@@ -53,8 +53,8 @@ TEST(Render, BrokenBsdfFailsTheCornellBoxComparison)
     // The same comparison with a Lambertian that forgets cos(theta) in its evaluation:
     // proves the test above can fail on a plausible kernel bug.
     RenderOptions o = cornell_test_options();
-    o.kernel_patches = {{"closure/bsdf_eval.cl", "e.f_cos = p->base_color * (INV_PI * cos_i);",
-                         "e.f_cos = p->base_color * INV_PI;"}};
+    o.kernel_patches = {
+        {"closure/bsdf_eval.cl", "e.f_cos = p->base_color * (INV_PI * cos_i);", "e.f_cos = p->base_color * INV_PI;"}};
     RenderResult r = render(cornell_box(), o);
     Image ref = read_image(kSource + "/tests/references/cornell-box-64.exr");
     CompareReport cmp = compare_images(r.image, ref);
@@ -104,31 +104,31 @@ TEST(Render, FurnaceSphereMatchesAnalyticRadianceForEveryStrategy)
 {
     Scene scene = furnace_sphere();
     for (Strategy strategy : {Strategy::Bsdf, Strategy::Nee, Strategy::OneSample, Strategy::Mis})
-    for (std::uint32_t bounces : {0u, 1u, 2u, 1000u}) {
-        SCOPED_TRACE("strategy " + std::string(strategy_name(strategy)) + " bounces " + std::to_string(bounces));
-        RenderOptions o = test::independent_options();
-        o.strategy = strategy;
-        o.width = 32;
-        o.height = 32;
-        o.spp = 64;
-        o.max_bounces = bounces;
-        o.seed = 3;
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u);
-        double expected = 0.5 * (1.0 - std::pow(0.5, bounces + 1.0)) / 0.5; // Le * sum a^k
-        ImageMean m = image_mean(r.image);
-        for (int c = 0; c < 3; ++c) {
-            if (bounces == 0) { // emission only: no randomness at all
-                EXPECT_NEAR(m.mean[c], 0.5, 1e-6);
-                EXPECT_LT(m.stderr_[c], 1e-6);
-                continue;
+        for (std::uint32_t bounces : {0u, 1u, 2u, 1000u}) {
+            SCOPED_TRACE("strategy " + std::string(strategy_name(strategy)) + " bounces " + std::to_string(bounces));
+            RenderOptions o = test::independent_options();
+            o.strategy = strategy;
+            o.width = 32;
+            o.height = 32;
+            o.spp = 64;
+            o.max_bounces = bounces;
+            o.seed = 3;
+            RenderResult r = render(scene, o);
+            EXPECT_EQ(r.stats.bad_samples, 0u);
+            double expected = 0.5 * (1.0 - std::pow(0.5, bounces + 1.0)) / 0.5; // Le * sum a^k
+            ImageMean m = image_mean(r.image);
+            for (int c = 0; c < 3; ++c) {
+                if (bounces == 0) { // emission only: no randomness at all
+                    EXPECT_NEAR(m.mean[c], 0.5, 1e-6);
+                    EXPECT_LT(m.stderr_[c], 1e-6);
+                    continue;
+                }
+                // Tolerance from the measured variance; the test must also be sharp enough
+                // to see a 1% error.
+                EXPECT_LT(m.stderr_[c], 0.002) << "bounces " << bounces;
+                EXPECT_NEAR(m.mean[c], expected, 5.0 * m.stderr_[c]) << "bounces " << bounces << " channel " << c;
             }
-            // Tolerance from the measured variance; the test must also be sharp enough
-            // to see a 1% error.
-            EXPECT_LT(m.stderr_[c], 0.002) << "bounces " << bounces;
-            EXPECT_NEAR(m.mean[c], expected, 5.0 * m.stderr_[c]) << "bounces " << bounces << " channel " << c;
         }
-    }
 }
 
 // The Cornell box file with every root node placed under a new root with this TRS.

@@ -20,8 +20,8 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "sampling/samplers.h"
-#include "support/test_options.h"
 #include "scene/gltf_loader.h"
+#include "support/test_options.h"
 #include "types.h"
 
 namespace pathcl {
@@ -83,9 +83,8 @@ class ToolRun : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        dir_ = fs::temp_directory_path() /
-               ("pathcl-tools-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("pathcl-tools-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -97,8 +96,8 @@ protected:
     // Runs the binary with `args` in dir_; returns the exit status.
     int run(const std::string& args) const
     {
-        std::string cmd = "cd '" + dir_.string() + "' && '" + std::string(PATHCL_BINARY) + "' " + args +
-                          " >stdout.txt 2>stderr.txt";
+        std::string cmd =
+            "cd '" + dir_.string() + "' && '" + std::string(PATHCL_BINARY) + "' " + args + " >stdout.txt 2>stderr.txt";
         int rc = std::system(cmd.c_str());
         return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
     }
@@ -169,7 +168,8 @@ TEST_F(ToolRun, RayLogRaysStartOnTheLensAndMeetOnThePlaneOfFocus)
                 fj[c] = rays[j].o[c] + rays[j].d[c] * (1.0 / rays[j].d[2]);
             }
             EXPECT_LE(std::hypot(fi[0] - fj[0], fi[1] - fj[1]), footprint + 1e-6);
-            max_lens_spread = std::max(max_lens_spread, std::hypot(rays[i].o[0] - rays[j].o[0], rays[i].o[1] - rays[j].o[1]));
+            max_lens_spread =
+                std::max(max_lens_spread, std::hypot(rays[i].o[0] - rays[j].o[0], rays[i].o[1] - rays[j].o[1]));
         }
     EXPECT_GT(max_lens_spread, 0.02); // the lens is really sampled
 }

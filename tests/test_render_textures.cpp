@@ -15,9 +15,9 @@
 #include "render/renderer.h"
 #include "render/texture_lookup.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
+#include "types.h"
 #include <tiny_gltf.h>
 
 namespace pathcl {
@@ -79,8 +79,7 @@ TEST(RenderTextures, ConstantTexturesRenderTheCornellBoxReference)
             f[c] = f[c] / srgb8_to_linear(texel[c]);
         }
         m.pbrMetallicRoughness.baseColorTexture.index = b.add_texture(b.add_png_image(1, 1, texel));
-        m.pbrMetallicRoughness.metallicRoughnessTexture.index =
-            b.add_texture(b.add_png_image(1, 1, {0, 255, 0, 255}));
+        m.pbrMetallicRoughness.metallicRoughnessTexture.index = b.add_texture(b.add_png_image(1, 1, {0, 255, 0, 255}));
         if (m.emissiveFactor.size() == 3 && m.emissiveFactor[0] > 0.0) {
             const std::vector<std::uint8_t> emissive = {200, 180, 90, 255};
             for (std::size_t c = 0; c < 3; ++c)
@@ -176,15 +175,16 @@ Scene textured_emitter_scene()
     b.add_root(b.add_node(floor));
     int light_mat = b.add_material(glm::vec3(0.0f), glm::vec3(1.0f), false, 4.0);
     std::vector<glm::vec3> lp = {{-1, 1.5, 1}, {-1, 1.5, -1}, {1, 1.5, -1}, {1, 1.5, 1}}; // faces down
-    int light = b.add_mesh(b.add_positions(lp), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT),
-                           light_mat);
+    int light = b.add_mesh(b.add_positions(lp),
+                           b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT), light_mat);
     b.set_attribute(light, "TEXCOORD_0", b.add_texcoords({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));
     std::vector<std::uint8_t> checker;
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x) {
             bool on = (x + y) % 2 == 0;
-            checker.insert(checker.end(), {static_cast<std::uint8_t>(on ? 255 : 10), static_cast<std::uint8_t>(on ? 230 : 10),
-                                           static_cast<std::uint8_t>(on ? 120 : 40), 255});
+            checker.insert(checker.end(),
+                           {static_cast<std::uint8_t>(on ? 255 : 10), static_cast<std::uint8_t>(on ? 230 : 10),
+                            static_cast<std::uint8_t>(on ? 120 : 40), 255});
         }
     tinygltf::TextureInfo& info = b.model.materials.back().emissiveTexture;
     info.index = b.add_texture(b.add_png_image(4, 4, checker), b.add_sampler(kNearest, kRepeat, kMirror));

@@ -14,10 +14,10 @@
 #include "image/image_compare.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
-#include "types.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
+#include "types.h"
 
 namespace pathcl {
 namespace {
@@ -46,16 +46,17 @@ std::vector<float> thin_gap_view(double x)
     int floor_mat = b.add_material(glm::vec3(0.5f));
     int slab_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), /*double_sided=*/true);
     auto quad = [&](std::vector<glm::vec3> q, int mat) {
-        b.add_root(b.add_node(b.add_mesh(b.add_positions(q),
-                                         b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
+        b.add_root(b.add_node(b.add_mesh(
+            b.add_positions(q), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
     };
-    quad({{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, floor_mat);                 // faces +y
+    quad({{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, floor_mat);                // faces +y
     quad({{-1, 1e-4f, -1}, {-1, 1e-4f, 1}, {0, 1e-4f, 1}, {0, 1e-4f, -1}}, slab_mat); // the gap's roof
     const double a = std::acos(-1.0) / 4.0;
-    glm::dquat look_down(std::sqrt(0.5), -std::sqrt(0.5), 0.0, 0.0); // node -Z to -Y
-    glm::dquat q = glm::angleAxis(a, glm::dvec3(0, 0, 1)) * look_down;  // then towards +x
+    glm::dquat look_down(std::sqrt(0.5), -std::sqrt(0.5), 0.0, 0.0);   // node -Z to -Y
+    glm::dquat q = glm::angleAxis(a, glm::dvec3(0, 0, 1)) * look_down; // then towards +x
     b.add_light_node(b.add_light("directional", glm::vec3(1.0f), 1.0), {0.0, 1.0, 0.0}, {q.x, q.y, q.z, q.w});
-    b.add_camera_node(b.add_perspective_camera(0.04), {x, 1e-3, 0.0}, {look_down.x, look_down.y, look_down.z, look_down.w});
+    b.add_camera_node(b.add_perspective_camera(0.04), {x, 1e-3, 0.0},
+                      {look_down.x, look_down.y, look_down.z, look_down.w});
     RenderResult r = render_square(import_gltf(b.model, "thin-gap"), 8, 4, 1);
     return r.image.rgb;
 }
@@ -84,10 +85,10 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
     static cl::Program program = test::build_test_program("trace_test_kernels.cl");
     ClDevice& dev = test::test_device();
     std::vector<Triangle> tris = {
-        {{0, 0, 0, 0}, {1, 0, 0, 0}, {0.5f, 1e-7f, 0, 0}},      // sliver
-        {{0, 1, 0, 0}, {0, 1, 0, 0}, {1, 2, 0, 0}},             // two identical vertices
-        {{2, 0, 0, 0}, {2, 0, 0, 0}, {2, 0, 0, 0}},             // a point
-        {{3, 0, 0, 0}, {4, 0, 0, 0}, {5, 0, 0, 0}},             // collinear
+        {{0, 0, 0, 0}, {1, 0, 0, 0}, {0.5f, 1e-7f, 0, 0}}, // sliver
+        {{0, 1, 0, 0}, {0, 1, 0, 0}, {1, 2, 0, 0}},        // two identical vertices
+        {{2, 0, 0, 0}, {2, 0, 0, 0}, {2, 0, 0, 0}},        // a point
+        {{3, 0, 0, 0}, {4, 0, 0, 0}, {5, 0, 0, 0}},        // collinear
     };
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(-0.5f, 5.5f), tiny(-2e-7f, 2e-7f);
@@ -331,8 +332,8 @@ TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
     int floor_mat = b.add_material(glm::vec3(0.5f));
     int shade_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), /*double_sided=*/true);
     auto quad = [&](std::vector<glm::vec3> q, int mat) {
-        b.add_root(b.add_node(b.add_mesh(b.add_positions(q),
-                                         b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
+        b.add_root(b.add_node(b.add_mesh(
+            b.add_positions(q), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
     };
     quad({{-200, 0, -200}, {-200, 0, 200}, {200, 0, 200}, {200, 0, -200}}, floor_mat);
     quad({{-0.01f, 99.995f, -0.01f}, {-0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, -0.01f}},
@@ -368,8 +369,8 @@ Image concentric_spheres_view(bool from_inside, int shells, const std::vector<Ke
     for (int i : {3, 6, 9})
         for (int j : {3, 6, 9, 15, 18, 21}) {
             double theta = std::numbers::pi * i / 12, phi = 2.0 * std::numbers::pi * j / 24, r = 1.0 + 5e-5;
-            b.add_light_node(light, {r * std::sin(theta) * std::cos(phi), r * std::cos(theta),
-                                     r * std::sin(theta) * std::sin(phi)});
+            b.add_light_node(
+                light, {r * std::sin(theta) * std::cos(phi), r * std::cos(theta), r * std::sin(theta) * std::sin(phi)});
         }
     if (from_inside)
         b.add_camera_node(b.add_perspective_camera(1.6), {0.0, 0.0, 0.0});

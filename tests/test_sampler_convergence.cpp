@@ -123,8 +123,8 @@ TEST(Samplers, ConvergenceOrderOfSmooth2DIntegrals)
     };
     const std::vector<double> spps = {16, 64, 256, 1024, 4096};
     const std::uint32_t replicates = 256;
-    for (std::uint32_t dim : {static_cast<std::uint32_t>(DIM_PIXEL),
-                              static_cast<std::uint32_t>(DIM_PATH_START + 4 * DIMS_PER_BOUNCE + 5)})
+    for (std::uint32_t dim :
+         {static_cast<std::uint32_t>(DIM_PIXEL), static_cast<std::uint32_t>(DIM_PATH_START + 4 * DIMS_PER_BOUNCE + 5)})
         for (const auto& [sampler_label, sampler] : sampler_names()) {
             std::vector<double> mse_bump, mse_exp;
             for (double spp_d : spps) {

@@ -47,7 +47,8 @@ RadicalInverses radical_inverses(std::uint32_t base, std::size_t n, bool scrambl
     cl::Buffer digits(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
     cl::Buffer scale(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_ulong));
     cl::Kernel k(sampler_program(), "test_radical_inverse");
-    set_kernel_args(k, static_cast<cl_uint>(base), static_cast<cl_uint>(scramble), static_cast<cl_uint>(seed), out, digits, scale);
+    set_kernel_args(k, static_cast<cl_uint>(base), static_cast<cl_uint>(scramble), static_cast<cl_uint>(seed), out,
+                    digits, scale);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     RadicalInverses r{std::vector<float>(n), std::vector<cl_ulong>(n), std::vector<cl_ulong>(n)};
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), r.value.data());
@@ -161,7 +162,8 @@ SinCosErrors sin_cos_errors(const std::vector<float>& in, bool turns, bool built
 {
     ClDevice& dev = test::test_device();
     std::size_t n = in.size();
-    cl::Buffer bin(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), const_cast<float*>(in.data()));
+    cl::Buffer bin(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float),
+                   const_cast<float*>(in.data()));
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
     cl::Buffer ref(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
     cl::Kernel k(sampler_program(), "test_sin_cos");
@@ -198,8 +200,8 @@ TEST(Samplers, WarpSineAndCosineAreWithinOneAndAHalfUlps)
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> small(-std::numbers::pi_v<float> / 4.0f, std::numbers::pi_v<float> / 4.0f);
     std::uniform_real_distribution<float> turn(-2.0f, 2.0f);
-    std::vector<float> a = {0.0f, -0.0f, 1e-30f, -1e-30f, 1e-6f, std::numbers::pi_v<float> / 4.0f,
-                            -std::numbers::pi_v<float> / 4.0f};
+    std::vector<float> a = {
+        0.0f, -0.0f, 1e-30f, -1e-30f, 1e-6f, std::numbers::pi_v<float> / 4.0f, -std::numbers::pi_v<float> / 4.0f};
     std::vector<float> t = {0.0f, 0.125f, 0.25f, 0.375f, 0.5f, 0.75f, 1.0f, -0.25f, -0.5f, 0.999999940f, 1e-20f};
     for (int i = 0; i < 200000; ++i) {
         a.push_back(small(rng));

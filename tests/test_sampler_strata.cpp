@@ -27,7 +27,8 @@ using test::points;
 
 // Dimension pairs the tests look at: the film position, the lens, and decisions of the
 // first and of a deep bounce (1D decisions at odd starts too).
-const std::vector<std::uint32_t> kDims = {DIM_PIXEL, DIM_LENS, DIM_PATH_START + 1, DIM_PATH_START + 5 * DIMS_PER_BOUNCE + 5};
+const std::vector<std::uint32_t> kDims = {DIM_PIXEL, DIM_LENS, DIM_PATH_START + 1,
+                                          DIM_PATH_START + 5 * DIMS_PER_BOUNCE + 5};
 
 TEST(Samplers, JitteredHasExactlyOneSamplePerStratum)
 {

@@ -67,8 +67,8 @@ TEST(SelfIntersection, ExactCoordinatePlanesOneMillionRays)
     // The Cornell box's walls: the planes x = 0 and y = 0, and an offset plane z = 0.5592.
     for (auto [axis, at] : {std::pair{0, 0.0f}, std::pair{1, 0.0f}, std::pair{2, 0.5592f}}) {
         Counts c = spawn(axis_plane_quad(axis, at, 0.5488f), 1000000, true, 1u + static_cast<std::uint32_t>(axis));
-        EXPECT_EQ(c.self_hits, 0u) << "plane axis " << axis << " at " << at << ": " << c.self_hits << " of "
-                                   << c.rays << " spawned rays re-hit the plane";
+        EXPECT_EQ(c.self_hits, 0u) << "plane axis " << axis << " at " << at << ": " << c.self_hits << " of " << c.rays
+                                   << " spawned rays re-hit the plane";
     }
 }
 

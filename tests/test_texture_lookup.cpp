@@ -35,7 +35,8 @@ struct TextureSet {
     {
         t.texture_images.push_back({static_cast<pcl_uint>(t.texels.size()), w, h, TEXTURE_FORMAT_RGBA8});
         for (std::size_t i = 0; i < rgba.size(); i += 4)
-            t.texels.push_back(rgba[i] | rgba[i + 1] << 8 | rgba[i + 2] << 16 | static_cast<pcl_uint>(rgba[i + 3]) << 24);
+            t.texels.push_back(rgba[i] | rgba[i + 1] << 8 | rgba[i + 2] << 16 |
+                               static_cast<pcl_uint>(rgba[i + 3]) << 24);
         return static_cast<int>(t.texture_images.size()) - 1;
     }
     int add_image16(pcl_uint w, pcl_uint h, const std::vector<std::uint16_t>& rgba)
@@ -80,9 +81,15 @@ std::vector<pcl_float4> lookups(const TextureSet& set, const std::vector<std::pa
     return read_back(out, q.size());
 }
 
-glm::vec4 v4(const pcl_float4& p) { return {p.x, p.y, p.z, p.w}; }
+glm::vec4 v4(const pcl_float4& p)
+{
+    return {p.x, p.y, p.z, p.w};
+}
 
-float fl(int i) { return static_cast<float>(i); }
+float fl(int i)
+{
+    return static_cast<float>(i);
+}
 
 std::string str(const glm::vec4& v)
 {
@@ -196,8 +203,12 @@ TEST(TextureLookup, BilinearBlendsAcrossTheWrapSeam)
     int repeat = set.add_view(img, TEXTURE_WRAP_REPEAT, TEXTURE_WRAP_REPEAT, 0);
     int clamp = set.add_view(img, TEXTURE_WRAP_CLAMP_TO_EDGE, TEXTURE_WRAP_REPEAT, 0);
     int mirror = set.add_view(img, TEXTURE_WRAP_MIRRORED_REPEAT, TEXTURE_WRAP_REPEAT, 0);
-    auto out = lookups(set, {{{0.0f, 0.5f}, repeat}, {{0.0f, 0.5f}, clamp}, {{0.0f, 0.5f}, mirror},
-                             {{1.0f, 0.5f}, repeat}, {{1.0f, 0.5f}, clamp}, {{1.0f, 0.5f}, mirror}});
+    auto out = lookups(set, {{{0.0f, 0.5f}, repeat},
+                             {{0.0f, 0.5f}, clamp},
+                             {{0.0f, 0.5f}, mirror},
+                             {{1.0f, 0.5f}, repeat},
+                             {{1.0f, 0.5f}, clamp},
+                             {{1.0f, 0.5f}, mirror}});
     float first = 0.0f, last = 200.0f * (1.0f / 255.0f);
     EXPECT_EQ(out[0].x, last + 0.5f * (first - last));
     EXPECT_EQ(out[1].x, first);
@@ -263,8 +274,8 @@ TEST(TextureLookup, SixteenBitTexels)
     int img = set.add_image16(2, 1, rgba);
     int linear = set.add_view(img, TEXTURE_WRAP_REPEAT, TEXTURE_WRAP_REPEAT, TEXTURE_NEAREST);
     int srgb = set.add_view(img, TEXTURE_WRAP_REPEAT, TEXTURE_WRAP_REPEAT, TEXTURE_NEAREST | TEXTURE_SRGB);
-    auto out = lookups(set, {{{0.25f, 0.5f}, linear}, {{0.75f, 0.5f}, linear}, {{0.25f, 0.5f}, srgb},
-                             {{0.75f, 0.5f}, srgb}});
+    auto out =
+        lookups(set, {{{0.25f, 0.5f}, linear}, {{0.75f, 0.5f}, linear}, {{0.25f, 0.5f}, srgb}, {{0.75f, 0.5f}, srgb}});
     for (int t = 0; t < 2; ++t)
         for (int c = 0; c < 4; ++c) {
             std::uint16_t v = rgba[static_cast<std::size_t>(t * 4 + c)];

@@ -50,7 +50,8 @@ TEST(TexturedEmitter, LightSamplesCarryTheTexelAtTheirPoint)
 
     const std::size_t n = 20000;
     const glm::vec3 ref(0.3f, 0.6f, 0.0f);
-    static cl::Program program = test::build_test_program("trace_test_kernels.cl", kTextureFeatures | FEATURE_AREA_LIGHTS);
+    static cl::Program program =
+        test::build_test_program("trace_test_kernels.cl", kTextureFeatures | FEATURE_AREA_LIGHTS);
     glm::vec3 ref_render(glm::dvec3(ref) - scene.render_origin); // the loader's render space
     std::vector<pcl_float4> rad;
     auto dirs = test::sample_lights_on_device(program, cs.arrays, ref_render, 77u, n, &rad);

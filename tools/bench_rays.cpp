@@ -22,8 +22,8 @@
 #include <embree3/rtcore.h>
 
 #include "cl/cl_runtime.h"
-#include "common/error.h"
 #include "cl/kernel_args.h"
+#include "common/error.h"
 #include "render/compile_scene.h"
 #include "scene/gltf_loader.h"
 
@@ -61,8 +61,8 @@ Rays primary_rays(const Scene& scene, std::size_t n)
         for (std::uint32_t x = 0; x < side; ++x) {
             float sx = 2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(side) - 1.0f;
             float sy = 1.0f - 2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(side);
-            glm::vec3 d = glm::vec3(c.forward.x, c.forward.y, c.forward.z) + sx * glm::vec3(c.right.x, c.right.y, c.right.z) +
-                          sy * glm::vec3(c.up.x, c.up.y, c.up.z);
+            glm::vec3 d = glm::vec3(c.forward.x, c.forward.y, c.forward.z) +
+                          sx * glm::vec3(c.right.x, c.right.y, c.right.z) + sy * glm::vec3(c.up.x, c.up.y, c.up.z);
             d = glm::normalize(d);
             r.origin.push_back(c.position);
             r.dir.push_back({d.x, d.y, d.z, 0.0f});
@@ -244,9 +244,9 @@ int main(int argc, char** argv)
         for (auto [name, r] : {std::pair{"incoherent", &incoherent}, std::pair{"primary", &primary}})
             for (bool any : {false, true}) {
                 Stats p = pc.run(*r, any, runs), e = em.run(*r, any, runs);
-                std::printf("  %-10s %-7s pathcl %6.2f / %6.2f / %6.2f | embree %6.2f / %6.2f / %6.2f | pathcl/embree %.2f\n",
-                            name, any ? "any" : "closest", p.min, p.median, p.max, e.min, e.median, e.max,
-                            p.median / e.median);
+                std::printf(
+                    "  %-10s %-7s pathcl %6.2f / %6.2f / %6.2f | embree %6.2f / %6.2f / %6.2f | pathcl/embree %.2f\n",
+                    name, any ? "any" : "closest", p.min, p.median, p.max, e.min, e.median, e.max, p.median / e.median);
             }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_rays: error: %s\n", e.what());

@@ -110,21 +110,21 @@ struct Builder {
         }
         float area = bounds.area();
         float leaf_cost = kIntersectCost * static_cast<float>(n);
-        float split_cost = (area > 0.0f) ? kTraversalCost + kIntersectCost * best_cost / area
-                                         : std::numeric_limits<float>::infinity();
+        float split_cost =
+            (area > 0.0f) ? kTraversalCost + kIntersectCost * best_cost / area : std::numeric_limits<float>::infinity();
         if (best_axis >= 0 && n <= kBvhMaxLeafSize && leaf_cost <= split_cost)
             return leaf();
 
         std::size_t mid;
         if (best_axis >= 0) {
             float scale = kBins / extent[best_axis];
-            auto it = std::partition(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                                     order.begin() + static_cast<std::ptrdiff_t>(end),
-                                     [&](std::uint32_t t) {
-                                         int b = std::min(kBins - 1, static_cast<int>((centroid[t][best_axis] -
-                                                                                       cbounds.lo[best_axis]) * scale));
-                                         return b < best_split;
-                                     });
+            auto it = std::partition(
+                order.begin() + static_cast<std::ptrdiff_t>(begin), order.begin() + static_cast<std::ptrdiff_t>(end),
+                [&](std::uint32_t t) {
+                    int b =
+                        std::min(kBins - 1, static_cast<int>((centroid[t][best_axis] - cbounds.lo[best_axis]) * scale));
+                    return b < best_split;
+                });
             mid = static_cast<std::size_t>(it - order.begin());
         } else {
             // All centroids coincide: SAH cannot separate them; split the list in half.

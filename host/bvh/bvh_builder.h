@@ -21,8 +21,8 @@ struct Bvh {
     std::vector<BvhNode> nodes;
     // Leaf order: triangle_order[i] is the input triangle stored at position i.
     std::vector<std::uint32_t> triangle_order;
-    int depth = 0;       // longest root-to-leaf path of the binary tree, in nodes
-    int wide_depth = 0;  // the same in the four-wide tree
+    int depth = 0;        // longest root-to-leaf path of the binary tree, in nodes
+    int wide_depth = 0;   // the same in the four-wide tree
     int stack_needed = 0; // most traversal stack entries any ray can need
     int leaf_count = 0;
     int max_leaf_size = 0;

@@ -135,8 +135,7 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
     auto start = std::chrono::steady_clock::now();
     std::string source = assemble_kernel_source(program_source);
     std::string full_options = base_build_options() + " " + options;
-    std::string identity = dev.info.platform + '|' + dev.info.name + '|' + dev.info.driver + '|' +
-                           dev.info.version;
+    std::string identity = dev.info.platform + '|' + dev.info.name + '|' + dev.info.driver + '|' + dev.info.version;
     std::string key = program_cache_key(identity, full_options, source);
 
     ProgramBuild result;

@@ -33,14 +33,12 @@ std::filesystem::path cache_dir()
 
 } // namespace
 
-std::string program_cache_key(const std::string& device_identity, const std::string& options,
-                              const std::string& source)
+std::string program_cache_key(const std::string& device_identity, const std::string& options, const std::string& source)
 {
     // Two independent 64-bit hashes: an accidental collision is not a practical concern.
     std::string all = device_identity + '\x1f' + options + '\x1f' + source;
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%016llx%016llx",
-                  static_cast<unsigned long long>(fnv1a64(all)),
+    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(fnv1a64(all)),
                   static_cast<unsigned long long>(fnv1a64(all, 0x84222325cbf29ce4ull)));
     return buf;
 }

@@ -161,8 +161,9 @@ Command add_render_command(CLI::App& app)
     auto rq = std::make_shared<RenderRequest>();
     CLI::App* render = app.add_subcommand("render", "Render a glTF scene to an EXR or PNG image");
     render->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
-    render->add_option("-o,--output", rq->outputs,
-                       "output image, repeatable (.exr: linear float + variance; .png: sRGB, clamped)")
+    render
+        ->add_option("-o,--output", rq->outputs,
+                     "output image, repeatable (.exr: linear float + variance; .png: sRGB, clamped)")
         ->required()
         ->allow_extra_args(false);
     add_render_options(render, rq->options, rq->device);

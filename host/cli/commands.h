@@ -9,8 +9,8 @@
 namespace pathcl::cli {
 
 struct Command {
-    CLI::App* app = nullptr;   // the subcommand
-    std::function<int()> run;  // runs it after parsing; returns the exit code
+    CLI::App* app = nullptr;  // the subcommand
+    std::function<int()> run; // runs it after parsing; returns the exit code
 };
 
 Command add_render_command(CLI::App& app);

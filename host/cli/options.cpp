@@ -51,8 +51,9 @@ void add_render_options(CLI::App* command, RenderOptions& options, int& device)
     command->add_option("--height", options.height, "image height")
         ->capture_default_str()
         ->check(CLI::Range(1u, 32768u));
-    command->add_option("--max-bounces", options.max_bounces,
-                        "scattering events per path (0: emission only, 1: direct light)")
+    command
+        ->add_option("--max-bounces", options.max_bounces,
+                     "scattering events per path (0: emission only, 1: direct light)")
         ->capture_default_str()
         ->check(CLI::Range(0u, 1u << 16));
     static const std::map<std::string, Strategy> strategies = {

@@ -29,12 +29,12 @@ std::string as_is(const std::string& parameter)
 
 } // namespace
 
-Error::Error(const std::string& message) : std::runtime_error(message) {}
+Error::Error(const std::string& message) : std::runtime_error(message)
+{}
 
 ParameterError::ParameterError(const std::string& parameter, const std::string& detail)
     : Error(compose(parameter, detail, as_is)), parameter_(parameter), detail_(detail)
-{
-}
+{}
 
 std::string ParameterError::describe(const std::function<std::string(const std::string&)>& name) const
 {

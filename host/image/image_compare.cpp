@@ -19,8 +19,8 @@ struct Estimate {
 };
 
 // Counts the failing tests among paired estimates.
-CompareScale run_scale(const std::string& name, const std::vector<Estimate>& a,
-                       const std::vector<Estimate>& b, double alpha)
+CompareScale run_scale(const std::string& name, const std::vector<Estimate>& a, const std::vector<Estimate>& b,
+                       double alpha)
 {
     CompareScale s;
     s.name = name;
@@ -84,8 +84,8 @@ double sidak_z_threshold(double alpha, std::size_t tests)
 CompareReport compare_images(const Image& a, const Image& b, const CompareOptions& opt)
 {
     if (a.width != b.width || a.height != b.height)
-        throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                    " vs " + std::to_string(b.width) + "x" + std::to_string(b.height));
+        throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
+                    std::to_string(b.width) + "x" + std::to_string(b.height));
     if (a.spp == 0 || b.spp == 0)
         throw Error("an image has no sample count (pathcl:spp), so its variance cannot be used");
     CompareReport r;
@@ -123,7 +123,8 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
     for (int c = 0; c < 3; ++c) {
         r.mean_a[c] = wa[static_cast<std::size_t>(c)].mean;
         r.mean_b[c] = wb[static_cast<std::size_t>(c)].mean;
-        r.stderr_diff[c] = std::sqrt(wa[static_cast<std::size_t>(c)].var_of_mean + wb[static_cast<std::size_t>(c)].var_of_mean);
+        r.stderr_diff[c] =
+            std::sqrt(wa[static_cast<std::size_t>(c)].var_of_mean + wb[static_cast<std::size_t>(c)].var_of_mean);
     }
     r.passed = true;
     for (const CompareScale& s : r.scales) {

@@ -14,8 +14,8 @@
 namespace pathcl {
 
 struct CompareOptions {
-    double alpha = 0.01;              // family-wise false-alarm rate per scale
-    double max_fail_fraction = 0.01;  // tolerated failing fraction (heavy-tailed estimates)
+    double alpha = 0.01;             // family-wise false-alarm rate per scale
+    double max_fail_fraction = 0.01; // tolerated failing fraction (heavy-tailed estimates)
     int block = 8;
     // Pooled per-pixel variance (the default) is right for a render against a reference
     // made by the same estimator: under the null hypothesis both sample one distribution,
@@ -52,9 +52,9 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
 // Bit-for-bit comparison of the pixel data (means, per-sample variances, sample count),
 // for refactors that must not change arithmetic and for reproducibility checks.
 struct BitwiseReport {
-    std::size_t values = 0;         // floats compared (means and variances)
-    std::size_t differing = 0;      // of which not bit-identical
-    std::size_t first_pixel = 0;    // index of the first differing pixel, when differing > 0
+    std::size_t values = 0;      // floats compared (means and variances)
+    std::size_t differing = 0;   // of which not bit-identical
+    std::size_t first_pixel = 0; // index of the first differing pixel, when differing > 0
     bool same_spp = true;
     bool identical() const { return differing == 0 && same_spp; }
     std::string summary() const;

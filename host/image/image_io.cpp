@@ -100,7 +100,8 @@ Image read_image(const std::string& path)
         for (int c = 0; c < 3; ++c) {
             img.rgb[i * 3 + c] = px[i * static_cast<std::size_t>(spec.nchannels) + static_cast<std::size_t>(rgb[c])];
             if (var[c] >= 0)
-                img.variance[i * 3 + c] = px[i * static_cast<std::size_t>(spec.nchannels) + static_cast<std::size_t>(var[c])];
+                img.variance[i * 3 + c] =
+                    px[i * static_cast<std::size_t>(spec.nchannels) + static_cast<std::size_t>(var[c])];
         }
     return img;
 }

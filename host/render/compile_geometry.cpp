@@ -37,8 +37,8 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         a.tangents.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             const TriangleTangent& t = scene.tangents[order[i]];
-            a.tangents[i] = {{t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w},
-                             {t[2].x, t[2].y, t[2].z, t[2].w}};
+            a.tangents[i] = {
+                {t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w}, {t[2].x, t[2].y, t[2].z, t[2].w}};
         }
     }
     if (out.features.has(FEATURE_VERTEX_COLORS)) {

@@ -165,8 +165,7 @@ void add_environment_light(const Scene& scene, CompiledScene& out, std::vector<d
 
 } // namespace
 
-std::vector<double> compile_lights(const Scene& scene, const std::vector<std::uint32_t>& leaf_order,
-                                   CompiledScene& out)
+std::vector<double> compile_lights(const Scene& scene, const std::vector<std::uint32_t>& leaf_order, CompiledScene& out)
 {
     std::vector<double> power;
     add_sphere_lights(scene, out.arrays.lights, power);

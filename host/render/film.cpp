@@ -4,7 +4,8 @@
 
 namespace pathcl {
 
-FilmSum::FilmSum(std::size_t pixels) : sum_(pixels * 4, 0.0), sum_sq_(pixels * 4, 0.0) {}
+FilmSum::FilmSum(std::size_t pixels) : sum_(pixels * 4, 0.0), sum_sq_(pixels * 4, 0.0)
+{}
 
 void FilmSum::add(const std::vector<FilmPixel>& film, const std::vector<pcl_uint>& bad_samples)
 {

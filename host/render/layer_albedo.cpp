@@ -95,7 +95,8 @@ std::vector<float> compute_layer_albedo_table(int panels)
             int side = row / (LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES), k = row / LAYER_ROUGH_RES % LAYER_GLASS_ETA_RES,
                 j = row % LAYER_ROUGH_RES;
             double x = static_cast<double>(LAYER_X_MAX) * k / (LAYER_GLASS_ETA_RES - 1), ior = (1.0 + x) / (1.0 - x);
-            int offset = (side == 0 ? LAYER_TABLE_GLASS_OUT : LAYER_TABLE_GLASS_IN) + k * glass_block + j * LAYER_MU_RES;
+            int offset =
+                (side == 0 ? LAYER_TABLE_GLASS_OUT : LAYER_TABLE_GLASS_IN) + k * glass_block + j * LAYER_MU_RES;
             for (int i = 0; i < LAYER_MU_RES; ++i)
                 t[offset + i] = j == 0 ? 1.0f
                                        : static_cast<float>(integrate_dielectric_albedo(
@@ -123,12 +124,10 @@ template <class Label, class Accumulate>
 void integrate_visible_normals(double cos_theta, double alpha, int panels, const Label& label,
                                const Accumulate& accumulate)
 {
-    static constexpr double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                                     -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                                     0.7966664774136267,  0.9602898564975363};
-    static constexpr double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066278921548,
-                                     0.3626837833783620, 0.3626837833783620, 0.3137066278921548,
-                                     0.2223810344533745, 0.1012285362903763};
+    static constexpr double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                                     0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+    static constexpr double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066278921548, 0.3626837833783620,
+                                     0.3626837833783620, 0.3137066278921548, 0.2223810344533745, 0.1012285362903763};
     const glm::dvec3 wo(std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta);
     const glm::dvec3 w = glm::normalize(glm::dvec3(wo.x * alpha, wo.y * alpha, wo.z));
     const double z_lo = -w.z, cap_area = kPi * (1.0 - z_lo); // half the cap: phi in [0, pi]
@@ -250,8 +249,8 @@ double smooth_layer_average(double eta)
     // kink at the critical angle only for eta < 1, which materials never use here).
     static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                     0.9061798459386640};
-    static constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                    0.4786286704993665, 0.2369268850561891};
+    static constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                    0.2369268850561891};
     const int panels = 256;
     double sum = 0.0;
     for (int k = 0; k < panels; ++k) {

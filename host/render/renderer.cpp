@@ -173,8 +173,9 @@ struct Renderer::Impl {
                 for (std::uint32_t y : log_ys)
                     for (std::uint32_t x : log_xs) {
                         const Ray& r = logged[static_cast<std::size_t>(y) * options.width + x];
-                        camera_rays.push_back({render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
-                                               glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
+                        camera_rays.push_back(
+                            {render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
+                             glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
                     }
             }
             bind_kernel(dr.path_kernel, dr.arrays, frame);
@@ -228,10 +229,8 @@ struct Renderer::Impl {
     }
 };
 
-Renderer::Renderer(const Scene& scene, const RenderOptions& options)
-    : impl_(std::make_unique<Impl>(scene, options))
-{
-}
+Renderer::Renderer(const Scene& scene, const RenderOptions& options) : impl_(std::make_unique<Impl>(scene, options))
+{}
 
 Renderer::~Renderer() = default;
 

@@ -14,10 +14,10 @@
 namespace pathcl {
 namespace {
 
-constexpr int kPanel = 512;  // each panel is kPanel x kPanel pixels
-constexpr int kMargin = 24;  // around and between panels
-constexpr int kTop = 48;     // room for two title lines
-constexpr int kBottom = 40;  // room for one legend line
+constexpr int kPanel = 512; // each panel is kPanel x kPanel pixels
+constexpr int kMargin = 24; // around and between panels
+constexpr int kTop = 48;    // room for two title lines
+constexpr int kBottom = 40; // room for one legend line
 
 float srgb_to_linear(float t)
 {
@@ -174,8 +174,7 @@ PowerSpectrum power_spectrum(const std::vector<glm::vec2>& points, std::size_t s
     return ps;
 }
 
-Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const SamplePlotRequest& rq,
-                       std::string* note)
+Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const SamplePlotRequest& rq, std::string* note)
 {
     if (rq.spectrum && rq.spp > kSpectrumMaxSpp)
         throw ParameterError("spectrum", "needs {spp} at most " + std::to_string(kSpectrumMaxSpp));
@@ -202,7 +201,8 @@ Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const Sa
                          y0 + kPanel - 1, g.colour);
         for (std::uint32_t i = 1; i < g.rows; ++i)
             canvas.hline(x0, x0 + kPanel - 1,
-                         y0 + kPanel - static_cast<int>(std::lround(static_cast<double>(i) * kPanel / g.rows)), g.colour);
+                         y0 + kPanel - static_cast<int>(std::lround(static_cast<double>(i) * kPanel / g.rows)),
+                         g.colour);
     }
     canvas.frame(x0, y0, kPanel, black);
     const float radius = std::clamp(0.25f * kPanel / std::sqrt(static_cast<float>(points.size())), 1.2f, 5.0f);
@@ -213,14 +213,15 @@ Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const Sa
     std::vector<std::pair<glm::ivec2, std::string>> labels;
     std::string dims = two_d ? "2D decision at dims " + std::to_string(rq.dim0) + "," + std::to_string(rq.dim1)
                              : "1D decisions at dims " + std::to_string(rq.dim0) + " and " + std::to_string(rq.dim1);
-    labels.push_back({{x0, 20}, sampler_name(rq.sampler) + ", " + std::to_string(rq.spp) + " spp, pixel " +
-                                    rq.pixel_label + ", seed " + std::to_string(rq.seed)});
+    labels.push_back({{x0, 20},
+                      sampler_name(rq.sampler) + ", " + std::to_string(rq.spp) + " spp, pixel " + rq.pixel_label +
+                          ", seed " + std::to_string(rq.seed)});
     labels.push_back({{x0, 40}, dims});
-    labels.push_back({{x0, y0 + kPanel + 26}, two_d || rq.sampler == SamplerType::Halton || rq.sampler == SamplerType::Independent
-                                                  ? "x: dim " + std::to_string(rq.dim0) + " (right), y: dim " +
-                                                        std::to_string(rq.dim1) + " (up)"
-                                                  : "x: dim " + std::to_string(rq.dim0) + ", y: dim " +
-                                                        std::to_string(rq.dim1) + " (own 1D sets)"});
+    labels.push_back(
+        {{x0, y0 + kPanel + 26},
+         two_d || rq.sampler == SamplerType::Halton || rq.sampler == SamplerType::Independent
+             ? "x: dim " + std::to_string(rq.dim0) + " (right), y: dim " + std::to_string(rq.dim1) + " (up)"
+             : "x: dim " + std::to_string(rq.dim0) + ", y: dim " + std::to_string(rq.dim1) + " (own 1D sets)"});
 
     if (rq.spectrum) {
         // Frequencies up to about twice the blue-noise radius sqrt(spp); as many pixels as
@@ -255,12 +256,13 @@ Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const Sa
         }
         canvas.frame(sx0, y0, kPanel, black);
         labels.push_back({{sx0, 20}, "power spectrum, mean of " + std::to_string(ps.sets) + " pixels' sets"});
-        labels.push_back({{sx0, 40}, "frequencies -" + std::to_string(F) + ".." + std::to_string(F) +
-                                         ", red circle |f| = sqrt(spp)"});
+        labels.push_back(
+            {{sx0, 40},
+             "frequencies -" + std::to_string(F) + ".." + std::to_string(F) + ", red circle |f| = sqrt(spp)"});
         labels.push_back({{sx0, y0 + kPanel + 26}, "grey: black 0, mid-grey 1 (white noise), white >= 2"});
         if (note)
-            *note = "spectrum: mean periodogram of " + std::to_string(ps.sets) + " pixels, |fx|, |fy| <= " +
-                    std::to_string(F);
+            *note = "spectrum: mean periodogram of " + std::to_string(ps.sets) +
+                    " pixels, |fx|, |fy| <= " + std::to_string(F);
     }
     draw_text(canvas, labels);
 

@@ -36,8 +36,8 @@ struct SamplePlotRequest {
     std::uint32_t spp = 1; // the set size (after sampler_spp)
     std::uint32_t seed = 0;
     std::uint32_t dim0 = 0, dim1 = 1;
-    std::uint32_t pixel = 0;      // pixel index (y * width + x in a render)
-    std::string pixel_label;      // shown in the title, e.g. "(10, 20)"
+    std::uint32_t pixel = 0; // pixel index (y * width + x in a render)
+    std::string pixel_label; // shown in the title, e.g. "(10, 20)"
     bool spectrum = false;
 };
 

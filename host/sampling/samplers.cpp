@@ -11,11 +11,13 @@ namespace pathcl {
 
 const std::map<std::string, SamplerType>& sampler_names()
 {
-    static const std::map<std::string, SamplerType> names = {
-        {"independent", SamplerType::Independent}, {"jittered", SamplerType::Jittered},
-        {"multi-jittered", SamplerType::MultiJittered}, {"n-rooks", SamplerType::NRooks},
-        {"sobol", SamplerType::Sobol}, {"halton", SamplerType::Halton},
-        {"hammersley", SamplerType::Hammersley}};
+    static const std::map<std::string, SamplerType> names = {{"independent", SamplerType::Independent},
+                                                             {"jittered", SamplerType::Jittered},
+                                                             {"multi-jittered", SamplerType::MultiJittered},
+                                                             {"n-rooks", SamplerType::NRooks},
+                                                             {"sobol", SamplerType::Sobol},
+                                                             {"halton", SamplerType::Halton},
+                                                             {"hammersley", SamplerType::Hammersley}};
     return names;
 }
 

@@ -48,9 +48,9 @@ StrataGrid sampler_strata(SamplerType sampler, std::uint32_t spp);
 
 struct SamplerPointsRequest {
     SamplerType sampler = SamplerType::Independent;
-    std::uint32_t spp = 1;          // the set size (after sampler_spp)
+    std::uint32_t spp = 1; // the set size (after sampler_spp)
     std::uint32_t seed = 0;
-    std::uint32_t dim0 = 0, dim1 = 1; // dim1 == dim0 + 1: the 2D decision at dim0; else two 1D
+    std::uint32_t dim0 = 0, dim1 = 1;  // dim1 == dim0 + 1: the 2D decision at dim0; else two 1D
     std::vector<std::uint32_t> pixels; // pixel indices (y * width + x in a render)
     std::uint32_t first_sample = 0;
     std::uint32_t count = 0; // samples per pixel to read (0: spp)

@@ -12,11 +12,11 @@
 namespace pathcl {
 
 struct CameraOverrides {
-    std::optional<double> fov_degrees;   // full vertical field of view (perspective only)
-    std::optional<glm::dvec3> look_from; // world-space camera position
-    std::optional<glm::dvec3> look_at;   // world-space point the camera looks at
-    std::optional<glm::dvec3> up;        // world-space up hint (default: the camera's up)
-    std::optional<double> aperture;      // thin-lens radius, world units (0: pinhole)
+    std::optional<double> fov_degrees;    // full vertical field of view (perspective only)
+    std::optional<glm::dvec3> look_from;  // world-space camera position
+    std::optional<glm::dvec3> look_at;    // world-space point the camera looks at
+    std::optional<glm::dvec3> up;         // world-space up hint (default: the camera's up)
+    std::optional<double> aperture;       // thin-lens radius, world units (0: pinhole)
     std::optional<double> focus_distance; // plane of focus along the view direction
 };
 

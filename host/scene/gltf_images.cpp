@@ -168,7 +168,8 @@ bool load_gltf_image(tinygltf::Image* image, int index, std::string* err, std::s
         image->height = static_cast<int>(img.height);
         image->component = 4;
         image->bits = img.bits;
-        image->pixel_type = img.bits == 16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+        image->pixel_type =
+            img.bits == 16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
         if (img.bits == 16)
             image->image.assign(reinterpret_cast<const unsigned char*>(img.rgba16.data()),
                                 reinterpret_cast<const unsigned char*>(img.rgba16.data() + img.rgba16.size()));

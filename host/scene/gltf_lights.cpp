@@ -17,8 +17,7 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
 {
     int index = index_value.IsNumber() ? static_cast<int>(index_value.GetNumberAsInt()) : -1;
     if (index < 0 || index >= static_cast<int>(model.lights.size()))
-        throw Error(source + ": " + what + ": KHR_lights_punctual light " + std::to_string(index) +
-                    " does not exist");
+        throw Error(source + ": " + what + ": KHR_lights_punctual light " + std::to_string(index) + " does not exist");
     const tinygltf::Light& l = model.lights[static_cast<std::size_t>(index)];
     std::string name = what + ": light " + std::to_string(index);
     SceneLight out;

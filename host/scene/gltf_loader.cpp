@@ -54,8 +54,7 @@ glm::dmat4 local_transform(const tinygltf::Node& node)
 struct Importer {
     Importer(const tinygltf::Model& m, const std::string& src, const std::string& dir)
         : model(m), source(src), base_dir(dir), textures(m, src, dir), primitives(m, src, scene.materials, geometry)
-    {
-    }
+    {}
 
     const tinygltf::Model& model;
     const std::string& source;
@@ -68,9 +67,13 @@ struct Importer {
 
     void run()
     {
-        static const std::set<std::string> supported = {
-            "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
-            "KHR_materials_ior", "KHR_materials_volume", "KHR_lights_punctual", "KHR_texture_transform"};
+        static const std::set<std::string> supported = {"KHR_materials_emissive_strength",
+                                                        "KHR_materials_specular",
+                                                        "KHR_materials_transmission",
+                                                        "KHR_materials_ior",
+                                                        "KHR_materials_volume",
+                                                        "KHR_lights_punctual",
+                                                        "KHR_texture_transform"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
@@ -128,8 +131,7 @@ struct Importer {
                 throw Error(source + ": the node hierarchy has a cycle");
             const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(item.node)];
             glm::dmat4 world = item.parent * local_transform(node);
-            std::string what = "node " + std::to_string(item.node) +
-                               (node.name.empty() ? "" : " '" + node.name + "'");
+            std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " '" + node.name + "'");
             if (node.mesh >= 0) {
                 if (node.mesh >= static_cast<int>(model.meshes.size()))
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");

@@ -80,8 +80,7 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     out.name = m.name;
     const auto& pbr = m.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() >= 3)
-        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                              pbr.baseColorFactor[2]));
+        out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
     out.metallic = static_cast<float>(pbr.metallicFactor);
     out.roughness = static_cast<float>(pbr.roughnessFactor);
     double strength = 1.0;
@@ -89,8 +88,7 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     if (it != m.extensions.end())
         strength = number_or(it->second, "emissiveStrength", 1.0);
     if (m.emissiveFactor.size() == 3)
-        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1],
-                                            m.emissiveFactor[2]) * strength);
+        out.emission = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength);
     out.double_sided = m.doubleSided;
     if (auto e = m.extensions.find("KHR_materials_specular"); e != m.extensions.end()) {
         out.specular = static_cast<float>(number_or(e->second, "specularFactor", 1.0));
@@ -140,6 +138,5 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
     }
     return materials;
 }
-
 
 } // namespace pathcl

@@ -12,8 +12,8 @@
 #include "common/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_materials.h"
-#include "scene/texture_slots.h"
 #include "scene/tangents.h"
+#include "scene/texture_slots.h"
 
 namespace pathcl {
 namespace {
@@ -42,8 +42,7 @@ void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometr
 PrimitiveImporter::PrimitiveImporter(const tinygltf::Model& model, const std::string& source,
                                      std::vector<SceneMaterial>& materials, PendingGeometry& geometry)
     : model_(model), source_(source), materials_(materials), geometry_(geometry)
-{
-}
+{}
 
 // A primitive's optional vertex attributes, for the vertices of `tris`.
 struct PrimitiveImporter::VertexAttributes {
@@ -143,8 +142,7 @@ int PrimitiveImporter::material_for(int gltf_material)
 {
     if (gltf_material >= 0) {
         if (gltf_material >= static_cast<int>(model_.materials.size()))
-            throw Error(source_ + ": material index " + std::to_string(gltf_material) +
-                        " does not exist");
+            throw Error(source_ + ": material index " + std::to_string(gltf_material) + " does not exist");
         return gltf_material;
     }
     if (default_material_ < 0) {
@@ -169,8 +167,8 @@ std::vector<std::uint32_t> PrimitiveImporter::triangle_indices(const tinygltf::P
         for (std::size_t i = 0; i < r.count(); ++i) {
             double v = r.get(i, 0);
             if (v >= static_cast<double>(vertex_count))
-                r.fail("index " + std::to_string(static_cast<std::uint64_t>(v)) +
-                       " is out of range (" + std::to_string(vertex_count) + " vertices)");
+                r.fail("index " + std::to_string(static_cast<std::uint64_t>(v)) + " is out of range (" +
+                       std::to_string(vertex_count) + " vertices)");
             idx[i] = static_cast<std::uint32_t>(v);
         }
     } else {
@@ -193,9 +191,10 @@ std::vector<std::uint32_t> PrimitiveImporter::triangle_indices(const tinygltf::P
     return tris;
 }
 
-PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(
-    const tinygltf::Primitive& prim, int material, const AccessorReader& pos, const std::vector<std::uint32_t>& tris,
-    const std::string& what)
+PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(const tinygltf::Primitive& prim,
+                                                                              int material, const AccessorReader& pos,
+                                                                              const std::vector<std::uint32_t>& tris,
+                                                                              const std::string& what)
 {
     VertexAttributes attr;
     const SceneMaterial& mat = materials_[static_cast<std::size_t>(material)];

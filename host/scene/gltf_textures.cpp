@@ -71,8 +71,7 @@ void texture_transform_matrix(double offset_u, double offset_v, double rotation,
 
 TextureImporter::TextureImporter(const tinygltf::Model& model, const std::string& source, const std::string& base_dir)
     : model_(model), source_(source), base_dir_(base_dir), scene_image_(model.images.size(), -1)
-{
-}
+{}
 
 SceneTexture TextureImporter::read(int index, int texcoord, const tinygltf::Value* transform, const std::string& where)
 {

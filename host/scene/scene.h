@@ -51,11 +51,11 @@ struct SceneMaterial {
     float roughness = 1.0f;
     glm::vec3 emission{0.0f}; // radiance, W m^-2 sr^-1
     bool double_sided = false;
-    float specular = 1.0f;             // KHR_materials_specular specularFactor
-    glm::vec3 specular_color{1.0f};    // KHR_materials_specular specularColorFactor
-    float transmission = 0.0f;         // KHR_materials_transmission transmissionFactor
-    float ior = 1.5f;                  // KHR_materials_ior
-    bool thin_walled = true;           // no KHR_materials_volume with thicknessFactor > 0
+    float specular = 1.0f;          // KHR_materials_specular specularFactor
+    glm::vec3 specular_color{1.0f}; // KHR_materials_specular specularColorFactor
+    float transmission = 0.0f;      // KHR_materials_transmission transmissionFactor
+    float ior = 1.5f;               // KHR_materials_ior
+    bool thin_walled = true;        // no KHR_materials_volume with thicknessFactor > 0
 
     // Textures, one per slot (TEXTURE_SLOT_*, the table in scene/texture_slots.h); each
     // value multiplies its factor.
@@ -82,11 +82,11 @@ struct SceneTriangle {
 struct SceneLight {
     enum class Type { Point, Spot, RectSpot, Directional, Sphere };
     Type type = Type::Point;
-    glm::dvec3 position{0.0};          // render space (not used by Directional)
-    glm::dvec3 direction{0.0, 0.0, -1.0}; // unit, the way light travels (node -Z)
-    glm::dvec3 right{1.0, 0.0, 0.0};   // unit, node +X, orthogonal to direction
-    glm::vec3 intensity{1.0f};         // color x intensity: W/sr, or W/m^2 (Directional)
-    double cos_inner = 1.0, cos_outer = 0.0; // Spot
+    glm::dvec3 position{0.0};                  // render space (not used by Directional)
+    glm::dvec3 direction{0.0, 0.0, -1.0};      // unit, the way light travels (node -Z)
+    glm::dvec3 right{1.0, 0.0, 0.0};           // unit, node +X, orthogonal to direction
+    glm::vec3 intensity{1.0f};                 // color x intensity: W/sr, or W/m^2 (Directional)
+    double cos_inner = 1.0, cos_outer = 0.0;   // Spot
     double tan_half_h = 1.0, tan_half_v = 1.0; // RectSpot
     double radius = 0.0;                       // Sphere
     std::string name;
@@ -97,9 +97,9 @@ struct SceneLight {
 // when the scene is loaded (scene/environment_image.h), so a Scene is complete.
 struct SceneEnvironment {
     bool present = false;
-    std::string path;               // the image file; empty: constant
+    std::string path; // the image file; empty: constant
     std::uint32_t width = 0, height = 0;
-    std::vector<float> rgb;         // the image's texels as read, rows from the top
+    std::vector<float> rgb; // the image's texels as read, rows from the top
     glm::vec3 constant{0.0f};
     float strength = 1.0f;
     double rotation_degrees = 0.0;

@@ -34,8 +34,8 @@ static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, 
 /* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
  * (shadow rays). Children are visited nearest entry first; the others wait on the stack
  * with their entry distance and are dropped once a closer hit is known. */
-static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles,
-                            float3 origin, float3 dir, float t_max, bool any_hit)
+static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles, float3 origin,
+                            float3 dir, float t_max, bool any_hit)
 {
     RayTraversal r = ray_traversal_setup(origin, dir);
     Hit hit;

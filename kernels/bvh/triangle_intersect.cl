@@ -45,8 +45,8 @@ static inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
 }
 
 /* Watertight ray/triangle test. On a hit closer than *t_max, updates hit and *t_max. */
-static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max,
-                         float* t_out, float* b1_out, float* b2_out)
+static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max, float* t_out,
+                                float* b1_out, float* b2_out)
 {
     float4 o = (float4)(r->origin, 0.0f);
     float4 a = shuffle(tri->v0 - o, r->permutation);

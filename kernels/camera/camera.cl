@@ -50,8 +50,7 @@ __kernel void generate_camera_rays(PATHCL_KERNEL_PARAMS FrameParams frame)
     uint pixel = y * frame.width + x;
     SamplerState sampler = frame_sampler(&frame, pixel, DIM_PIXEL);
     float2 offset = sampler_get_2d(&sampler);
-    float2 film_uv = (float2)(((float)x + offset.x) / (float)frame.width,
-                              ((float)y + offset.y) / (float)frame.height);
+    float2 film_uv = (float2)(((float)x + offset.x) / (float)frame.width, ((float)y + offset.y) / (float)frame.height);
     float2 lens_u = (float2)(0.0f);
 #ifdef PATHCL_HAS_THIN_LENS
     sampler.dimension = DIM_LENS;

@@ -72,8 +72,7 @@
 #include "util/math.cl"
 
 /* The BSDF at a shading point seen from wo. layer: the LAYER_* tables. */
-static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, float3 wo,
-                                     __global const float* layer)
+static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, float3 wo, __global const float* layer)
 {
     BsdfParams p;
     p.base_color = m->base_color.xyz;
@@ -103,7 +102,8 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
         if (p.metallic > 0.0f) {
             /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
             int r0 = min((int)p.layer_r, LAYER_ROUGH_RES - 2);
-            float e_avg = mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
+            float e_avg =
+                mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
             float3 f_avg = p.base_color + (1.0f - p.base_color) * (1.0f / 21.0f);
             float3 f_ms = f_avg * f_avg * e_avg / (1.0f - f_avg * (1.0f - e_avg));
             if (1.0f - e_avg > 1e-4f) { /* else the loss is below 1e-4: nothing to restore */
@@ -125,7 +125,8 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     float3 one_minus_avg = 1.0f - layer_average(&p, m);
     float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
     /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
-    p.diffuse_scale = select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
+    p.diffuse_scale =
+        select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
     p.lobes = choose_lobes(&p);
 #endif
     return p;

@@ -71,8 +71,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
         float denom = dot_i + dot_o / p->eta;
         denom *= denom;
         dwm_dwi = -dot_i / denom;
-        btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) * fabs(dot_i * dot_o) /
-               (wo.z * denom * p->eta * p->eta);
+        btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) * fabs(dot_i * dot_o) / (wo.z * denom * p->eta * p->eta);
     }
     float c = dot(wo, wm);
     float3 f_layer = fresnel_specular_layer(p, c);

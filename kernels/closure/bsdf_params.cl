@@ -38,16 +38,16 @@ typedef struct {
     float3 specular_color; /* KHR_materials_specular colour */
     float specular;        /* KHR_materials_specular weight */
     float metallic;
-    float alpha;           /* GGX alpha = roughness^2 */
+    float alpha; /* GGX alpha = roughness^2 */
     float transmission;
     float eta;   /* ior of the side wi refracts into over ior of wo's side (thin: ior) */
     bool thin;   /* thin-walled: transmitted light does not bend */
     bool inside; /* wo is inside a solid: no diffuse base */
 #ifdef PATHCL_FULL_BSDF
-    float3 f0c;           /* min(F0(ior) specular_color, 1) */
-    float3 diffuse_scale; /* (1 - metallic)(1 - transmission) base / (pi (1 - E_avg)) */
-    float3 layer_o;       /* E(cos_o): the dielectric layer's albedo from wo */
-    float cos_o;          /* wo against the shading normal, >= 0 */
+    float3 f0c;                  /* min(F0(ior) specular_color, 1) */
+    float3 diffuse_scale;        /* (1 - metallic)(1 - transmission) base / (pi (1 - E_avg)) */
+    float3 layer_o;              /* E(cos_o): the dielectric layer's albedo from wo */
+    float cos_o;                 /* wo against the shading normal, >= 0 */
     __global const float* layer; /* LAYER_* tables */
     float layer_r, layer_x;      /* continuous table coordinates of roughness and ior */
     float ess_o;                 /* GGX albedo with Fresnel 1 from wo (rough lobes) */

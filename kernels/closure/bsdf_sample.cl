@@ -11,8 +11,7 @@
 #include "util/math.cl"
 
 /* u_lobe picks the lobe, u samples it. */
-static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe,
-                                     float2 u)
+static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
 {
     BsdfSample s;
     s.delta = false;

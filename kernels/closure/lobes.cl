@@ -16,8 +16,8 @@ static inline LobeChoice choose_lobes(const BsdfParams* p)
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 f_layer = fresnel_specular_layer(p, p->cos_o);
     LobeChoice c;
-    c.diffuse = p->inside ? 0.0f
-                          : (1.0f - p->metallic) * (1.0f - p->transmission) * mean3(p->base_color * (1.0f - p->layer_o));
+    c.diffuse =
+        p->inside ? 0.0f : (1.0f - p->metallic) * (1.0f - p->transmission) * mean3(p->base_color * (1.0f - p->layer_o));
     c.diffuse += mean3(p->ms_albedo); /* the conductor's multiple scattering, sampled alike */
     c.conductor = p->metallic * mean3(fresnel_schlick(p->base_color, p->cos_o));
     /* The interface: the coat's reflection over the diffuse base, and the glass (whose

@@ -18,8 +18,7 @@ static inline void neumaier_add(float4* sum, float4* compensation, float4 x)
     *sum = t;
 }
 
-static inline void film_add_sample(__global FilmPixel* film, __global uint* bad_samples, uint pixel,
-                                   float3 radiance)
+static inline void film_add_sample(__global FilmPixel* film, __global uint* bad_samples, uint pixel, float3 radiance)
 {
     if (!all(isfinite(radiance))) {
         bad_samples[pixel] += 1u;

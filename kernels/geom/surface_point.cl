@@ -7,22 +7,21 @@
 #include "util/math.cl"
 
 typedef struct {
-    float3 p;       /* world position, from barycentrics (more accurate than o + t d) */
-    float3 p_error; /* per-axis bound on |p - exact p| */
+    float3 p;        /* world position, from barycentrics (more accurate than o + t d) */
+    float3 p_error;  /* per-axis bound on |p - exact p| */
     float3 p_smooth; /* p lifted onto the smooth surface the vertex normals describe (Hanika
                       * 2021): where reflected rays start, so that a coarse mesh with
                       * smooth normals has no dark band at the shadow terminator */
     bool lifted;     /* p_smooth is clearly above the triangle (beyond rounding) */
-    float3 ng;      /* geometric normal, flipped to the side the ray came from */
-    float3 ns;      /* shading normal, in the same hemisphere as ng */
+    float3 ng;       /* geometric normal, flipped to the side the ray came from */
+    float3 ns;       /* shading normal, in the same hemisphere as ng */
     bool front_face; /* the ray hit the counter-clockwise (emitting) side */
     float area;
     int material;
     int emitter;
 } SurfacePoint;
 
-static inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float b2,
-                                float3* error)
+static inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1, float b2, float3* error)
 {
     float b0 = 1.0f - b1 - b2;
     float3 p0 = b0 * v0, p1 = b1 * v1, p2 = b2 * v2;
@@ -30,8 +29,8 @@ static inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1
     return p0 + p1 + p2;
 }
 
-static inline SurfacePoint surface_point(__global const Triangle* triangles,
-                                  __global const TriangleShading* shading, Hit hit, float3 wo)
+static inline SurfacePoint surface_point(__global const Triangle* triangles, __global const TriangleShading* shading,
+                                         Hit hit, float3 wo)
 {
     SurfacePoint sp;
     Triangle tri = triangles[hit.triangle];

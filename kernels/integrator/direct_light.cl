@@ -52,8 +52,8 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
     /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
     float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
     if (!blocked)
-        ps->radiance += ps->beta * e.f_cos * ls.radiance *
-                        light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
+        ps->radiance +=
+            ps->beta * e.f_cos * ls.radiance * light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
 }
 
 #endif /* PATHCL_HAS_LIGHTS */

@@ -3,12 +3,12 @@
 #include "types.h"
 
 typedef struct {
-    float3 origin, dir;      /* the ray the path follows next */
-    float3 radiance;         /* L gathered so far */
-    float3 beta;             /* throughput: f cos / pdf along the path (and roulette's 1/q) */
-    float eta2_product;      /* product of the eta^2 that beta holds the inverse of */
-    float prev_bsdf_pdf;     /* pdf of the BSDF sample that made the ray */
-    bool prev_delta;         /* it came from the camera or a delta lobe: emission has full weight */
+    float3 origin, dir;       /* the ray the path follows next */
+    float3 radiance;          /* L gathered so far */
+    float3 beta;              /* throughput: f cos / pdf along the path (and roulette's 1/q) */
+    float eta2_product;       /* product of the eta^2 that beta holds the inverse of */
+    float prev_bsdf_pdf;      /* pdf of the BSDF sample that made the ray */
+    bool prev_delta;          /* it came from the camera or a delta lobe: emission has full weight */
     bool prev_technique_bsdf; /* one-sample MIS: the coin chose the BSDF technique */
 } PathState;
 
@@ -22,7 +22,7 @@ static inline PathState path_state_start(Ray ray)
     ps.beta = (float3)(1.0f);
     ps.eta2_product = 1.0f;
     ps.prev_bsdf_pdf = 0.0f;
-    ps.prev_delta = true;          /* camera rays see emission with full weight */
+    ps.prev_delta = true; /* camera rays see emission with full weight */
     ps.prev_technique_bsdf = true;
     return ps;
 }

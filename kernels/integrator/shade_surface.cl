@@ -43,8 +43,8 @@ static inline void shade_surface_emission(const KernelData* kd, const FrameParam
             Light light = kd->lights[s->sp.emitter];
             float pmf = kd->light_distribution[s->sp.emitter].pmf;
             float light_pdf = triangle_light_pdf(&light, pmf, hit.t, dot(s->sp.ng, wo));
-            ps->radiance += ps->beta * le *
-                            bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf, light_pdf);
+            ps->radiance +=
+                ps->beta * le * bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf, light_pdf);
         }
     }
 #endif

@@ -70,7 +70,8 @@ static inline float environment_pdf(const KernelData* kd, const EnvironmentLight
     if (!(sin_theta > 0.0f))
         return 0.0f;
     __global const float* row = kd->env_conditional + t.y * (w + 1u);
-    float p_uv = (kd->env_marginal[t.y + 1u] - kd->env_marginal[t.y]) * (float)h * (row[t.x + 1u] - row[t.x]) * (float)w;
+    float p_uv =
+        (kd->env_marginal[t.y + 1u] - kd->env_marginal[t.y]) * (float)h * (row[t.x + 1u] - row[t.x]) * (float)w;
     return pmf * p_uv / (2.0f * PI_F * PI_F * sin_theta);
 }
 
@@ -84,7 +85,7 @@ static inline float3 environment_sample(const KernelData* kd, const EnvironmentL
     float v = sample_cdf(kd->env_marginal, h, u.y, &row, &pdf_v);
     float uu = sample_cdf(kd->env_conditional + row * (w + 1u), w, u.x, &col, &pdf_u);
     float cos_theta, sin_theta = sin_cos_turns(0.5f * v, &cos_theta); /* theta = pi v */
-    float cos_phi, sin_phi = sin_cos_turns(uu, &cos_phi);            /* phi = 2 pi uu */
+    float cos_phi, sin_phi = sin_cos_turns(uu, &cos_phi);             /* phi = 2 pi uu */
     *pdf = 0.0f;
     if (!(sin_theta > 0.0f) || !(pdf_u * pdf_v > 0.0f))
         return (float3)(0.0f);

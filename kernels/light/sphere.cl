@@ -41,8 +41,8 @@ static inline int closest_sphere_light(__global const Light* lights, uint sphere
     *t_hit = t_max;
     for (uint i = 0; i < sphere_count; ++i) {
         bool outside;
-        float t = ray_sphere(lights[i].data.sphere.centre.xyz, lights[i].data.sphere.radius, origin, dir, *t_hit,
-                             &outside);
+        float t =
+            ray_sphere(lights[i].data.sphere.centre.xyz, lights[i].data.sphere.radius, origin, dir, *t_hit, &outside);
         if (t < *t_hit) {
             *t_hit = t;
             *from_outside = outside;

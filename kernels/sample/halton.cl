@@ -4,6 +4,7 @@
 #include "util/hash.cl"
 
 /* The first primes: Halton dimension d uses base HALTON_PRIMES[d % 256]. */
+/* clang-format off */
 __constant ushort HALTON_PRIMES[256] = {
     2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
     59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131,
@@ -22,6 +23,7 @@ __constant ushort HALTON_PRIMES[256] = {
     1427, 1429, 1433, 1439, 1447, 1451, 1453, 1459, 1471, 1481, 1483, 1487, 1489, 1493, 1499, 1511,
     1523, 1531, 1543, 1549, 1553, 1559, 1567, 1571, 1579, 1583, 1597, 1601, 1607, 1609, 1613, 1619,
 };
+/* clang-format on */
 
 /* Radical inverse of a in `base` (a prime), as the integer digits reversed / scale
  * (scale = base^k): the nested (Owen-style) scrambling of pbrt-v4's

@@ -47,16 +47,15 @@ typedef struct {
     uint pixel;
     uint sample;
     uint seed;
-    uint dimension; /* next dimension to hand out */
-    uint type;      /* SAMPLER_* */
-    uint spp;       /* size of the point sets (the render's samples per pixel) */
+    uint dimension;  /* next dimension to hand out */
+    uint type;       /* SAMPLER_* */
+    uint spp;        /* size of the point sets (the render's samples per pixel) */
     uint sample_key; /* hash of (seed, pixel, sample): every draw extends it by the dimension */
     uint set_key;    /* hash of (seed, pixel): the point sets' seeds extend it */
 } SamplerState;
 
 /* A sampler state for (pixel, sample) starting at `dimension`. */
-static inline SamplerState sampler_start_typed(uint type, uint spp, uint pixel, uint sample, uint seed,
-                                               uint dimension)
+static inline SamplerState sampler_start_typed(uint type, uint spp, uint pixel, uint sample, uint seed, uint dimension)
 {
     SamplerState s;
     s.pixel = pixel;
@@ -167,9 +166,9 @@ static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
     }
     case SAMPLER_SOBOL: {
         uint index = permute_element(s->sample, n, hash_combine(set, 0u));
-        return (float2)(
-            u32_to_unit_float(owen_scramble_reversed_u32(index, hash_combine(set, 1u))),
-            u32_to_unit_float(owen_scramble_reversed_u32(sobol_dimension1_reversed_u32(index), hash_combine(set, 2u))));
+        return (float2)(u32_to_unit_float(owen_scramble_reversed_u32(index, hash_combine(set, 1u))),
+                        u32_to_unit_float(
+                            owen_scramble_reversed_u32(sobol_dimension1_reversed_u32(index), hash_combine(set, 2u))));
     }
     case SAMPLER_HAMMERSLEY: {
         uint index = permute_element(s->sample, n, hash_combine(set, 0u));

@@ -15,6 +15,7 @@
 
 /* sRGB (IEC 61966-2-1) decoding of the 8-bit value i, i / 255 -> linear, each entry the
  * exact value rounded to float (tested against the host's formula for all 256). */
+/* clang-format off */
 __constant float SRGB8_TO_LINEAR[256] = {
     0.0f, 0x1.3e4568p-12f, 0x1.3e4568p-11f, 0x1.dd681cp-11f, 0x1.3e4568p-10f, 0x1.8dd6c2p-10f,
     0x1.dd681cp-10f, 0x1.167cbap-9f, 0x1.3e4568p-9f, 0x1.660e14p-9f, 0x1.8dd6c2p-9f, 0x1.b6a31cp-9f,
@@ -60,6 +61,7 @@ __constant float SRGB8_TO_LINEAR[256] = {
     0x1.d7d994p-1f, 0x1.dc377ep-1f, 0x1.e09b6ap-1f, 0x1.e5055cp-1f, 0x1.e97556p-1f, 0x1.edeb5cp-1f,
     0x1.f2676cp-1f, 0x1.f6e98cp-1f, 0x1.fb71bcp-1f, 0x1p+0f
 };
+/* clang-format on */
 
 /* Texel (x, y) of an image (indices already wrapped), RGBA in [0, 1], RGB decoded from
  * sRGB when asked. Alpha is always linear. */
@@ -114,8 +116,7 @@ static inline float4 texture_sample(const KernelData* kd, int view_index, float2
 }
 
 /* The view's texture coordinate at barycentrics (b1, b2) of a triangle. */
-static inline float2 triangle_texcoord(const KernelData* kd, const TextureView* view, int triangle, float b1,
-                                       float b2)
+static inline float2 triangle_texcoord(const KernelData* kd, const TextureView* view, int triangle, float b1, float b2)
 {
     TriangleTexcoords t = kd->texcoords[view->texcoord_base + (uint)triangle];
     float b0 = 1.0f - b1 - b2;

@@ -61,8 +61,8 @@ using std::fabs;
 using std::floor;
 using std::fmax;
 using std::fmin;
-using std::pow;
 using std::isfinite;
+using std::pow;
 using std::sqrt;
 template <class T>
 T clamp(T x, T lo, T hi)

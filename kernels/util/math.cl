@@ -8,7 +8,7 @@
 #define ONE_MINUS_EPSILON 0x1.fffffep-1f
 
 /* pbrt's gamma(n): bound on the relative error of n chained float operations. */
-#define FLOAT_GAMMA(n) ((float)(n) * 0x1.0p-24f / (1.0f - (float)(n) * 0x1.0p-24f))
+#define FLOAT_GAMMA(n) ((float)(n)*0x1.0p-24f / (1.0f - (float)(n)*0x1.0p-24f))
 
 static inline float max3(float3 v)
 {

@@ -8,8 +8,8 @@
 static inline float sin_cos_small(float x, float* c)
 {
     float x2 = x * x;
-    *c = fma(fma(fma(fma(2.443315711809948e-5f, x2, -1.388731625493765e-3f), x2, 4.166664568298827e-2f), x2, -0.5f),
-             x2, 1.0f);
+    *c = fma(fma(fma(fma(2.443315711809948e-5f, x2, -1.388731625493765e-3f), x2, 4.166664568298827e-2f), x2, -0.5f), x2,
+             1.0f);
     return fma(fma(fma(-1.9515295891e-4f, x2, 8.3321608736e-3f), x2, -1.6666654611e-1f), x2 * x, x);
 }
 

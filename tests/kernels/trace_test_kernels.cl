@@ -8,8 +8,8 @@
 #include "sample/sampler.cl"
 
 __kernel void test_trace_closest(__global const float4* origins, __global const float4* dirs,
-                                 __global const BvhNode* nodes,
-                                 __global const Triangle* triangles, __global float4* out)
+                                 __global const BvhNode* nodes, __global const Triangle* triangles,
+                                 __global float4* out)
 {
     uint i = get_global_id(0);
     Hit h = bvh_trace(nodes, triangles, origins[i].xyz, dirs[i].xyz, INFINITY, false);
@@ -17,8 +17,7 @@ __kernel void test_trace_closest(__global const float4* origins, __global const 
 }
 
 __kernel void test_trace_brute_force(__global const float4* origins, __global const float4* dirs,
-                                     __global const Triangle* triangles, uint count,
-                                     __global float4* out)
+                                     __global const Triangle* triangles, uint count, __global float4* out)
 {
     uint i = get_global_id(0);
     RayTraversal r = ray_traversal_setup(origins[i].xyz, dirs[i].xyz);
@@ -38,9 +37,8 @@ __kernel void test_trace_brute_force(__global const float4* origins, __global co
     out[i] = (float4)(h.t, h.b1, h.b2, as_float(h.triangle));
 }
 
-__kernel void test_any_hit(__global const float4* origins, __global const float4* dirs,
-                           __global const BvhNode* nodes, __global const Triangle* triangles,
-                           float t_max, __global int* out)
+__kernel void test_any_hit(__global const float4* origins, __global const float4* dirs, __global const BvhNode* nodes,
+                           __global const Triangle* triangles, float t_max, __global int* out)
 {
     uint i = get_global_id(0);
     out[i] = bvh_trace(nodes, triangles, origins[i].xyz, dirs[i].xyz, t_max, true).triangle >= 0;
@@ -49,9 +47,8 @@ __kernel void test_any_hit(__global const float4* origins, __global const float4
 /* Spawns one ray per work-item from a random point on a random triangle (through the
  * kernels' own barycentric_point and offset_ray_origin), in a random direction on either
  * side, and returns the triangle it hits first (-1: none). */
-__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles,
-                                    uint count, uint seed, __global int* hit_triangle,
-                                    __global int* source_triangle)
+__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles, uint count,
+                                    uint seed, __global int* hit_triangle, __global int* source_triangle)
 {
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);

@@ -85,8 +85,8 @@ std::vector<MaterialSpec> reflective_materials()
     tinted.specular_color = {2.0f, 1.0f, 0.2f};
     MaterialSpec half = conductor(0.7f, {0.9f, 0.5f, 0.1f});
     half.metallic = 0.3f;
-    return {lambertian({0.5f, 0.6f, 0.7f}), conductor(0.2f), conductor(0.8f, {0.9f, 0.6f, 0.3f}), plastic, tinted,
-            half};
+    return {
+        lambertian({0.5f, 0.6f, 0.7f}), conductor(0.2f), conductor(0.8f, {0.9f, 0.6f, 0.3f}), plastic, tinted, half};
 }
 
 glm::dvec3 incident(double c)
@@ -102,8 +102,8 @@ const cl::Buffer& layer_buffer()
     return b;
 }
 
-Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face,
-                    std::size_t n, std::uint32_t seed, glm::dvec3 normal)
+Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face, std::size_t n,
+                    std::uint32_t seed, glm::dvec3 normal)
 {
     ClDevice& dev = test::test_device();
     cl::Buffer dir_pdf(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));

@@ -48,8 +48,8 @@ struct Samples {
 
 // test_bsdf_sample from wo, n samples: (direction, pdf), weight and bsdf_eval (f_cos, pdf)
 // of each.
-Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face,
-                    std::size_t n, std::uint32_t seed = 17, glm::dvec3 normal = {0, 0, 1});
+Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face, std::size_t n,
+                    std::uint32_t seed = 17, glm::dvec3 normal = {0, 0, 1});
 
 // bsdf_eval (f_cos, pdf) for each pair.
 std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m, bool front_face,

@@ -35,10 +35,10 @@ struct Grid {
 template <class F>
 double gauss5(const F& f, double a, double b)
 {
-    static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
-                                    0.5384693101056831, 0.9061798459386640};
-    static constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                    0.4786286704993665, 0.2369268850561891};
+    static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                                    0.9061798459386640};
+    static constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                    0.2369268850561891};
     double c = 0.5 * (a + b), h = 0.5 * (b - a), s = 0.0;
     for (int i = 0; i < 5; ++i)
         s += w[i] * f(c + h * x[i]);
@@ -53,8 +53,7 @@ double adaptive(const F& f, double a, double b, double whole, double tol, int de
     double m = 0.5 * (a + b), left = gauss5(f, a, m), right = gauss5(f, m, b);
     if (depth == 0 || std::abs(left + right - whole) <= tol)
         return left + right;
-    return adaptive(f, a, m, left, 0.5 * tol, depth - 1) +
-           adaptive(f, m, b, right, 0.5 * tol, depth - 1);
+    return adaptive(f, a, m, left, 0.5 * tol, depth - 1) + adaptive(f, m, b, right, 0.5 * tol, depth - 1);
 }
 
 // Starts from a few panels so that a lobe narrower than the cell is less likely to fall
@@ -74,8 +73,7 @@ double integrate(const F& f, double a, double b, double tol)
 // Integral of the pdf over one cell, in (cos theta, phi) where d(solid angle) = du dphi.
 // tol bounds the error of the result; each inner phi integral gets a tenth of the
 // matching share so its error does not drive the outer refinement.
-double integrate_cell(const std::function<double(const glm::dvec3&)>& pdf, const Grid& g, int t,
-                      int p, double tol)
+double integrate_cell(const std::function<double(const glm::dvec3&)>& pdf, const Grid& g, int t, int p, double tol)
 {
     double u0 = std::cos((t + 1) * g.dtheta()), u1 = std::cos(t * g.dtheta());
     double phi0 = p * g.dphi(), phi1 = (p + 1) * g.dphi();
@@ -99,8 +97,7 @@ std::string cell_name(const Grid& g, int cell)
 }
 
 // The cells with the largest (obs - exp)^2 / exp, one per line.
-std::string worst_cells(const Grid& g, const std::vector<double>& observed,
-                        const std::vector<double>& expected)
+std::string worst_cells(const Grid& g, const std::vector<double>& observed, const std::vector<double>& expected)
 {
     std::vector<int> order(observed.size());
     std::iota(order.begin(), order.end(), 0);
@@ -113,8 +110,8 @@ std::string worst_cells(const Grid& g, const std::vector<double>& observed,
     for (std::size_t k = 0; k < std::min<std::size_t>(5, order.size()); ++k) {
         int i = order[k];
         char buf[256];
-        std::snprintf(buf, sizeof buf, "\n    %s: %.0f vs %.1f, (o-e)^2/e = %.2f", cell_name(g, i).c_str(),
-                      observed[i], expected[i], term(i));
+        std::snprintf(buf, sizeof buf, "\n    %s: %.0f vs %.1f, (o-e)^2/e = %.2f", cell_name(g, i).c_str(), observed[i],
+                      expected[i], term(i));
         out += buf;
     }
     return out;
@@ -128,8 +125,8 @@ std::string ChiSquareResult::summary() const
     std::snprintf(buf, sizeof buf,
                   "chi-square %s: p = %.4g (needs >= %.4g), X^2 = %.2f, dof = %d, pdf integral = %.6f, "
                   "samples used %zu, discarded %zu, moved off zero-pdf cells %zu",
-                  passed ? "passed" : "FAILED", p_value, threshold, statistic, degrees_of_freedom,
-                  pdf_integral, samples_used, samples_discarded, samples_moved);
+                  passed ? "passed" : "FAILED", p_value, threshold, statistic, degrees_of_freedom, pdf_integral,
+                  samples_used, samples_discarded, samples_moved);
     std::string s = buf;
     if (!diagnosis.empty())
         s += "\n" + diagnosis;
@@ -137,8 +134,8 @@ std::string ChiSquareResult::summary() const
 }
 
 ChiSquareResult chi_square_directions(const std::vector<glm::dvec3>& sample_directions,
-                                      const std::function<double(const glm::dvec3&)>& pdf,
-                                      int theta_res, int phi_res, double alpha, int test_count)
+                                      const std::function<double(const glm::dvec3&)>& pdf, int theta_res, int phi_res,
+                                      double alpha, int test_count)
 {
     if (theta_res < 1 || phi_res < 1 || !(alpha > 0.0 && alpha < 1.0) || test_count < 1)
         throw std::invalid_argument("chi_square_directions: bad resolution, alpha or test_count");
@@ -212,8 +209,8 @@ ChiSquareResult chi_square_directions(const std::vector<glm::dvec3>& sample_dire
         }
     if (empty_hit >= 0) {
         char buf[128];
-        std::snprintf(buf, sizeof buf, "%.0f samples fell where the pdf integrates to 0, %.0f of them in ",
-                      empty_total, observed[empty_hit]);
+        std::snprintf(buf, sizeof buf, "%.0f samples fell where the pdf integrates to 0, %.0f of them in ", empty_total,
+                      observed[empty_hit]);
         r.diagnosis = buf + cell_name(g, empty_hit);
         return r;
     }

@@ -34,9 +34,8 @@ struct ChiSquareResult {
 // theta is measured from +Z, phi = atan2(y, x). test_count: how many chi-square tests the
 // caller runs in total, for the Sidak correction of alpha.
 ChiSquareResult chi_square_directions(const std::vector<glm::dvec3>& sample_directions,
-                                      const std::function<double(const glm::dvec3&)>& pdf,
-                                      int theta_res = 10, int phi_res = 20, double alpha = 0.01,
-                                      int test_count = 1);
+                                      const std::function<double(const glm::dvec3&)>& pdf, int theta_res = 10,
+                                      int phi_res = 20, double alpha = 0.01, int test_count = 1);
 
 // Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a).
 double regularized_gamma_q(double a, double x);

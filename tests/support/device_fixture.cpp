@@ -24,8 +24,7 @@ std::string read_text_file(const std::string& path)
     return ss.str();
 }
 
-cl::Program build_test_program(const std::string& file, std::uint32_t features,
-                               const std::vector<KernelPatch>& patches)
+cl::Program build_test_program(const std::string& file, std::uint32_t features, const std::vector<KernelPatch>& patches)
 {
     ProgramSource source;
     source.root = "tests/kernels/" + file;
@@ -42,8 +41,8 @@ std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, cons
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer radiance_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_light_sample");
-    bind_kernel(k, a, static_cast<cl_uint>(arrays.lights.size()), pcl_float4{ref.x, ref.y, ref.z, 0.0f}, seed,
-                     out, radiance_out);
+    bind_kernel(k, a, static_cast<cl_uint>(arrays.lights.size()), pcl_float4{ref.x, ref.y, ref.z, 0.0f}, seed, out,
+                radiance_out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     if (radiance)
         *radiance = read_back<pcl_float4>(radiance_out, n);

@@ -26,6 +26,9 @@ inline std::string error_of(const std::function<void()>& f)
     return "";
 }
 
-inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+inline bool contains(const std::string& s, const std::string& part)
+{
+    return s.find(part) != std::string::npos;
+}
 
 } // namespace pathcl::test

@@ -177,7 +177,8 @@ int GltfBuilder::add_light_node(int light, const std::vector<double>& translatio
     return node;
 }
 
-int GltfBuilder::add_camera_node(int camera, const std::vector<double>& translation, const std::vector<double>& rotation)
+int GltfBuilder::add_camera_node(int camera, const std::vector<double>& translation,
+                                 const std::vector<double>& rotation)
 {
     int node = add_node(-1, {}, translation, rotation);
     model.nodes[static_cast<std::size_t>(node)].camera = camera;
@@ -190,16 +191,15 @@ void GltfBuilder::add_root(int node)
     model.scenes[0].nodes.push_back(node);
 }
 
-int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward,
-                                 bool smooth_normals)
+int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward, bool smooth_normals)
 {
     std::vector<glm::vec3> p;
     for (int i = 0; i <= stacks; ++i) {
         double theta = std::numbers::pi * i / stacks;
         for (int j = 0; j < slices; ++j) {
             double phi = 2.0 * std::numbers::pi * j / slices;
-            p.emplace_back(glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                      std::sin(theta) * std::sin(phi)) * radius);
+            p.emplace_back(
+                glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)) * radius);
         }
     }
     std::vector<std::uint32_t> idx;

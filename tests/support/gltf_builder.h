@@ -45,9 +45,8 @@ public:
     // A mesh with one primitive. indices < 0: non-indexed. normals < 0: none.
     int add_mesh(int positions, int indices, int material, int mode = 4, int normals = -1);
     // A node; returns its index. Root nodes must also be passed to add_root.
-    int add_node(int mesh, const std::vector<double>& matrix = {},
-                 const std::vector<double>& translation = {}, const std::vector<double>& rotation = {},
-                 const std::vector<double>& scale = {});
+    int add_node(int mesh, const std::vector<double>& matrix = {}, const std::vector<double>& translation = {},
+                 const std::vector<double>& rotation = {}, const std::vector<double>& scale = {});
     int add_perspective_camera(double yfov);
     // A KHR_lights_punctual light ("point", "spot", "directional"); returns its index.
     int add_light(const std::string& type, const glm::vec3& color, double intensity, double inner_cone = 0.0,
@@ -60,8 +59,7 @@ public:
     // A UV sphere (stacks x slices) of the given radius; normals point inward when
     // `inward` (the front face then faces the centre). smooth_normals: a NORMAL
     // attribute with the sphere's own (radial) normals, for smooth shading.
-    int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward,
-                        bool smooth_normals = false);
+    int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward, bool smooth_normals = false);
 
     // Textures. Images are stored as PNG bytes in a bufferView (as in a .glb), encoded by
     // OpenImageIO with alpha kept unassociated.

@@ -34,7 +34,10 @@ inline Scene import(const GltfBuilder& b, const std::string& source = "test.gltf
     return in_world_space(import_gltf(b.model, source));
 }
 
-inline glm::dvec3 d3(const glm::vec3& v) { return glm::dvec3(v); }
+inline glm::dvec3 d3(const glm::vec3& v)
+{
+    return glm::dvec3(v);
+}
 
 // |a - b| <= rel * max(1, |b|), componentwise on the vector length.
 inline bool near_rel(const glm::dvec3& a, const glm::dvec3& b, double rel)

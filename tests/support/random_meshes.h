@@ -36,8 +36,8 @@ inline std::vector<glm::vec3> jittered_sphere(int stacks, int slices, std::uint3
             float theta = 3.14159265f * static_cast<float>(i) / static_cast<float>(stacks);
             float phi = 6.2831853f * static_cast<float>(j) / static_cast<float>(slices);
             float r = 1.0f + ((i == 0 || i == stacks) ? 0.0f : jitter(rng));
-            grid.push_back(r * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                         std::sin(theta) * std::sin(phi)));
+            grid.push_back(
+                r * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
         }
     // Poles: one shared vertex each, so the mesh is closed.
     for (int j = 1; j < slices; ++j) {

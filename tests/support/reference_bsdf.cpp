@@ -100,7 +100,8 @@ static double table_at(const std::vector<float>& t, int offset, int cols, double
     int r0 = std::min(static_cast<int>(row), rows - 2), c0 = std::min(static_cast<int>(col), cols - 2);
     double fr = row - r0, fc = col - c0;
     auto v = [&](int r, int c) { return static_cast<double>(t[static_cast<std::size_t>(offset + r * cols + c)]); };
-    return (1 - fr) * ((1 - fc) * v(r0, c0) + fc * v(r0, c0 + 1)) + fr * ((1 - fc) * v(r0 + 1, c0) + fc * v(r0 + 1, c0 + 1));
+    return (1 - fr) * ((1 - fc) * v(r0, c0) + fc * v(r0, c0 + 1)) +
+           fr * ((1 - fc) * v(r0 + 1, c0) + fc * v(r0 + 1, c0 + 1));
 }
 
 static glm::dvec3 f0_colour(const ReferenceBsdf& b)
@@ -271,12 +272,14 @@ glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) cons
             glm::dvec3 norm = glm::dvec3(1.0) - layer_average();
             for (int ch = 0; ch < 3; ++ch)
                 if (norm[ch] > 1e-6)
-                    f[ch] = base_color[ch] * (1.0 - metallic) * (1.0 - transmission) / kPi * (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) *
-                            (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] * wi.z;
+                    f[ch] = base_color[ch] * (1.0 - metallic) * (1.0 - transmission) / kPi *
+                            (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) * (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] *
+                            wi.z;
         }
         f += multiple_scattering_f_cos(std::max(wo.z, 0.0), wi.z);
         if (rough() && wo.z > 0.0)
-            f += specular_reflectance(c, wo.z) * (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+            f += specular_reflectance(c, wo.z) *
+                 (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
         return f;
     }
     if (wi.z == 0.0 || !rough() || wo.z <= 0.0 || transmission <= 0.0)
@@ -297,7 +300,8 @@ glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) cons
     if (dn <= 0.0 || di >= 0.0)
         return glm::dvec3(0.0);
     double denom = (di + dn / eta) * (di + dn / eta);
-    double ft = ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) * std::abs(di * dn) / (wo.z * denom * eta * eta);
+    double ft =
+        ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) * std::abs(di * dn) / (wo.z * denom * eta * eta);
     return transmittance(dn, wo.z) * ft;
 }
 

@@ -51,7 +51,6 @@ private:
     mutable Lobes cached_lobes_{};
 
 public:
-
     // Reflectance of the specular reflection lobe and transmittance weight of the
     // transmission lobe (without the 1/eta^2 radiance scaling) at cos(wo, microfacet),
     // with the rough interface's energy compensation for wo at cos_o.

@@ -52,8 +52,8 @@ std::vector<glm::vec2> points(SamplerType sampler, std::uint32_t spp, const std:
         if (!(x >= 0.0f && x < 1.0f))
             return ::testing::AssertionFailure() << "value " << x << " outside [0, 1)";
         if (++count[stratum(x, n)] > 1)
-            return ::testing::AssertionFailure() << "two points in stratum " << stratum(x, n) << " of " << n
-                                                 << " (coordinate " << c << ")";
+            return ::testing::AssertionFailure()
+                   << "two points in stratum " << stratum(x, n) << " of " << n << " (coordinate " << c << ")";
     }
     return ::testing::AssertionSuccess();
 }
@@ -64,8 +64,8 @@ std::vector<glm::vec2> points(SamplerType sampler, std::uint32_t spp, const std:
     for (std::uint32_t k = 0; k < n; ++k) {
         std::size_t cell = stratum(p[k].y, rows) * cols + stratum(p[k].x, cols);
         if (++count[cell] > 1)
-            return ::testing::AssertionFailure() << "two points in cell (" << cell % cols << ", " << cell / cols
-                                                 << ") of " << cols << "x" << rows;
+            return ::testing::AssertionFailure()
+                   << "two points in cell (" << cell % cols << ", " << cell / cols << ") of " << cols << "x" << rows;
     }
     return ::testing::AssertionSuccess();
 }
