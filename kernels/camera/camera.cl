@@ -2,6 +2,7 @@
  * camera. Camera samples fall uniformly inside their own pixel (box filter); the film
  * position takes the sampler's pair at DIM_PIXEL, the lens position the pair at DIM_LENS. */
 #include "features.h"
+#include "film/pixel.cl"
 #include "kernel_data.cl"
 #include "sample/dimensions.h"
 #include "sample/sampler.cl"
@@ -43,14 +44,14 @@ static inline Ray camera_generate_ray(const Camera* cam, float2 film_uv, float2 
 __kernel void generate_camera_rays(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
-    uint x = get_global_id(0);
-    uint y = get_global_id(1);
-    if (x >= frame.width || y >= frame.height)
+    uint2 xy;
+    uint pixel;
+    if (!frame_pixel(&frame, &xy, &pixel))
         return;
-    uint pixel = y * frame.width + x;
     SamplerState sampler = frame_sampler(&frame, pixel, DIM_PIXEL);
     float2 offset = sampler_get_2d(&sampler);
-    float2 film_uv = (float2)(((float)x + offset.x) / (float)frame.width, ((float)y + offset.y) / (float)frame.height);
+    float2 film_uv =
+        (float2)(((float)xy.x + offset.x) / (float)frame.width, ((float)xy.y + offset.y) / (float)frame.height);
     float2 lens_u = (float2)(0.0f);
 #ifdef PATHCL_HAS_THIN_LENS
     sampler.dimension = DIM_LENS;

@@ -11,6 +11,7 @@
 #include "bvh/traversal.cl"
 #include "features.h"
 #include "film/film.cl"
+#include "film/pixel.cl"
 #include "integrator/direct_light.cl"
 #include "integrator/path_state.cl"
 #include "integrator/shade_background.cl"
@@ -23,11 +24,10 @@
 __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
-    uint x = get_global_id(0);
-    uint y = get_global_id(1);
-    if (x >= frame.width || y >= frame.height)
+    uint2 xy;
+    uint pixel;
+    if (!frame_pixel(&frame, &xy, &pixel))
         return;
-    uint pixel = y * frame.width + x;
 
     PathState ps = path_state_start(kd.rays[pixel]);
     for (uint depth = 0;; ++depth) {

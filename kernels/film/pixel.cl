@@ -1,0 +1,13 @@
+/* Which pixel a work-item of a 2D image kernel renders: work-item (x, y) is pixel
+ * y * width + x; the global size is rounded up to whole work-groups, so the work-items
+ * past the image's edge have none. */
+#include "types.h"
+
+static inline bool frame_pixel(const FrameParams* frame, uint2* xy, uint* pixel)
+{
+    uint x = get_global_id(0);
+    uint y = get_global_id(1);
+    *xy = (uint2)(x, y);
+    *pixel = y * frame->width + x;
+    return x < frame->width && y < frame->height;
+}
