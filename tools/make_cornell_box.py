@@ -14,9 +14,12 @@ With --light KIND the ceiling light is replaced by a KHR_lights_punctual light o
 kind (point, sphere, spot, rect-spot, directional) and the ceiling is closed: one test scene per
 light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh). With
 --variant glass-mirror the tall block is an ideal mirror and the short block gives way
-to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf).
+to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf). With --variant dense the
+short block gives way to a displaced, flat-shaded white blob of 1,048,576 triangles: the
+million-triangle scene of the speed comparison (tools/compare_mitsuba.sh writes it; 32 MB,
+not committed).
 
-Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror] [OUT.gltf]
+Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror|dense] [OUT.gltf]
 """
 import base64, json, math, struct, sys
 
@@ -216,6 +219,19 @@ GLASS = {"name": "glass", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0,
                         "KHR_materials_volume": {"thicknessFactor": 0.2}}}
 GLASS_SPHERE = (185.0, 100.5, 169.0, 100.0)  # centre and radius, mm: 0.5 mm above the floor
 
+def blob_quads(cx, cy, cz, r, stacks=512, slices=1024):
+    """A sphere displaced by a few ridges (up to 9 % of r), as sphere_quads: stacks x slices
+    quads, 2 * stacks * slices triangles (the displacement keeps the pole rows from
+    collapsing). Detail smaller than a pixel at 256 x 256: a dense mesh's cost, not its looks."""
+    def p(i, j):
+        th, ph = math.pi * i / stacks, 2 * math.pi * j / slices
+        sin_th = 0.0 if i in (0, stacks) else math.sin(th)
+        rr = r * (1.0 + 0.06 * math.sin(9 * th) * math.cos(7 * ph) + 0.03 * math.sin(23 * th + 3 * ph))
+        return (cx + rr * sin_th * math.cos(ph), cy + rr * math.cos(th), cz + rr * sin_th * math.sin(ph))
+    row = [[p(i, j) for j in range(slices + 1)] for i in range(stacks + 1)]
+    return [[row[i][j], row[i][j + 1], row[i + 1][j + 1], row[i + 1][j]]
+            for i in range(stacks) for j in range(slices)]
+
 def main():
     args = sys.argv[1:]
     light_kind, variant = None, None
@@ -226,8 +242,8 @@ def main():
                 sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
         else:
             variant = args[1]
-            if variant != "glass-mirror":
-                sys.exit("make_cornell_box.py: --variant must be glass-mirror")
+            if variant not in ("glass-mirror", "dense"):
+                sys.exit("make_cornell_box.py: --variant must be glass-mirror or dense")
         args = args[2:]
     name = "cornell-box" + (f"-{light_kind}" if light_kind else "") + (f"-{variant}" if variant else "")
     out = args[0] if args else f"scenes/{name}.gltf"
@@ -258,6 +274,9 @@ def main():
         b.add_mesh("glass_sphere", quads, glass_m, normals=sphere_normals(quads, *GLASS_SPHERE[:3]))
         b.add_mesh("tall_block_mirror", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], mirror_m)
         extensions_used += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"]
+    elif variant == "dense":
+        b.add_mesh("blob", blob_quads(*GLASS_SPHERE), WHITE)
+        b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
     else:
         b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], WHITE)
         b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
