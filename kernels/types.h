@@ -266,11 +266,12 @@ typedef struct {
     pcl_uint max_bounces;
     pcl_uint light_count;
     pcl_uint strategy;
-    pcl_uint sphere_count; /* lights[0 .. sphere_count) are spheres */
-    pcl_int environment;   /* index of the environment light, -1 if none */
-    pcl_uint sampler;      /* SAMPLER_* */
-    pcl_uint spp;          /* samples per pixel of the render (the samplers' set size) */
-    pcl_uint pad0;
+    pcl_uint sphere_count;    /* lights[0 .. sphere_count) are spheres */
+    pcl_int environment;      /* index of the environment light, -1 if none */
+    pcl_uint sampler;         /* SAMPLER_* */
+    pcl_uint spp;             /* samples per pixel of the render (the samplers' set size) */
+    pcl_uint stratified_dims; /* decisions at dimensions below this use the sampler; above,
+                                 independent numbers (sample/sampler.cl) */
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

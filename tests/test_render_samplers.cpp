@@ -44,23 +44,28 @@ TEST(SamplerRender, EverySamplerRendersTheCornellBoxReference)
     // render fails 0.76 % of its pixels against the 1 % limit (heavy tails), pooled
     // 0.05 %. Broken variant seen to fail: a scramble and permutation seed without the
     // dimension (every decision of a sample drawing the same point: correlated light
-    // pick, light point and BSDF direction), for every stratified sampler.
+    // pick, light point and BSDF direction), for every stratified sampler. Each sampler
+    // renders twice: stratified in every bounce, and (the default) in the first only.
     Scene scene = load_gltf(kSource + "/scenes/cornell-box.gltf");
     Image ref = read_image(kSource + "/tests/references/cornell-box-64.exr");
-    for (const auto& [sampler_label, sampler] : sampler_names()) {
-        RenderOptions o = test::independent_options();
-        o.width = o.height = 64;
-        o.spp = 64;
-        o.max_bounces = 8;
-        o.seed = 7;
-        o.sampler = sampler;
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u);
-        EXPECT_EQ(r.image.spp, 64u);
-        CompareReport cmp = compare_images(r.image, ref);
-        std::cout << sampler_name(sampler) << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << sampler_name(sampler) << "\n" << cmp.summary();
-    }
+    for (const auto& [sampler_label, sampler] : sampler_names())
+        for (std::uint32_t stratified_bounces : {8u, 1u}) {
+            RenderOptions o = test::independent_options();
+            o.width = o.height = 64;
+            o.spp = 64;
+            o.max_bounces = 8;
+            o.seed = 7;
+            o.sampler = sampler;
+            o.stratified_bounces = stratified_bounces;
+            RenderResult r = render(scene, o);
+            EXPECT_EQ(r.stats.bad_samples, 0u);
+            EXPECT_EQ(r.image.spp, 64u);
+            CompareReport cmp = compare_images(r.image, ref);
+            std::cout << sampler_name(sampler) << ", stratified bounces " << stratified_bounces << "\n"
+                      << cmp.summary();
+            EXPECT_TRUE(cmp.passed) << sampler_name(sampler) << ", stratified bounces " << stratified_bounces << "\n"
+                                    << cmp.summary();
+        }
 }
 
 TEST(SamplerRender, RoundedSppIsWhatTheImageRecords)

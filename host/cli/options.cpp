@@ -62,6 +62,11 @@ void add_render_options(CLI::App* command, RenderOptions& options, int& device)
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
     add_sampler_option(command, options.sampler, sampler_name(options.sampler));
+    command
+        ->add_option("--stratified-bounces", options.stratified_bounces,
+                     "the camera's decisions and those of the first N bounces take the sampler's stratified sets, "
+                     "deeper ones independent numbers (any N >= --max-bounces: all)")
+        ->capture_default_str();
     command->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
 }
 

@@ -46,6 +46,10 @@ struct RenderOptions {
     // sampler's RMSE for about 1.2 times the time per sample (README). spp is rounded as
     // sampler_spp() says.
     SamplerType sampler = SamplerType::Sobol;
+    // The decisions of the camera and of the first stratified_bounces bounces take the
+    // sampler's stratified sets; deeper bounces take independent numbers (cheaper, and
+    // nearly all of stratification's gain is in the first bounce; README "Samplers").
+    std::uint32_t stratified_bounces = 1;
     // Rough microfacets without multiple-scattering compensation (pbrt's and Mitsuba's
     // model, for cross-checks).
     bool single_scattering = false;

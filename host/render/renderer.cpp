@@ -9,6 +9,7 @@
 #include "render/device_arrays.h"
 #include "render/film.h"
 #include "render/kernel_features.h"
+#include "sample/dimensions.h"
 #include "sampling/samplers.h"
 #include "scene/render_space.h"
 
@@ -110,6 +111,10 @@ struct Renderer::Impl {
         frame.environment = compiled.environment_light;
         frame.sampler = static_cast<pcl_uint>(opt.sampler);
         frame.spp = spp;
+        // DIM_PATH_START + bounces * DIMS_PER_BOUNCE, saturated: "all bounces" is any
+        // number at least max_bounces.
+        std::uint64_t dims = DIM_PATH_START + static_cast<std::uint64_t>(opt.stratified_bounces) * DIMS_PER_BOUNCE;
+        frame.stratified_dims = static_cast<pcl_uint>(std::min<std::uint64_t>(dims, 0xffffffffu));
     }
 
     std::unique_ptr<DeviceRender> open(int index)

@@ -38,10 +38,11 @@ static inline void shade_background(const KernelData* kd, const FrameParams* fra
     if (frame->environment >= 0) {
         Light e = kd->lights[frame->environment];
         float pmf = kd->light_distribution[frame->environment].pmf;
+        uint2 texel = environment_texel(&e.data.environment, ps->dir);
         float w = ps->prev_delta ? 1.0f
                                  : bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf,
-                                                   environment_pdf(kd, &e.data.environment, pmf, ps->dir));
-        ps->radiance += ps->beta * environment_radiance(kd, &e.data.environment, ps->dir) * w;
+                                                   environment_pdf(kd, &e.data.environment, pmf, texel, ps->dir));
+        ps->radiance += ps->beta * environment_radiance(kd, &e.data.environment, texel) * w;
     }
 #endif
 }

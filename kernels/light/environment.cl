@@ -5,6 +5,7 @@
  * luminance x sin theta, built by host/render/compile_environment.cpp). */
 #include "features.h"
 #include "kernel_data.cl"
+#include "util/atan.cl"
 #include "util/math.cl"
 #include "util/sincos.cl"
 
@@ -42,30 +43,31 @@ static inline float3 environment_from_world(const EnvironmentLight* env, float3 
     return (float3)(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
 }
 
-/* The texel a world direction falls in. */
+/* The texel a world direction falls in: u = phi / 2 pi from atan2(x, -z), v = theta / pi
+ * from atan2(sqrt(x^2 + z^2), y) (rather than acos(y): the same angle, one fast routine). */
 static inline uint2 environment_texel(const EnvironmentLight* env, float3 world_dir)
 {
     float3 d = environment_from_world(env, world_dir);
     uint w = env->width, h = env->height;
-    float u = atan2(d.x, -d.z) * (0.5f * INV_PI);
+    float u = atan2_fast(d.x, -d.z) * (0.5f * INV_PI);
     if (u < 0.0f)
         u += 1.0f;
-    float v = acos(clamp(d.y, -1.0f, 1.0f)) * INV_PI;
+    float v = atan2_fast(sqrt(d.x * d.x + d.z * d.z), d.y) * INV_PI;
     return (uint2)(min((uint)(u * (float)w), w - 1u), min((uint)(v * (float)h), h - 1u));
 }
 
-static inline float3 environment_radiance(const KernelData* kd, const EnvironmentLight* env, float3 world_dir)
+/* The radiance of texel t. */
+static inline float3 environment_radiance(const KernelData* kd, const EnvironmentLight* env, uint2 t)
 {
-    uint2 t = environment_texel(env, world_dir);
     return kd->env_texels[t.y * env->width + t.x].xyz;
 }
 
-/* Solid-angle pdf of light_sample choosing world_dir on the environment, selection pmf
- * included: pmf p(u, v) / (2 pi^2 sin theta). */
-static inline float environment_pdf(const KernelData* kd, const EnvironmentLight* env, float pmf, float3 world_dir)
+/* Solid-angle pdf of light_sample choosing world_dir, which falls in texel t, on the
+ * environment, selection pmf included: pmf p(u, v) / (2 pi^2 sin theta). */
+static inline float environment_pdf(const KernelData* kd, const EnvironmentLight* env, float pmf, uint2 t,
+                                    float3 world_dir)
 {
     uint w = env->width, h = env->height;
-    uint2 t = environment_texel(env, world_dir);
     float sin_theta = sqrt(fmax(0.0f, 1.0f - world_dir.y * world_dir.y));
     if (!(sin_theta > 0.0f))
         return 0.0f;

@@ -47,11 +47,12 @@ typedef struct {
     uint pixel;
     uint sample;
     uint seed;
-    uint dimension;  /* next dimension to hand out */
-    uint type;       /* SAMPLER_* */
-    uint spp;        /* size of the point sets (the render's samples per pixel) */
-    uint sample_key; /* hash of (seed, pixel, sample): every draw extends it by the dimension */
-    uint set_key;    /* hash of (seed, pixel): the point sets' seeds extend it */
+    uint dimension;       /* next dimension to hand out */
+    uint type;            /* SAMPLER_* */
+    uint spp;             /* size of the point sets (the render's samples per pixel) */
+    uint sample_key;      /* hash of (seed, pixel, sample): every draw extends it by the dimension */
+    uint set_key;         /* hash of (seed, pixel): the point sets' seeds extend it */
+    uint stratified_dims; /* decisions at dimensions >= this take independent numbers */
 } SamplerState;
 
 /* A sampler state for (pixel, sample) starting at `dimension`. */
@@ -70,6 +71,7 @@ static inline SamplerState sampler_start_typed(uint type, uint spp, uint pixel, 
      * by hash_combine(hash_combine(set_key, d), k), k picking one of several. */
     s.sample_key = hash_combine(hash_combine(hash_u32(seed), pixel), sample);
     s.set_key = hash_combine(hash_u32(seed ^ 0x5bd1e995u), pixel);
+    s.stratified_dims = 0xffffffffu;
     return s;
 }
 
@@ -80,10 +82,18 @@ static inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uin
     return sampler_start_typed(SAMPLER_INDEPENDENT, 1u, pixel, sample, seed, dimension);
 }
 
-/* The sampler a render pass uses (frame->sampler, frame->spp, frame->sample_index). */
+/* The sampler a render pass uses (frame->sampler, frame->spp, frame->sample_index): the
+ * decisions at dimensions below frame->stratified_dims (the camera's and those of the
+ * first bounces) take the sampler's stratified sets, the deeper ones independent numbers.
+ * Nearly all of a stratified sampler's gain is in the first bounce's decisions (direct
+ * light at the first hit), while every stratified decision costs about six times an
+ * independent one (README "Samplers"). */
 static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, uint dimension)
 {
-    return sampler_start_typed(frame->sampler, frame->spp, pixel, frame->sample_index, frame->seed, dimension);
+    SamplerState s =
+        sampler_start_typed(frame->sampler, frame->spp, pixel, frame->sample_index, frame->seed, dimension);
+    s.stratified_dims = frame->stratified_dims;
+    return s;
 }
 
 /* The independent sampler's pair at (dim, dim + 1): also the jitter inside a stratum. */
@@ -188,7 +198,7 @@ static inline float sampler_get_1d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 1u;
-    if (s->type == SAMPLER_INDEPENDENT) /* the common case, kept small enough to inline */
+    if (s->type == SAMPLER_INDEPENDENT || dim >= s->stratified_dims) /* kept small enough to inline */
         return u32_to_unit_float(hash_combine(s->sample_key, dim));
     return sampler_value_1d(s, dim);
 }
@@ -198,7 +208,7 @@ static inline float2 sampler_get_2d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 2u;
-    if (s->type == SAMPLER_INDEPENDENT)
+    if (s->type == SAMPLER_INDEPENDENT || dim >= s->stratified_dims)
         return (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
                         u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));
     return sampler_value_2d(s, dim);

@@ -1,7 +1,9 @@
 /* Test kernels over the samplers (kernels/sample/) and the warps' sine and cosine; the
  * sampler_points kernel the host reads point sets through comes with its file. */
 #include "sample/halton.cl"
+#include "sample/sampler.cl"
 #include "sample/sampler_points.cl"
+#include "sample/sobol.cl"
 #include "util/math.cl"
 #include "util/sincos.cl"
 
@@ -29,4 +31,20 @@ __kernel void test_sin_cos(__global const float* in, uint turns, __global float2
     out[i] = (float2)(s, c);
     float bc, bs = sincos(turns ? 2.0f * PI_F * x : x, &bc);
     builtin[i] = (float2)(bs, bc);
+}
+
+/* Sobol' dimension 1 in reversed bit order, for the test against its definition. */
+__kernel void test_sobol_dimension1(__global const uint* in, __global uint* out)
+{
+    uint i = get_global_id(0);
+    out[i] = sobol_dimension1_reversed_u32(in[i]);
+}
+
+/* The 2D decision at `dim` of every pixel (one work-item each) through frame_sampler, as a
+ * render pass draws it. */
+__kernel void test_frame_sampler(FrameParams frame, uint dim, __global float2* out)
+{
+    uint pixel = get_global_id(0);
+    SamplerState s = frame_sampler(&frame, pixel, dim);
+    out[pixel] = sampler_get_2d(&s);
 }
