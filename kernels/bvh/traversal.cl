@@ -48,6 +48,38 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
     float stack_entry[BVH_STACK_SIZE];
     int sp = 0;
     int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
+    if (any_hit) {
+        /* Any hit ends the search: no order among the children, no entry distances. */
+        for (;;) {
+            if (cur.y > 0) {
+                for (int i = cur.x; i < cur.x + cur.y; ++i) {
+                    float t, b1, b2;
+                    if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
+                        hit.t = t;
+                        hit.b1 = b1;
+                        hit.b2 = b2;
+                        hit.triangle = i;
+                        return hit;
+                    }
+                }
+            } else {
+                BvhNode node = nodes[cur.x];
+                /* An empty slot's inverted box passes the slab test: its index (-1) tells. */
+                int4 enter = isnotequal(ray_box_entry4(&r, &node, hit.t), (float4)(INFINITY)) & (node.index >= 0);
+                if (enter.x)
+                    stack[sp++] = (int2)(node.index.x, node.count.x);
+                if (enter.y)
+                    stack[sp++] = (int2)(node.index.y, node.count.y);
+                if (enter.z)
+                    stack[sp++] = (int2)(node.index.z, node.count.z);
+                if (enter.w)
+                    stack[sp++] = (int2)(node.index.w, node.count.w);
+            }
+            if (sp == 0)
+                return hit;
+            cur = stack[--sp];
+        }
+    }
     for (;;) {
         if (cur.y > 0) {
             for (int i = cur.x; i < cur.x + cur.y; ++i) {
