@@ -78,7 +78,7 @@ static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* 
     float sign = (det < 0.0f) ? -1.0f : 1.0f;
     float det_abs = det * sign;
     float ts = t_scaled * sign;
-    if (ts <= 0.0f || ts >= t_max * det_abs)
+    if (!(ts > 0.0f) || !(ts < t_max * det_abs)) /* NaN (a degenerate ray) never hits */
         return false;
     float inv_det = 1.0f / det;
     float t = t_scaled * inv_det;
@@ -95,7 +95,7 @@ static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* 
     float delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     float max_e = fmax(fabs(u), fmax(fabs(v), fabs(w)));
     float delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
-    if (t <= delta_t)
+    if (!(t > delta_t))
         return false;
     *t_out = t;
     *b1_out = v * inv_det;
