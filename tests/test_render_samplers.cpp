@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -120,6 +121,32 @@ TEST_F(ToolRun, SamplesWritesAPlotWithItsSpectrum)
     in->close();
     ASSERT_EQ(run("samples --sampler halton --spp 10 --dims 0,7 -o points1d.png"), 0); // two 1D decisions
     EXPECT_TRUE(fs::exists(dir_ / "points1d.png"));
+}
+
+TEST_F(ToolRun, KernelBenchmarksPrintEveryStage)
+{
+    // `bench --kernels` on a tiny image: every stage is timed and printed with a positive
+    // rate (the figures themselves are for the README, not for a test). Broken variant
+    // seen to fail: the shadow-ray stage left out.
+    ASSERT_EQ(run("bench '" + kSource + "/scenes/cornell-box.gltf' --kernels --runs 1 --width 16 --height 16"), 0);
+    std::ifstream in(dir_ / "stdout.txt");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char* stage :
+         {"BVH build", "program build, cold", "program build, cached", "camera rays", "closest hit, primary rays",
+          "any hit, primary rays", "closest hit, diffuse bounce rays", "any hit, diffuse bounce rays",
+          "any hit, shadow rays", "path samples", "film accumulation"}) {
+        std::size_t at = text.find(stage);
+        ASSERT_NE(at, std::string::npos) << stage << " missing in:\n" << text;
+        std::istringstream line(text.substr(at + std::string(stage).size()));
+        double lo = 0.0;
+        line >> lo;
+        if (lo == 0.0) { // stage names with a parenthesis
+            line.clear();
+            line.ignore(64, ')');
+            line >> lo;
+        }
+        EXPECT_GT(lo, 0.0) << stage;
+    }
 }
 
 TEST_F(ToolRun, RayLogRaysStartOnTheLensAndMeetOnThePlaneOfFocus)

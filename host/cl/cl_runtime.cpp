@@ -139,7 +139,7 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
     std::string key = program_cache_key(identity, full_options, source);
 
     ProgramBuild result;
-    if (auto binary = program_cache_load(key)) {
+    if (auto binary = program_source.use_cache ? program_cache_load(key) : std::nullopt) {
         try {
             cl::Program::Binaries bins{*binary};
             cl::Program program(dev.context, {dev.device}, bins);

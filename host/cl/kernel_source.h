@@ -25,6 +25,7 @@ struct ProgramSource {
     std::string root = "program.cl"; // the kernel file to start from, or the name of `text`
     std::string text;                // when not empty: the root's own source (test kernels)
     std::vector<KernelPatch> patches;
+    bool use_cache = true; // false: compile even when pathcl's binary cache has it (cold timings)
 };
 
 // The assembled source; throws pathcl::Error for an include of a file that is not in the

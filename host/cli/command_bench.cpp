@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "render/kernel_bench.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 
@@ -16,12 +17,25 @@ struct BenchRequest {
     RenderOptions options;
     int device = 0;
     int runs = 5;
+    bool kernels = false;
 };
+
+int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
+{
+    std::printf("scene %s, %ux%u, %u bounces, sampler %s, device %d; %d runs (min / median / max)\n",
+                rq.scene_path.c_str(), rq.options.width, rq.options.height, rq.options.max_bounces,
+                sampler_name(rq.options.sampler).c_str(), rq.device, rq.runs);
+    for (const KernelFigure& f : bench_kernels(scene, rq.options, rq.runs))
+        std::printf("  %-36s %9.4g / %9.4g / %9.4g %s\n", f.stage.c_str(), f.min, f.median, f.max, f.unit.c_str());
+    return 0;
+}
 
 int run_bench(BenchRequest rq)
 {
     Scene scene = load_gltf(rq.scene_path);
     rq.options.devices = {rq.device};
+    if (rq.kernels)
+        return run_kernel_bench(scene, rq);
     Renderer renderer(scene, rq.options);
     const RenderStats& setup = renderer.setup_stats();
     std::printf("scene %s: %zu triangles, %zu BVH nodes | BVH build %.2f ms | kernel build %.2f s%s",
@@ -60,6 +74,9 @@ Command add_bench_command(CLI::App& app)
     bench->add_option("--runs", rq->runs, "timed runs after one warm-up")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
+    bench->add_flag("--kernels", rq->kernels,
+                    "time each stage on its own instead: camera rays, closest and any-hit traversal (primary, "
+                    "diffuse, shadow rays), path samples, film accumulation, BVH build, program build");
     return {bench, [rq] { return run_bench(*rq); }};
 }
 

@@ -102,19 +102,7 @@ struct Renderer::Impl {
         for (int index : opt.devices)
             devices.push_back(open(index));
 
-        frame.width = opt.width;
-        frame.height = opt.height;
-        frame.max_bounces = opt.max_bounces;
-        frame.light_count = static_cast<pcl_uint>(compiled.arrays.lights.size());
-        frame.strategy = static_cast<pcl_uint>(opt.strategy);
-        frame.sphere_count = static_cast<pcl_uint>(compiled.sphere_count);
-        frame.environment = compiled.environment_light;
-        frame.sampler = static_cast<pcl_uint>(opt.sampler);
-        frame.spp = spp;
-        // DIM_PATH_START + bounces * DIMS_PER_BOUNCE, saturated: "all bounces" is any
-        // number at least max_bounces.
-        std::uint64_t dims = DIM_PATH_START + static_cast<std::uint64_t>(opt.stratified_bounces) * DIMS_PER_BOUNCE;
-        frame.stratified_dims = static_cast<pcl_uint>(std::min<std::uint64_t>(dims, 0xffffffffu));
+        frame = frame_params(compiled, opt, spp);
     }
 
     std::unique_ptr<DeviceRender> open(int index)
@@ -257,6 +245,26 @@ RenderResult Renderer::render(std::uint32_t seed)
 RenderResult Renderer::render()
 {
     return impl_->render(impl_->options.seed);
+}
+
+FrameParams frame_params(const CompiledScene& compiled, const RenderOptions& opt, std::uint32_t spp)
+{
+    FrameParams frame{};
+    frame.width = opt.width;
+    frame.height = opt.height;
+    frame.seed = opt.seed;
+    frame.max_bounces = opt.max_bounces;
+    frame.light_count = static_cast<pcl_uint>(compiled.arrays.lights.size());
+    frame.strategy = static_cast<pcl_uint>(opt.strategy);
+    frame.sphere_count = static_cast<pcl_uint>(compiled.sphere_count);
+    frame.environment = compiled.environment_light;
+    frame.sampler = static_cast<pcl_uint>(opt.sampler);
+    frame.spp = spp;
+    // DIM_PATH_START + bounces * DIMS_PER_BOUNCE, saturated: "all bounces" is any number
+    // at least max_bounces.
+    std::uint64_t dims = DIM_PATH_START + static_cast<std::uint64_t>(opt.stratified_bounces) * DIMS_PER_BOUNCE;
+    frame.stratified_dims = static_cast<pcl_uint>(std::min<std::uint64_t>(dims, 0xffffffffu));
+    return frame;
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options)

@@ -18,6 +18,8 @@
 
 namespace pathcl {
 
+struct CompiledScene;
+
 struct RenderStats {
     std::size_t triangles = 0, lights = 0, bvh_nodes = 0;
     double bvh_build_seconds = 0.0;
@@ -66,6 +68,10 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+// The pass parameters of a render (all but the sample index) of `compiled` with `options`
+// and `spp` samples per pixel (after the sampler's rounding).
+FrameParams frame_params(const CompiledScene& compiled, const RenderOptions& options, std::uint32_t spp);
 
 // Renderer(scene, options).render(): a one-off render.
 RenderResult render(const Scene& scene, const RenderOptions& options);
