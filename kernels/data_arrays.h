@@ -34,6 +34,7 @@
 #define PATHCL_FILM_ARRAYS(X)                                                                                          \
     X(Ray, rays)             /* one camera ray per pixel */                                                            \
     X(FilmPixel, film)       /* per pixel */                                                                           \
-    X(pcl_uint, bad_samples) /* NaN/Inf samples rejected, per pixel */
+    X(pcl_uint, bad_samples) /* NaN/Inf samples rejected, per pixel */                                                 \
+    X(pcl_uint, active)      /* adaptive sampling: 0 = the pixel has converged (read if frame.adaptive) */
 
 #endif

@@ -258,7 +258,7 @@ typedef struct {
 #define STRATEGY_ONE_SAMPLE 2 /* one of {light, BSDF} per bounce, mixture-pdf weight */
 #define STRATEGY_MIS 3        /* both, power heuristic */
 
-/* Per-pass constants: 48 bytes. */
+/* Per-pass constants: 64 bytes. */
 typedef struct {
     pcl_uint width, height;
     pcl_uint sample_index; /* index of this pass's sample within the pixel */
@@ -272,6 +272,8 @@ typedef struct {
     pcl_uint spp;             /* samples per pixel of the render (the samplers' set size) */
     pcl_uint stratified_dims; /* decisions at dimensions below this use the sampler; above,
                                  independent numbers (sample/sampler.cl) */
+    pcl_uint adaptive;        /* 1: pixels whose film array `active` entry is 0 take no sample */
+    pcl_uint pad0, pad1, pad2;
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

@@ -23,6 +23,7 @@
 #include "sampling/samplers.h"
 #include "scene/gltf_loader.h"
 #include "support/test_options.h"
+#include "support/tool_run.h"
 #include "types.h"
 
 namespace pathcl {
@@ -85,30 +86,7 @@ TEST(SamplerRender, RoundedSppIsWhatTheImageRecords)
     EXPECT_EQ(render(scene, o).image.spp, 8u);
 }
 
-class ToolRun : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        dir_ = fs::temp_directory_path() / ("pathcl-tools-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override
-    {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    // Runs the binary with `args` in dir_; returns the exit status.
-    int run(const std::string& args) const
-    {
-        std::string cmd =
-            "cd '" + dir_.string() + "' && '" + std::string(PATHCL_BINARY) + "' " + args + " >stdout.txt 2>stderr.txt";
-        int rc = std::system(cmd.c_str());
-        return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    }
-    fs::path dir_;
-};
+using test::ToolRun;
 
 TEST_F(ToolRun, SamplesWritesAPlotWithItsSpectrum)
 {

@@ -139,6 +139,7 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
     std::string key = program_cache_key(identity, full_options, source);
 
     ProgramBuild result;
+    result.cache_key = key;
     if (auto binary = program_source.use_cache ? program_cache_load(key) : std::nullopt) {
         try {
             cl::Program::Binaries bins{*binary};
@@ -152,8 +153,14 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
     }
     if (!result.from_cache) {
         cl::Program program(dev.context, source);
+        // An uncached build is for a cold compile time: a define no code reads makes the
+        // driver's own cache (PoCL keeps one) miss too.
+        std::string build_options = full_options;
+        if (!program_source.use_cache)
+            build_options += " -DPATHCL_UNCACHED_BUILD=" +
+                             std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
         try {
-            program.build({dev.device}, full_options.c_str());
+            program.build({dev.device}, build_options.c_str());
         } catch (const cl::Error&) {
             std::string log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(dev.device);
             throw Error("kernel build failed on " + strip_nuls(dev.info.name) + ": " + first_error_line(log) +
@@ -162,7 +169,7 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
         result.program = program;
         try {
             auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
-            if (binaries.size() == 1)
+            if (binaries.size() == 1 && program_source.use_cache)
                 program_cache_store(key, binaries[0]);
         } catch (const cl::Error&) {
             // Some drivers cannot return binaries; caching is only an optimization.

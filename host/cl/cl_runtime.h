@@ -37,6 +37,7 @@ struct ProgramBuild {
     cl::Program program;
     double seconds = 0.0;    // wall time to get a ready program (compile or cache load)
     bool from_cache = false; // loaded from pathcl's binary cache
+    std::string cache_key;   // its key in that cache (host/cl/program_cache.h)
 };
 
 // Builds the program assembled from `source` (by default the render program,

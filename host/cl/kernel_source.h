@@ -25,7 +25,9 @@ struct ProgramSource {
     std::string root = "program.cl"; // the kernel file to start from, or the name of `text`
     std::string text;                // when not empty: the root's own source (test kernels)
     std::vector<KernelPatch> patches;
-    bool use_cache = true; // false: compile even when pathcl's binary cache has it (cold timings)
+    // false: compile even when pathcl's binary cache (or the driver's) has it, and store
+    // nothing (cold timings).
+    bool use_cache = true;
 };
 
 // The assembled source; throws pathcl::Error for an include of a file that is not in the

@@ -71,6 +71,7 @@ Command add_bench_command(CLI::App& app)
     CLI::App* bench = app.add_subcommand("bench", "Time repeated renders of a scene (min/median/max samples/s)");
     bench->add_option("scene", rq->scene_path, "glTF 2.0 scene")->required();
     add_render_options(bench, rq->options, rq->device);
+    add_program_options(bench, rq->options);
     bench->add_option("--runs", rq->runs, "timed runs after one warm-up")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));

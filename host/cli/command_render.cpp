@@ -4,7 +4,9 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/options.h"
+#include "cli/progress_line.h"
 #include "common/error.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
@@ -70,15 +72,47 @@ struct CameraFlags {
     }
 };
 
+// --time, --target-error, --min-spp, --max-spp, --batch-spp, --adaptive: the budget flags.
+struct BudgetFlags {
+    CLI::Option *spp_option = nullptr, *max_spp_option = nullptr;
+    std::uint32_t max_spp = 1u << 20;
+
+    // A budget renders until it is spent, so --spp (the count) gives way to --max-spp
+    // (the cap).
+    void apply(RenderOptions& opt) const
+    {
+        const bool budget = opt.time_budget > 0.0 || opt.target_error > 0.0;
+        if (budget && spp_option->count())
+            throw Error("--spp fixes the sample count; with --time or --target-error cap it with --max-spp");
+        if (!budget && max_spp_option->count())
+            throw Error("--max-spp caps a budgeted render (--time, --target-error); use --spp");
+        if (budget)
+            opt.spp = max_spp;
+    }
+};
+
 struct RenderRequest {
     std::string scene_path;
     std::vector<std::string> outputs;
     RenderOptions options;
+    BudgetFlags budget;
+    bool progress = false, quiet = false;
     int device = 0;
     EnvironmentFlags environment;
     CameraFlags camera;
     std::string ray_log; // --ray-log FILE.ply
 };
+
+// "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
+std::string error_summary(const RenderStats& s)
+{
+    if (s.error_estimate < 0.0)
+        return "no error estimate";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "relMSE est. %s%.3g (%s)", s.error_is_bound ? "<= " : "", s.error_estimate,
+                  s.batches >= 2 ? (std::to_string(s.batches) + " batches").c_str() : "per-sample variance");
+    return buf;
+}
 
 void print_summary(const RenderRequest& rq, const RenderResult& r)
 {
@@ -89,13 +123,13 @@ void print_summary(const RenderRequest& rq, const RenderResult& r)
     if (!rq.ray_log.empty())
         names += ", " + rq.ray_log + " (" + std::to_string(r.camera_rays.size()) + " rays)";
     std::string spp = std::to_string(s.spp) + " spp " + sampler_name(rq.options.sampler);
-    if (s.spp != rq.options.spp)
+    if (s.stop == StopReason::Spp && s.spp != rq.options.spp)
         spp += " (rounded up from " + std::to_string(rq.options.spp) + ")";
     std::printf("%s: %zu triangles, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
-                "%.3g samples/s | %llu NaN/Inf samples\n",
+                "%.3g samples/s | %llu NaN/Inf samples | %s | stopped: %s\n",
                 names.c_str(), s.triangles, s.lights, spp.c_str(), s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
                 s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
-                static_cast<unsigned long long>(s.bad_samples));
+                static_cast<unsigned long long>(s.bad_samples), error_summary(s).c_str(), stop_reason_name(s.stop));
 }
 
 int run_render(RenderRequest rq)
@@ -110,10 +144,23 @@ int run_render(RenderRequest rq)
     apply_environment_flags(scene, rq.environment);
     apply_camera_overrides(scene, rq.camera.overrides());
     RenderOptions& opt = rq.options;
+    rq.budget.apply(opt);
     opt.devices = {rq.device};
     if (!rq.ray_log.empty())
         opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
-    RenderResult r = render(scene, opt);
+    Renderer renderer(scene, opt);
+    catch_interrupts();
+    RenderResult r;
+    {
+        ProgressLine line(rq.quiet      ? ProgressLine::Mode::Quiet
+                          : rq.progress ? ProgressLine::Mode::Lines
+                                        : ProgressLine::Mode::Auto,
+                          rq.outputs.front());
+        r = renderer.render(opt.seed, [&](const RenderProgress& p) {
+            line.show(p);
+            return !interrupted();
+        });
+    }
     // Every output complete before any replaces what the user has.
     StagedFiles staged;
     for (const std::string& output : rq.outputs)
@@ -122,7 +169,39 @@ int run_render(RenderRequest rq)
         write_ray_log_file(staged.stage(rq.ray_log), rq.ray_log, r.camera_rays);
     staged.commit();
     print_summary(rq, r);
-    return 0;
+    return r.stats.stop == StopReason::Interrupted ? interrupted_exit_code() : 0;
+}
+
+void add_budget_flags(CLI::App* render, RenderRequest& rq)
+{
+    RenderOptions& o = rq.options;
+    BudgetFlags& b = rq.budget;
+    b.spp_option = render->get_option("--spp");
+    render->add_option("--time", o.time_budget, "render whole passes until SECONDS are spent (then --max-spp caps)")
+        ->type_name("SECONDS")
+        ->check(CLI::PositiveNumber);
+    render
+        ->add_option("--target-error", o.target_error,
+                     "stop when the estimated relMSE of the image (README: What accuracy costs) falls to E")
+        ->type_name("E")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--min-spp", o.min_spp, "with --target-error: take at least N samples per pixel")
+        ->check(CLI::Range(1u, 1u << 30));
+    b.max_spp_option =
+        render->add_option("--max-spp", b.max_spp, "with --time or --target-error: at most N samples per pixel")
+            ->capture_default_str()
+            ->check(CLI::Range(1u, 1u << 30));
+    render
+        ->add_option("--batch-spp", o.batch_spp,
+                     "samples per batch, each an independently scrambled point set whose spread estimates the error "
+                     "(default: --spp in one batch; 16 with a budget)")
+        ->check(CLI::Range(1u, 1u << 30));
+    render->add_flag("--adaptive", o.adaptive,
+                     "with --target-error: pixels whose estimated error (and their neighbours') reach it stop taking "
+                     "samples");
+    auto* progress =
+        render->add_flag("--progress", rq.progress, "progress lines on stderr even when it is not a terminal");
+    render->add_flag("--quiet", rq.quiet, "no progress line")->excludes(progress);
 }
 
 void add_camera_flags(CLI::App* render, CameraFlags& c)
@@ -167,6 +246,7 @@ Command add_render_command(CLI::App& app)
         ->required()
         ->allow_extra_args(false);
     add_render_options(render, rq->options, rq->device);
+    add_budget_flags(render, *rq);
     render->add_option("--seed", rq->options.seed, "random seed (same seed, scene, options: same image)")
         ->capture_default_str();
     add_environment_flags(render, rq->environment);
@@ -174,9 +254,7 @@ Command add_render_command(CLI::App& app)
     render->add_option("--ray-log", rq->ray_log,
                        "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
                        "directions as normals");
-    render->add_flag("--single-scattering", rq->options.single_scattering,
-                     "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
-                     "render them; for cross-checks)");
+    add_program_options(render, rq->options);
     return {render, [rq] { return run_render(*rq); }};
 }
 

@@ -18,5 +18,6 @@ Command add_devices_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_samples_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_info_command(CLI::App& app);
 
 } // namespace pathcl::cli

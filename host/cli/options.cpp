@@ -70,8 +70,29 @@ void add_render_options(CLI::App* command, RenderOptions& options, int& device)
     command->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
 }
 
+void add_program_options(CLI::App* command, RenderOptions& options)
+{
+    static const std::map<std::string, Specialization> kinds = {{"scene", Specialization::Scene},
+                                                                {"all", Specialization::All}};
+    command
+        ->add_option("--specialization", options.specialization,
+                     "kernel features compiled in: scene (those the scene uses) or all (to measure what "
+                     "specializing saves)")
+        ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case))
+        ->default_str("scene");
+    command->add_flag("--fast-math", options.fast_math,
+                      "build the kernels with -cl-fast-relaxed-math (a measured opt-in: README \"What accuracy "
+                      "costs\")");
+    command->add_flag("--single-scattering", options.single_scattering,
+                      "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
+                      "render them; for cross-checks)");
+}
+
 std::string flag_for(const std::string& parameter)
 {
+    static const std::map<std::string, std::string> renamed = {{"time_budget", "--time"}};
+    if (auto it = renamed.find(parameter); it != renamed.end())
+        return it->second;
     std::string flag = "--" + parameter;
     std::replace(flag.begin(), flag.end(), '_', '-');
     return flag;

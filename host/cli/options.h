@@ -14,6 +14,10 @@ namespace pathcl::cli {
 // values in `options` (and `device`) as their defaults: the group `render` and `bench` share.
 void add_render_options(CLI::App* command, RenderOptions& options, int& device);
 
+// --specialization, --fast-math and --single-scattering: the options that choose the
+// kernel variant (render, bench, info).
+void add_program_options(CLI::App* command, RenderOptions& options);
+
 // --sampler NAME alone (the sample visualizer), with the default `default_name`.
 void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::string& default_name);
 

@@ -16,7 +16,7 @@ public:
 // A bad value of one named parameter of a request (a render option, a camera override):
 // what() reads "<parameter>: <detail>". The detail may name other parameters as
 // {parameter}. The library speaks only of parameters; a front end names them its own way
-// (the CLI: by their flags, host/cli/parameter_flags.cpp) through describe().
+// (the CLI: by their flags, flag_for in host/cli/options.cpp) through describe().
 class ParameterError : public Error {
 public:
     ParameterError(const std::string& parameter, const std::string& detail);

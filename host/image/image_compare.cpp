@@ -47,7 +47,6 @@ CompareScale run_scale(const std::string& name, const std::vector<Estimate>& a, 
 std::vector<Estimate> tiles(const Image& img, int block)
 {
     std::vector<Estimate> out;
-    double n = img.spp;
     for (std::uint32_t ty = 0; ty < img.height; ty += static_cast<std::uint32_t>(block))
         for (std::uint32_t tx = 0; tx < img.width; tx += static_cast<std::uint32_t>(block))
             for (int c = 0; c < 3; ++c) {
@@ -55,9 +54,10 @@ std::vector<Estimate> tiles(const Image& img, int block)
                 double count = 0.0;
                 for (std::uint32_t y = ty; y < std::min(img.height, ty + block); ++y)
                     for (std::uint32_t x = tx; x < std::min(img.width, tx + block); ++x) {
-                        std::size_t i = (static_cast<std::size_t>(y) * img.width + x) * 3 + static_cast<std::size_t>(c);
+                        std::size_t p = static_cast<std::size_t>(y) * img.width + x;
+                        std::size_t i = p * 3 + static_cast<std::size_t>(c);
                         e.mean += img.rgb[i];
-                        e.var_of_mean += img.variance[i] / n;
+                        e.var_of_mean += img.variance[i] / img.pixel_spp(p);
                         count += 1.0;
                     }
                 e.mean /= count;
@@ -95,7 +95,6 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
     // so its variance is estimated from both together (as in Student's t-test); a low-spp
     // render alone underestimates the variance of pixels whose rare bright paths it
     // missed. Separate (Welch): each render's own variance.
-    const double na = a.spp, nb = b.spp;
     double sq[3] = {0.0, 0.0, 0.0};
     for (std::size_t i = 0; i < n * 3; ++i) {
         double d = static_cast<double>(a.rgb[i]) - static_cast<double>(b.rgb[i]);
@@ -106,13 +105,14 @@ CompareReport compare_images(const Image& a, const Image& b, const CompareOption
     r.rmse_all = std::sqrt((sq[0] + sq[1] + sq[2]) / (3.0 * static_cast<double>(n)));
     Image pooled_a = a, pooled_b = b;
     for (std::size_t i = 0; i < n * 3 && opt.pooled_variance; ++i) {
+        const double na = a.pixel_spp(i / 3), nb = b.pixel_spp(i / 3);
         double pooled = ((na - 1.0) * a.variance[i] + (nb - 1.0) * b.variance[i]) / std::max(na + nb - 2.0, 1.0);
         pooled_a.variance[i] = pooled_b.variance[i] = static_cast<float>(pooled);
     }
     std::vector<Estimate> pa(n * 3), pb(n * 3);
     for (std::size_t i = 0; i < n * 3; ++i) {
-        pa[i] = {a.rgb[i], pooled_a.variance[i] / na};
-        pb[i] = {b.rgb[i], pooled_b.variance[i] / nb};
+        pa[i] = {a.rgb[i], pooled_a.variance[i] / a.pixel_spp(i / 3)};
+        pb[i] = {b.rgb[i], pooled_b.variance[i] / b.pixel_spp(i / 3)};
     }
     r.scales.push_back(run_scale("pixel", pa, pb, opt.alpha));
     r.scales.push_back(run_scale(std::to_string(opt.block) + "x" + std::to_string(opt.block) + " tile",
@@ -166,7 +166,7 @@ BitwiseReport compare_bitwise(const Image& a, const Image& b)
         throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
                     std::to_string(b.width) + "x" + std::to_string(b.height));
     BitwiseReport r;
-    r.same_spp = a.spp == b.spp;
+    r.same_spp = a.spp == b.spp && a.samples == b.samples;
     auto scan = [&](const std::vector<float>& x, const std::vector<float>& y) {
         for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
             ++r.values;

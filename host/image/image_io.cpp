@@ -39,17 +39,29 @@ void write_image_file(const std::string& file, const std::string& path, const Im
 
     ImageBuf out;
     if (exr) {
-        ImageSpec spec(w, h, 6, TypeDesc::FLOAT);
+        const bool counts = !img.samples.empty();
+        if (counts && img.samples.size() != pixels)
+            throw Error(path + ": internal error: per-pixel sample counts do not match the image");
+        const int channels = counts ? 7 : 6;
+        ImageSpec spec(w, h, channels, TypeDesc::FLOAT);
         spec.channelnames = {"R", "G", "B", "variance.R", "variance.G", "variance.B"};
+        if (counts)
+            spec.channelnames.push_back("samples");
         spec.attribute("compression", "zip");
         spec.attribute("pathcl:spp", static_cast<int>(img.spp));
+        for (const auto& [key, value] : img.metadata)
+            spec.attribute("pathcl:" + key, value);
         out.reset(spec);
-        std::vector<float> px(static_cast<std::size_t>(w) * h * 6);
-        for (std::size_t i = 0; i < static_cast<std::size_t>(w) * h; ++i)
+        std::vector<float> px(pixels * static_cast<std::size_t>(channels));
+        for (std::size_t i = 0; i < pixels; ++i) {
+            float* p = &px[i * static_cast<std::size_t>(channels)];
             for (int c = 0; c < 3; ++c) {
-                px[i * 6 + c] = img.rgb[i * 3 + c];
-                px[i * 6 + 3 + c] = img.variance[i * 3 + c];
+                p[c] = img.rgb[i * 3 + c];
+                p[3 + c] = img.variance[i * 3 + c];
             }
+            if (counts)
+                p[6] = static_cast<float>(img.samples[i]); // exact below 2^24
+        }
         out.set_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, px.data());
     } else {
         ImageBuf linear(ImageSpec(w, h, 3, TypeDesc::FLOAT));
@@ -86,23 +98,38 @@ Image read_image(const std::string& path)
     if (r < 0 || g < 0 || b < 0)
         throw Error(path + ": image has no R, G, B channels");
     int vr = channel("variance.R"), vg = channel("variance.G"), vb = channel("variance.B");
+    int counts = channel("samples");
     Image img;
     img.width = static_cast<std::uint32_t>(spec.width);
     img.height = static_cast<std::uint32_t>(spec.height);
     img.spp = static_cast<std::uint32_t>(spec.get_int_attribute("pathcl:spp", 0));
+    for (const OIIO::ParamValue& p : spec.extra_attribs) {
+        std::string name = p.name().string();
+        if (name.rfind("pathcl:", 0) == 0 && name != "pathcl:spp" && p.type() == TypeDesc::STRING)
+            img.metadata[name.substr(7)] = p.get_string();
+    }
     std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
     std::vector<float> px(n * static_cast<std::size_t>(spec.nchannels));
     in.get_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, px.data());
     img.rgb.resize(n * 3);
     img.variance.assign(n * 3, 0.0f);
+    if (counts >= 0)
+        img.samples.resize(n);
     const int rgb[3] = {r, g, b}, var[3] = {vr, vg, vb};
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+        const float* p = &px[i * static_cast<std::size_t>(spec.nchannels)];
         for (int c = 0; c < 3; ++c) {
-            img.rgb[i * 3 + c] = px[i * static_cast<std::size_t>(spec.nchannels) + static_cast<std::size_t>(rgb[c])];
+            img.rgb[i * 3 + c] = p[rgb[c]];
             if (var[c] >= 0)
-                img.variance[i * 3 + c] =
-                    px[i * static_cast<std::size_t>(spec.nchannels) + static_cast<std::size_t>(var[c])];
+                img.variance[i * 3 + c] = p[var[c]];
         }
+        if (counts >= 0) {
+            float k = p[counts];
+            if (!(k >= 0.0f && k <= 16777216.0f))
+                throw Error(path + ": pixel " + std::to_string(i) + " has a bad sample count");
+            img.samples[i] = static_cast<std::uint32_t>(k);
+        }
+    }
     return img;
 }
 

@@ -1,5 +1,7 @@
 // Image files through OpenImageIO. EXR: linear float RGB plus the per-sample variance as
-// channels variance.R/G/B and the sample count as attribute "pathcl:spp". PNG: the same
+// channels variance.R/G/B, the sample count as attribute "pathcl:spp" (and, where pixels
+// differ, per pixel as channel "samples"), and Image::metadata as string attributes
+// "pathcl:<key>". PNG: the same
 // radiance sRGB-encoded and clamped to 8 bits. Files are written under a temporary name in
 // the target directory and renamed, so a failed write never leaves a partial file and
 // never destroys an existing one.

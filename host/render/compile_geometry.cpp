@@ -33,17 +33,21 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         // The emitter index is set by compile_lights.
         a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
     }
+    // A program with every feature compiled in (--specialization all) reads these arrays
+    // for scenes without them: tangents are read only through a normal texture, so any
+    // value does; vertex colours multiply, so white.
     if (out.features.has(FEATURE_NORMAL_MAPS)) {
-        a.tangents.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
+        a.tangents.resize(n, TriangleTangents{});
+        for (std::size_t i = 0; i < n && !scene.tangents.empty(); ++i) {
             const TriangleTangent& t = scene.tangents[order[i]];
             a.tangents[i] = {
                 {t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w}, {t[2].x, t[2].y, t[2].z, t[2].w}};
         }
     }
     if (out.features.has(FEATURE_VERTEX_COLORS)) {
-        a.colors.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
+        const pcl_float4 white = {1.0f, 1.0f, 1.0f, 1.0f};
+        a.colors.resize(n, TriangleColors{white, white, white});
+        for (std::size_t i = 0; i < n && !scene.colors.empty(); ++i) {
             const TriangleColor& c = scene.colors[order[i]];
             a.colors[i] = {to_float4(c[0]), to_float4(c[1]), to_float4(c[2])};
         }

@@ -45,4 +45,98 @@ Image FilmSum::image(std::uint32_t width, std::uint32_t height, std::uint32_t sp
     return img;
 }
 
+FilmAccumulator::FilmAccumulator(std::size_t pixels, std::uint32_t batch_spp)
+    : total_(pixels), batch_spp_(batch_spp), batch_mean_sum_(pixels * 3, 0.0), batch_mean_sq_(pixels * 3, 0.0),
+      pixel_batches_(pixels, 0)
+{}
+
+void FilmAccumulator::add_to_total(const FilmSum& batch)
+{
+    for (std::size_t i = 0; i < total_.sum_.size(); ++i) {
+        total_.sum_[i] += batch.sum_[i];
+        total_.sum_sq_[i] += batch.sum_sq_[i];
+    }
+    total_.bad_ += batch.bad_;
+}
+
+void FilmAccumulator::add_batch(const FilmSum& batch)
+{
+    add_to_total(batch);
+    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
+        double n = batch.sum_[i * 4 + 3];
+        if (!(n > 0.0))
+            continue; // the pixel took no sample in this batch (adaptive sampling)
+        ++pixel_batches_[i];
+        for (int c = 0; c < 3; ++c) {
+            double m = batch.sum_[i * 4 + c] / n;
+            batch_mean_sum_[i * 3 + c] += m;
+            batch_mean_sq_[i * 3 + c] += m * m;
+        }
+    }
+    ++batches_;
+}
+
+void FilmAccumulator::add_partial_batch(const FilmSum& batch)
+{
+    add_to_total(batch);
+}
+
+std::vector<std::uint32_t> FilmAccumulator::pixel_samples() const
+{
+    std::vector<std::uint32_t> n(pixel_batches_.size());
+    for (std::size_t i = 0; i < n.size(); ++i)
+        n[i] = static_cast<std::uint32_t>(total_.sum_[i * 4 + 3]);
+    return n;
+}
+
+double FilmAccumulator::pixel_channel_estimate(std::size_t i, int c) const
+{
+    double k = pixel_batches_[i];
+    double s = batch_mean_sum_[i * 3 + c], q = batch_mean_sq_[i * 3 + c];
+    double spread = std::max(0.0, (q - s * s / k) / (k - 1.0)); // variance of one batch mean
+    double n = total_.sum_[i * 4 + 3];
+    double mean = total_.sum_[i * 4 + c] / n;
+    return spread * batch_spp_ / n / (mean * mean + kRelMseEpsilon);
+}
+
+double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
+{
+    if (pixel_batches_[i] < 2)
+        return -1.0;
+    return std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
+}
+
+double FilmAccumulator::relmse_estimate() const
+{
+    double sum = 0.0;
+    std::size_t terms = 0;
+    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
+        if (pixel_batches_[i] < 2)
+            continue;
+        for (int c = 0; c < 3; ++c)
+            sum += pixel_channel_estimate(i, c);
+        terms += 3;
+    }
+    return terms > 0 && batches_ >= 2 ? sum / static_cast<double>(terms) : -1.0;
+}
+
+double FilmAccumulator::per_sample_relmse_estimate() const
+{
+    double sum = 0.0;
+    std::size_t terms = 0;
+    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
+        double n = total_.sum_[i * 4 + 3];
+        if (!(n > 1.0))
+            continue;
+        for (int c = 0; c < 3; ++c) {
+            double s = total_.sum_[i * 4 + c], q = total_.sum_sq_[i * 4 + c];
+            double mean = s / n;
+            double var = std::max(0.0, (q - s * mean) / (n - 1.0));
+            sum += var / n / (mean * mean + kRelMseEpsilon);
+        }
+        terms += 3;
+    }
+    return terms > 0 ? sum / static_cast<double>(terms) : -1.0;
+}
+
 } // namespace pathcl

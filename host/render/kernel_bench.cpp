@@ -51,10 +51,11 @@ std::vector<KernelFigure> bench_kernels(const Scene& scene, const RenderOptions&
     ProgramSource source;
     source.root = "bench.cl";
     source.use_cache = false;
-    ProgramBuild cold = build_program(dev, compiled.features.define(), source);
+    const std::string build_options = program_build_options(compiled.features, opt);
+    ProgramBuild cold = build_program(dev, build_options, source);
     source.use_cache = true;
-    build_program(dev, compiled.features.define(), source); // stores it
-    ProgramBuild warm = build_program(dev, compiled.features.define(), source);
+    build_program(dev, build_options, source); // stores it
+    ProgramBuild warm = build_program(dev, build_options, source);
     out.push_back(figure("program build, cold", "s", {cold.seconds}));
     out.push_back(
         figure(std::string("program build, ") + (warm.from_cache ? "cached" : "not cached"), "s", {warm.seconds}));

@@ -32,8 +32,29 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     }
     set(FEATURE_ENVIRONMENT, scene.environment.present);
     set(FEATURE_THIN_LENS, scene.camera.aperture > 0.0);
+    if (options.specialization == Specialization::All)
+        f.mask |= FEATURE_ALL & ~FEATURE_SINGLE_SCATTERING; // a model option, not a scene feature
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
     return f;
+}
+
+std::string program_build_options(const KernelFeatures& features, const RenderOptions& options)
+{
+    return features.define() + (options.fast_math ? " -cl-fast-relaxed-math" : "");
+}
+
+std::vector<std::string> feature_names(std::uint32_t mask)
+{
+    static const char* const names[] = {"area-lights",      "point-lights", "spot-lights",   "directional-lights",
+                                        "sphere-lights",    "environment",  "glossy",        "transmission",
+                                        "textures",         "normal-maps",  "vertex-colors", "thin-lens",
+                                        "single-scattering"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 13 && FEATURE_ALL == (1u << 13) - 1u);
+    std::vector<std::string> out;
+    for (std::uint32_t b = 0; b < 13; ++b)
+        if (mask & (1u << b))
+            out.push_back(names[b]);
+    return out;
 }
 
 } // namespace pathcl

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "features.h"
 #include "render/render_options.h"
@@ -20,6 +21,13 @@ struct KernelFeatures {
     std::string define() const;
 };
 
+// The features `options.specialization` asks for: the scene's, or every scene feature.
 KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options);
+
+// The render program's build options: the feature define, and fast math when asked for.
+std::string program_build_options(const KernelFeatures& features, const RenderOptions& options);
+
+// The features' names, in mask order ("area-lights", "glossy", ...).
+std::vector<std::string> feature_names(std::uint32_t mask);
 
 } // namespace pathcl

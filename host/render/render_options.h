@@ -36,8 +36,16 @@ inline const char* strategy_name(Strategy s)
     return "unknown";
 }
 
+// Which kernel features a render's program is compiled with (render/kernel_features.h).
+enum class Specialization : std::uint32_t {
+    Scene, // those the scene uses: the default, and the fastest
+    All,   // every scene feature, whatever the scene (for measuring what specializing saves)
+};
+
 struct RenderOptions {
     std::uint32_t width = 512, height = 512;
+    // Samples per pixel: the render's count, or its cap when a budget below can end it
+    // sooner.
     std::uint32_t spp = 64;
     std::uint32_t max_bounces = 8; // scattering events: 0 = emission only, 1 = direct light
     std::uint32_t seed = 0;
@@ -53,11 +61,27 @@ struct RenderOptions {
     // Rough microfacets without multiple-scattering compensation (pbrt's and Mitsuba's
     // model, for cross-checks).
     bool single_scattering = false;
+    Specialization specialization = Specialization::Scene;
+    // Builds with -cl-fast-relaxed-math: a measured opt-in (README "What accuracy costs");
+    // the compiler may then assume no NaN or Inf, which the film's NaN guard relies on.
+    bool fast_math = false;
     // Camera-ray log: the rays of the first ray_log_samples sample indices of the pixels
     // on an evenly spaced grid of at most ray_log_grid x ray_log_grid pixels.
     std::uint32_t ray_log_samples = 0;
     std::uint32_t ray_log_grid = 16;
     std::vector<int> devices{0};
+
+    // Batches and budgets (host/render/batches.h). A render is a run of batches, each a
+    // whole point set of batch_spp samples per pixel scrambled by its own seed; the spread
+    // of the batch means is the image's error estimate. 0: one batch of spp (no budget),
+    // or 16 per batch with a budget.
+    std::uint32_t batch_spp = 0;
+    double time_budget = 0.0;  // seconds (> 0): stop after the pass that spends them
+    double target_error = 0.0; // relMSE (> 0): stop once the estimate falls to it
+    std::uint32_t min_spp = 0; // with target_error: never stop before (0: two batches)
+    // Per-pixel adaptive sampling (needs target_error): a pixel whose estimated relMSE,
+    // and its neighbours', is at most target_error takes no more samples.
+    bool adaptive = false;
     // Test-only: mutations of the kernel source (host/cl/kernel_source.h), for the tests
     // that prove a render test fails on a deliberately broken kernel.
     std::vector<KernelPatch> kernel_patches;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <deque>
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
@@ -49,15 +51,30 @@ struct DeviceRender {
     DeviceArrays arrays;
     Tile tile{8, 8};
     std::uint32_t clear_items = 64;
-    std::uint32_t passes = 0; // enqueued so far (the queue is flushed every 16)
 };
+
+// Adaptive sampling stops no pixel before this many whole batches: the spread of fewer
+// batch means is too uncertain to trust for one pixel.
+constexpr std::uint32_t kMinAdaptiveBatches = 4;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t)
+{
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string format_g(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
 
 void check_options(const RenderOptions& opt)
 {
     if (opt.width == 0 || opt.height == 0)
         throw Error("image size must be at least 1x1");
-    if (opt.spp == 0)
-        throw ParameterError("spp", "must be at least 1");
     if (opt.devices.empty())
         throw Error("no device selected");
     if (static_cast<std::uint32_t>(opt.strategy) > STRATEGY_MIS)
@@ -79,7 +96,7 @@ std::vector<std::uint32_t> ray_log_axis(std::uint32_t grid, std::uint32_t size)
 
 struct Renderer::Impl {
     RenderOptions options;
-    std::uint32_t spp = 0;
+    BatchPlan plan;
     glm::dvec3 render_origin{0.0};
     CompiledScene compiled;
     RenderStats setup;
@@ -89,7 +106,7 @@ struct Renderer::Impl {
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
         check_options(opt);
-        spp = sampler_spp(opt.sampler, opt.spp); // throws for an unknown sampler
+        plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
         compiled = compile_scene(scene, kernel_features(scene, opt));
         compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
@@ -102,7 +119,7 @@ struct Renderer::Impl {
         for (int index : opt.devices)
             devices.push_back(open(index));
 
-        frame = frame_params(compiled, opt, spp);
+        frame = frame_params(compiled, opt, plan.batch_spp);
     }
 
     std::unique_ptr<DeviceRender> open(int index)
@@ -111,7 +128,7 @@ struct Renderer::Impl {
         dr->dev = open_device(index);
         ProgramSource source;
         source.patches = options.kernel_patches;
-        ProgramBuild pb = build_program(dr->dev, compiled.features.define(), source);
+        ProgramBuild pb = build_program(dr->dev, program_build_options(compiled.features, options), source);
         setup.kernel_build_seconds += pb.seconds;
         setup.kernel_from_cache = setup.kernel_from_cache && pb.from_cache;
         try {
@@ -143,41 +160,35 @@ struct Renderer::Impl {
         }
     }
 
-    // Enqueues the camera and path passes of sample indices [0, spp); logs camera rays.
-    void run_passes(std::vector<CameraRayRecord>& camera_rays)
+    // Enqueues the camera and path passes of sample index s of the current batch on its
+    // device; `done` signals the path pass's end. Logs the camera rays of batch 0's
+    // first sample indices.
+    void enqueue_pass(std::uint32_t batch, std::uint32_t s, cl::Event* done, std::vector<CameraRayRecord>& camera_rays)
     {
-        std::vector<std::uint32_t> log_xs, log_ys;
-        std::vector<Ray> logged;
-        if (options.ray_log_samples > 0) {
-            log_xs = ray_log_axis(options.ray_log_grid, options.width);
-            log_ys = ray_log_axis(options.ray_log_grid, options.height);
-            logged.resize(pixels());
-        }
-        for (std::uint32_t s = 0; s < spp; ++s) {
-            DeviceRender& dr = *devices[s % devices.size()];
-            frame.sample_index = s; // the only parameter that changes from pass to pass
-            const cl::NDRange global(round_up(options.width, dr.tile.x), round_up(options.height, dr.tile.y));
-            const cl::NDRange local(dr.tile.x, dr.tile.y);
-            bind_kernel(dr.camera_kernel, dr.arrays, frame);
-            dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
-            if (s < options.ray_log_samples) {
-                // A blocking read: renders that log rays are not for timing.
-                dr.dev.queue.enqueueReadBuffer(dr.arrays.rays, CL_TRUE, 0, pixels() * sizeof(Ray), logged.data());
-                for (std::uint32_t y : log_ys)
-                    for (std::uint32_t x : log_xs) {
-                        const Ray& r = logged[static_cast<std::size_t>(y) * options.width + x];
-                        camera_rays.push_back(
-                            {render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
-                             glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
-                    }
+        DeviceRender& dr = *devices[s % devices.size()];
+        frame.sample_index = s; // with the seed, the only parameters that change from pass to pass
+        const cl::NDRange global(round_up(options.width, dr.tile.x), round_up(options.height, dr.tile.y));
+        const cl::NDRange local(dr.tile.x, dr.tile.y);
+        bind_kernel(dr.camera_kernel, dr.arrays, frame);
+        dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
+        if (batch == 0 && s < options.ray_log_samples)
+            log_camera_rays(dr, s, camera_rays);
+        bind_kernel(dr.path_kernel, dr.arrays, frame);
+        dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local, nullptr, done);
+        dr.dev.queue.flush(); // the device starts at once; the host waits on `done` later
+    }
+
+    // A blocking read: renders that log rays are not for timing.
+    void log_camera_rays(DeviceRender& dr, std::uint32_t s, std::vector<CameraRayRecord>& camera_rays)
+    {
+        std::vector<Ray> rays(pixels());
+        dr.dev.queue.enqueueReadBuffer(dr.arrays.rays, CL_TRUE, 0, pixels() * sizeof(Ray), rays.data());
+        for (std::uint32_t y : ray_log_axis(options.ray_log_grid, options.height))
+            for (std::uint32_t x : ray_log_axis(options.ray_log_grid, options.width)) {
+                const Ray& r = rays[static_cast<std::size_t>(y) * options.width + x];
+                camera_rays.push_back({render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
+                                       glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
             }
-            bind_kernel(dr.path_kernel, dr.arrays, frame);
-            dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local);
-            if (++dr.passes % 16 == 0) // each device's queue starts working early
-                dr.dev.queue.flush();
-        }
-        for (auto& dr : devices)
-            dr->dev.queue.finish();
     }
 
     FilmSum read_films()
@@ -194,30 +205,182 @@ struct Renderer::Impl {
         return sum;
     }
 
-    RenderResult render(std::uint32_t seed)
+    void upload_active(const std::vector<pcl_uint>& active)
+    {
+        for (auto& dr : devices)
+            dr->dev.queue.enqueueWriteBuffer(dr->arrays.active, CL_TRUE, 0, pixels() * sizeof(pcl_uint), active.data());
+    }
+
+    // Adaptive sampling after a whole batch: a pixel stops when its estimated relMSE and
+    // that of each of its 3 x 3 neighbours is at most the target (the neighbourhood keeps
+    // a pixel whose few batch means happen to agree from stopping alone). Returns the
+    // pixels still active.
+    std::size_t update_active(const FilmAccumulator& acc, std::vector<pcl_uint>& active)
+    {
+        const std::uint32_t w = options.width, h = options.height;
+        std::vector<double> e(pixels());
+        for (std::size_t i = 0; i < e.size(); ++i) {
+            double v = acc.pixel_relmse_estimate(i);
+            e[i] = v < 0.0 ? INFINITY : v;
+        }
+        std::size_t remaining = 0;
+        for (std::uint32_t y = 0; y < h; ++y)
+            for (std::uint32_t x = 0; x < w; ++x) {
+                std::size_t i = static_cast<std::size_t>(y) * w + x;
+                if (!active[i])
+                    continue;
+                double worst = 0.0;
+                for (std::uint32_t ny = (y > 0 ? y - 1 : 0); ny <= std::min(y + 1, h - 1); ++ny)
+                    for (std::uint32_t nx = (x > 0 ? x - 1 : 0); nx <= std::min(x + 1, w - 1); ++nx)
+                        worst = std::max(worst, e[static_cast<std::size_t>(ny) * w + nx]);
+                if (worst <= options.target_error)
+                    active[i] = 0;
+                else
+                    ++remaining;
+            }
+        upload_active(active);
+        return remaining;
+    }
+
+    RenderResult render(std::uint32_t seed, const ProgressCallback& progress)
     {
         RenderResult result;
-        result.stats = setup;
-        frame.seed = seed;
-        auto start = std::chrono::steady_clock::now();
+        RenderStats& stats = result.stats;
+        stats = setup;
+        FilmAccumulator acc(pixels(), plan.batch_spp);
+        std::vector<pcl_uint> active;
+        std::size_t active_pixels = pixels();
+        StopReason reason = StopReason::Spp;
+        bool stop = false;
+        std::uint32_t spp_done = 0; // sample indices per pixel finished
+        double samples = 0.0;       // camera samples finished
+        double estimate = -1.0;     // after the last whole batch
+        // Passes in flight per device: two under a time budget (it ends within one pass),
+        // else enough to keep every device busy while the host waits.
+        const std::size_t window = (options.time_budget > 0.0 ? 2 : 8) * devices.size();
+        const auto start = Clock::now();
+
+        auto report = [&]() {
+            RenderProgress p;
+            p.spp = spp_done;
+            p.max_spp = plan.max_spp;
+            p.batches = acc.batches();
+            p.elapsed_seconds = seconds_since(start);
+            p.samples_per_second = samples / std::max(p.elapsed_seconds, 1e-9);
+            p.error_estimate = estimate;
+            double pass_rate = spp_done / std::max(p.elapsed_seconds, 1e-9);
+            double to_go = plan.max_spp - spp_done;
+            if (options.target_error > 0.0 && estimate > 0.0) // relMSE falls as 1 / spp
+                to_go = std::min(to_go, std::max(0.0, spp_done * (estimate / options.target_error - 1.0)));
+            const bool awaiting_estimate = options.target_error > 0.0 && estimate < 0.0;
+            if (spp_done > 0 && !awaiting_estimate)
+                p.eta_seconds = to_go / pass_rate;
+            if (options.time_budget > 0.0)
+                p.eta_seconds = std::max(0.0, std::min(p.eta_seconds < 0.0 ? INFINITY : p.eta_seconds,
+                                                       options.time_budget - p.elapsed_seconds));
+            return p;
+        };
+        // After each finished pass: the time budget, and the caller's wish to stop.
+        auto after_pass = [&]() {
+            ++spp_done;
+            samples += static_cast<double>(active_pixels);
+            if (options.time_budget > 0.0 && seconds_since(start) >= options.time_budget && !stop) {
+                stop = true;
+                reason = StopReason::Time;
+            }
+            if (progress && !progress(report()) && !stop) {
+                stop = true;
+                reason = StopReason::Interrupted;
+            }
+        };
+
         try {
+            frame.adaptive = options.adaptive ? 1u : 0u;
+            if (options.adaptive) {
+                active.assign(pixels(), 1u);
+                upload_active(active);
+            }
             clear_films();
-            run_passes(result.camera_rays);
+            std::deque<cl::Event> in_flight;
+            for (std::uint32_t b = 0; b < plan.batch_count() && !stop; ++b) {
+                frame.seed = batch_seed(seed, b);
+                const std::uint32_t passes = plan.batch_passes(b);
+                std::uint32_t s = 0;
+                for (; s < passes && !stop; ++s) {
+                    in_flight.emplace_back();
+                    enqueue_pass(b, s, &in_flight.back(), result.camera_rays);
+                    while (in_flight.size() > window) {
+                        in_flight.front().wait();
+                        in_flight.pop_front();
+                        after_pass();
+                    }
+                }
+                while (!in_flight.empty()) {
+                    in_flight.front().wait();
+                    in_flight.pop_front();
+                    after_pass();
+                }
+                FilmSum sum = read_films();
+                if (s < passes) {
+                    acc.add_partial_batch(sum);
+                    break;
+                }
+                acc.add_batch(sum);
+                if (b + 1 < plan.batch_count())
+                    clear_films();
+                if (acc.batches() >= 2)
+                    estimate = acc.relmse_estimate();
+                if (stop)
+                    break;
+                if (options.target_error > 0.0 && spp_done >= plan.min_spp && estimate >= 0.0 &&
+                    estimate <= options.target_error) {
+                    reason = StopReason::TargetError;
+                    break;
+                }
+                if (options.adaptive && acc.batches() >= kMinAdaptiveBatches && spp_done >= plan.min_spp) {
+                    active_pixels = update_active(acc, active);
+                    if (active_pixels == 0) {
+                        reason = StopReason::TargetError;
+                        break;
+                    }
+                }
+                if (progress && !progress(report())) {
+                    reason = StopReason::Interrupted;
+                    break;
+                }
+            }
         } catch (const cl::Error& e) {
             throw Error("rendering failed: " + cl_error_text(e));
         }
-        FilmSum sum(0);
-        try {
-            sum = read_films();
-        } catch (const cl::Error& e) {
-            throw Error("reading the film failed: " + cl_error_text(e));
+        stats.render_seconds = seconds_since(start);
+        stats.samples_per_second = samples / std::max(stats.render_seconds, 1e-9);
+        stats.spp = spp_done;
+        stats.batch_spp = plan.batch_spp;
+        stats.batches = acc.batches();
+        stats.stop = reason;
+        stats.bad_samples = acc.bad_samples();
+        if (acc.batches() >= 2) {
+            stats.error_estimate = acc.relmse_estimate();
+        } else {
+            stats.error_estimate = acc.per_sample_relmse_estimate();
+            stats.error_is_bound = options.sampler != SamplerType::Independent;
         }
-        RenderStats& stats = result.stats;
-        stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats.samples_per_second = static_cast<double>(pixels()) * spp / std::max(stats.render_seconds, 1e-9);
-        stats.spp = spp;
-        stats.bad_samples = sum.bad_samples();
-        result.image = sum.image(options.width, options.height, spp);
+        result.image = acc.image(options.width, options.height, spp_done);
+        if (options.adaptive)
+            result.image.samples = acc.pixel_samples();
+        auto& meta = result.image.metadata;
+        meta["stop"] = stop_reason_name(reason);
+        meta["seed"] = std::to_string(seed);
+        meta["sampler"] = sampler_name(options.sampler);
+        meta["batch_spp"] = std::to_string(plan.batch_spp);
+        meta["batches"] = std::to_string(acc.batches());
+        if (stats.error_estimate >= 0.0) {
+            meta["relmse_estimate"] = format_g(stats.error_estimate);
+            meta["relmse_estimate_method"] =
+                acc.batches() >= 2
+                    ? "batch means"
+                    : (stats.error_is_bound ? "per-sample variance (upper bound)" : "per-sample variance");
+        }
         return result;
     }
 };
@@ -229,7 +392,12 @@ Renderer::~Renderer() = default;
 
 std::uint32_t Renderer::spp() const
 {
-    return impl_->spp;
+    return impl_->plan.max_spp;
+}
+
+const BatchPlan& Renderer::plan() const
+{
+    return impl_->plan;
 }
 
 const RenderStats& Renderer::setup_stats() const
@@ -237,14 +405,14 @@ const RenderStats& Renderer::setup_stats() const
     return impl_->setup;
 }
 
-RenderResult Renderer::render(std::uint32_t seed)
+RenderResult Renderer::render(std::uint32_t seed, const ProgressCallback& progress)
 {
-    return impl_->render(seed);
+    return impl_->render(seed, progress);
 }
 
 RenderResult Renderer::render()
 {
-    return impl_->render(impl_->options.seed);
+    return impl_->render(impl_->options.seed, {});
 }
 
 FrameParams frame_params(const CompiledScene& compiled, const RenderOptions& opt, std::uint32_t spp)

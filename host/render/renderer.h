@@ -1,11 +1,14 @@
 // Renders a scene on one or more OpenCL devices. A Renderer owns what a render needs and
 // keeps it between renders: the compiled scene uploaded to every device, the program
-// built for the scene's features, and the films. It runs passes (one camera pass and one
-// path pass per sample index, sample indices dealt round-robin to the devices) and forms
-// the image from the devices' films, summed.
+// built for the scene's features, and the films. A render is a run of batches
+// (render/batches.h); a batch is a run of passes (one camera pass and one path pass per
+// sample index, dealt round-robin to the devices), after which the devices' films are
+// read, added to the image and cleared. Between passes the render reports progress and
+// checks its budget; between batches it estimates its error.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "image/image.h"
+#include "render/batches.h"
 #include "render/render_options.h"
 #include "scene/scene.h"
 
@@ -30,7 +34,27 @@ struct RenderStats {
     std::uint64_t bad_samples = 0;     // NaN/Inf samples the film rejected
     std::size_t texel_bytes = 0;       // device memory of all texture images (per device)
     std::uint32_t spp = 0;             // samples per pixel taken (the sampler may round up)
+    std::uint32_t batch_spp = 0;       // samples per whole batch
+    std::uint32_t batches = 0;         // whole batches taken
+    StopReason stop = StopReason::Spp;
+    // The image's estimated relMSE (FilmAccumulator): from the spread of the batch means
+    // with two whole batches or more, else from the per-sample variance (an upper bound
+    // but for the independent sampler: error_is_bound). Negative: none.
+    double error_estimate = -1.0;
+    bool error_is_bound = false;
 };
+
+// What a render reports after every finished pass.
+struct RenderProgress {
+    std::uint32_t spp = 0, max_spp = 0; // sample indices done per pixel, and at most
+    std::uint32_t batches = 0;          // whole batches done
+    double elapsed_seconds = 0.0;
+    double samples_per_second = 0.0; // camera samples (paths) per second so far
+    double eta_seconds = -1.0;       // negative: unknown
+    double error_estimate = -1.0;    // relMSE from the batches so far; negative: none yet
+};
+// Returns false to stop the render after the passes in flight (StopReason::Interrupted).
+using ProgressCallback = std::function<bool(const RenderProgress&)>;
 
 // One logged camera ray, in world space.
 struct CameraRayRecord {
@@ -54,14 +78,16 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // The samples per pixel of a whole render (options.spp, rounded up by the sampler).
+    // The samples per pixel of a whole render (options.spp, rounded up by the sampler for
+    // one batch), the most a budgeted render takes.
     std::uint32_t spp() const;
+    const BatchPlan& plan() const;
     // Figures of the setup (scene size, BVH and kernel build times).
     const RenderStats& setup_stats() const;
 
-    // A whole render with this seed: clears the films, runs every sample index, and
-    // forms the image.
-    RenderResult render(std::uint32_t seed);
+    // A render with this seed: runs batches until the plan's samples are taken or a budget
+    // or `progress` ends it, and forms the image with its metadata.
+    RenderResult render(std::uint32_t seed, const ProgressCallback& progress = {});
     RenderResult render();
 
 private:

@@ -46,7 +46,7 @@ __kernel void generate_camera_rays(PATHCL_KERNEL_PARAMS FrameParams frame)
     PATHCL_KERNEL_DATA;
     uint2 xy;
     uint pixel;
-    if (!frame_pixel(&frame, &xy, &pixel))
+    if (!frame_pixel(&frame, &xy, &pixel) || !pixel_active(&frame, kd.active, pixel))
         return;
     SamplerState sampler = frame_sampler(&frame, pixel, DIM_PIXEL);
     float2 offset = sampler_get_2d(&sampler);

@@ -1,6 +1,7 @@
 /* Which pixel a work-item of a 2D image kernel renders: work-item (x, y) is pixel
  * y * width + x; the global size is rounded up to whole work-groups, so the work-items
- * past the image's edge have none. */
+ * past the image's edge have none. Adaptive sampling (frame->adaptive) also skips the
+ * pixels the host has marked converged in the film array `active`. */
 #include "types.h"
 
 static inline bool frame_pixel(const FrameParams* frame, uint2* xy, uint* pixel)
@@ -10,4 +11,9 @@ static inline bool frame_pixel(const FrameParams* frame, uint2* xy, uint* pixel)
     *xy = (uint2)(x, y);
     *pixel = y * frame->width + x;
     return x < frame->width && y < frame->height;
+}
+
+static inline bool pixel_active(const FrameParams* frame, __global const uint* active, uint pixel)
+{
+    return frame->adaptive == 0u || active[pixel] != 0u;
 }

@@ -26,7 +26,7 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
     PATHCL_KERNEL_DATA;
     uint2 xy;
     uint pixel;
-    if (!frame_pixel(&frame, &xy, &pixel))
+    if (!frame_pixel(&frame, &xy, &pixel) || !pixel_active(&frame, kd.active, pixel))
         return;
 
     PathState ps = path_state_start(kd.rays[pixel]);

@@ -1,0 +1,50 @@
+// Runs the real `pathcl` binary in a fresh directory per test (removed afterwards), with
+// stdout and stderr captured to files there: the fixture of the end-to-end tool tests.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+namespace pathcl::test {
+
+class ToolRun : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir_ =
+            std::filesystem::temp_directory_path() / ("pathcl-tools-" + std::to_string(::getpid()) + "-" +
+                                                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override
+    {
+        std::error_code ec;
+        std::filesystem::remove_all(dir_, ec);
+    }
+    // Runs the binary with `args` in dir_; returns the exit status (-1: no normal exit).
+    int run(const std::string& args) const
+    {
+        std::string cmd =
+            "cd '" + dir_.string() + "' && '" + std::string(PATHCL_BINARY) + "' " + args + " >stdout.txt 2>stderr.txt";
+        int rc = std::system(cmd.c_str());
+        return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    }
+    // A file of dir_ as text ("stdout.txt", "stderr.txt", an output).
+    std::string text(const std::string& name) const
+    {
+        std::ifstream in(dir_ / name, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::filesystem::path dir_;
+};
+
+} // namespace pathcl::test

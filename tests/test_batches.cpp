@@ -1,0 +1,147 @@
+// Batches and error estimates on the host: how a render is laid out in batches
+// (render/batches.h), and the error estimate of FilmAccumulator checked on films whose
+// batch means are known exactly.
+#include <gtest/gtest.h>
+
+#include "render/batches.h"
+#include "render/film.h"
+#include "support/expect_error.h"
+
+namespace pathcl {
+namespace {
+
+RenderOptions budget_options()
+{
+    RenderOptions o;
+    o.sampler = SamplerType::Sobol;
+    o.spp = 100;
+    return o;
+}
+
+TEST(Batches, APlainRenderIsOneBatchOfTheRoundedSpp)
+{
+    RenderOptions o;
+    o.sampler = SamplerType::Jittered;
+    o.spp = 10; // jittered rounds to the next square
+    BatchPlan p = plan_batches(o);
+    EXPECT_EQ(p.batch_spp, 16u);
+    EXPECT_EQ(p.max_spp, 16u);
+    EXPECT_EQ(p.batch_count(), 1u);
+    EXPECT_FALSE(p.budgeted);
+}
+
+TEST(Batches, ABudgetSplitsIntoBatchesWithAPartialLastOne)
+{
+    RenderOptions o = budget_options();
+    o.time_budget = 5.0;
+    BatchPlan p = plan_batches(o);
+    EXPECT_TRUE(p.budgeted);
+    EXPECT_EQ(p.batch_spp, 16u); // the default batch under a budget
+    EXPECT_EQ(p.max_spp, 100u);  // not rounded to whole batches: --spp N reproduces a stopped render
+    EXPECT_EQ(p.batch_count(), 7u);
+    EXPECT_EQ(p.batch_passes(0), 16u);
+    EXPECT_EQ(p.batch_passes(6), 4u);
+    EXPECT_EQ(p.batch_passes(7), 0u);
+}
+
+TEST(Batches, BatchSizeIsRoundedByTheSampler)
+{
+    RenderOptions o = budget_options();
+    o.sampler = SamplerType::Hammersley;
+    o.batch_spp = 12;
+    EXPECT_EQ(plan_batches(o).batch_spp, 16u);
+}
+
+TEST(Batches, TargetErrorWaitsForTwoBatches)
+{
+    RenderOptions o = budget_options();
+    o.target_error = 1e-3;
+    EXPECT_EQ(plan_batches(o).min_spp, 32u);
+    o.min_spp = 50;
+    EXPECT_EQ(plan_batches(o).min_spp, 50u);
+    o.min_spp = 0;
+    o.spp = 20; // fewer than two batches of 16
+    EXPECT_TRUE(test::contains(test::error_of([&] { plan_batches(o); }), "two batches"));
+}
+
+TEST(Batches, BadBudgetsAreRefused)
+{
+    RenderOptions o = budget_options();
+    o.adaptive = true;
+    EXPECT_TRUE(test::contains(test::error_of([&] { plan_batches(o); }), "needs a target error"));
+    o = budget_options();
+    o.time_budget = -1.0;
+    EXPECT_TRUE(test::contains(test::error_of([&] { plan_batches(o); }), "time_budget"));
+    o = budget_options();
+    o.target_error = std::nan("");
+    EXPECT_TRUE(test::contains(test::error_of([&] { plan_batches(o); }), "target_error"));
+    o = budget_options();
+    o.target_error = 1e-3;
+    o.min_spp = 200;
+    EXPECT_TRUE(test::contains(test::error_of([&] { plan_batches(o); }), "min_spp"));
+}
+
+TEST(Batches, BatchZeroKeepsTheSeedAndTheOthersDiffer)
+{
+    EXPECT_EQ(batch_seed(7, 0), 7u);
+    EXPECT_NE(batch_seed(7, 1), batch_seed(7, 2));
+    EXPECT_NE(batch_seed(7, 1), batch_seed(8, 1));
+    EXPECT_NE(batch_seed(7, 1), 7u);
+}
+
+// One pixel's film holding `n` samples of value v (variance zero within the batch).
+FilmSum constant_batch(float v, float n)
+{
+    FilmPixel px{};
+    px.sum = {v * n, v * n, v * n, n};
+    px.sum_sq = {v * v * n, v * v * n, v * v * n, n};
+    FilmSum s(1);
+    s.add({px}, {0u});
+    return s;
+}
+
+TEST(FilmAccumulator, EstimateIsTheSpreadOfTheBatchMeans)
+{
+    // Batch means 1 and 3 over 4 samples each: the variance of one batch mean is 2, of
+    // the image's mean (8 samples) 2 / 2 = 1; the image's mean is 2, so relMSE
+    // 1 / (4 + 0.01).
+    FilmAccumulator acc(1, 4);
+    acc.add_batch(constant_batch(1.0f, 4.0f));
+    EXPECT_LT(acc.relmse_estimate(), 0.0); // one batch: no spread yet
+    acc.add_batch(constant_batch(3.0f, 4.0f));
+    EXPECT_NEAR(acc.relmse_estimate(), 1.0 / 4.01, 1e-12);
+    EXPECT_NEAR(acc.pixel_relmse_estimate(0), 1.0 / 4.01, 1e-12);
+    // Within a batch every sample was equal: the per-sample variance sees only the
+    // difference between the batches, (6 samples of 1 and 3 around 2) / 7 per sample.
+    double per_sample_var = 8.0 / 7.0;
+    EXPECT_NEAR(acc.per_sample_relmse_estimate(), per_sample_var / 8.0 / 4.01, 1e-12);
+}
+
+TEST(FilmAccumulator, APartialBatchAddsToTheImageAndScalesTheEstimate)
+{
+    FilmAccumulator acc(1, 4);
+    acc.add_batch(constant_batch(1.0f, 4.0f));
+    acc.add_batch(constant_batch(3.0f, 4.0f));
+    acc.add_partial_batch(constant_batch(2.0f, 2.0f));
+    EXPECT_EQ(acc.batches(), 2u);
+    EXPECT_EQ(acc.pixel_samples()[0], 10u);
+    // var(batch mean) 2 for 4 samples: 2 * 4 / 10 for the image's 10; its mean is 2.
+    EXPECT_NEAR(acc.relmse_estimate(), 0.8 / 4.01, 1e-12);
+    Image img = acc.image(1, 1, 10);
+    EXPECT_FLOAT_EQ(img.rgb[0], 2.0f);
+}
+
+TEST(FilmAccumulator, PixelsWithoutSamplesInABatchKeepTheirSpread)
+{
+    // Adaptive sampling: a pixel that took no sample in a batch keeps the batches it had.
+    FilmAccumulator acc(1, 4);
+    acc.add_batch(constant_batch(1.0f, 4.0f));
+    acc.add_batch(constant_batch(3.0f, 4.0f));
+    double before = acc.pixel_relmse_estimate(0);
+    acc.add_batch(FilmSum(1));
+    EXPECT_EQ(acc.batches(), 3u);
+    EXPECT_DOUBLE_EQ(acc.pixel_relmse_estimate(0), before);
+}
+
+} // namespace
+} // namespace pathcl
