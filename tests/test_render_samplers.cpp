@@ -93,9 +93,15 @@ TEST_F(ToolRun, SamplesWritesAPlotWithItsSpectrum)
     ASSERT_EQ(run("samples --sampler multi-jittered --spp 16 --pixel 3,2 --dims 4,5 --spectrum -o points.png"), 0);
     auto in = OIIO::ImageInput::open((dir_ / "points.png").string());
     ASSERT_TRUE(in);
-    // Two 512-pixel panels with margins.
-    EXPECT_EQ(in->spec().width, 24 + 512 + 24 + 512 + 24);
-    EXPECT_EQ(in->spec().height, 48 + 512 + 40);
+    // Two 560 x 540 panels (host/sampling/sample_plot.cpp), the points drawn in blue.
+    ASSERT_EQ(in->spec().width, 2 * 560);
+    ASSERT_EQ(in->spec().height, 540);
+    std::vector<unsigned char> px(static_cast<std::size_t>(in->spec().image_pixels()) * in->spec().nchannels);
+    ASSERT_TRUE(in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::UINT8, px.data()));
+    std::size_t blue = 0;
+    for (std::size_t i = 0; i + 2 < px.size(); i += static_cast<std::size_t>(in->spec().nchannels))
+        blue += px[i + 2] > 120 && px[i] < 60 ? 1 : 0;
+    EXPECT_GT(blue, 16u * 10u) << "fewer blue pixels than 16 dots make";
     in->close();
     ASSERT_EQ(run("samples --sampler halton --spp 10 --dims 0,7 -o points1d.png"), 0); // two 1D decisions
     EXPECT_TRUE(fs::exists(dir_ / "points1d.png"));

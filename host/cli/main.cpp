@@ -1,4 +1,4 @@
-// pathcl command line: `render`, `devices`, `bench`, `compare`, `samples`, `info` (one file each,
+// pathcl command line: `render`, `devices`, `bench`, `compare`, `samples`, `info`, `converge` (one file each,
 // host/cli/command_*.cpp). Every error is one line on stderr ("pathcl: error: ...") and
 // exit code 2; nothing is written unless the command succeeded. The library names
 // parameters in its errors; here they are named by their flags.
@@ -24,10 +24,13 @@ int main(int argc, char** argv)
         std::replace(what.begin(), what.end(), '\n', ' ');
         return "pathcl: error: " + what + "\n";
     });
-    std::vector<pathcl::cli::Command> commands = {
-        pathcl::cli::add_render_command(app),  pathcl::cli::add_devices_command(app),
-        pathcl::cli::add_bench_command(app),   pathcl::cli::add_samples_command(app),
-        pathcl::cli::add_compare_command(app), pathcl::cli::add_info_command(app)};
+    std::vector<pathcl::cli::Command> commands = {pathcl::cli::add_render_command(app),
+                                                  pathcl::cli::add_devices_command(app),
+                                                  pathcl::cli::add_bench_command(app),
+                                                  pathcl::cli::add_samples_command(app),
+                                                  pathcl::cli::add_compare_command(app),
+                                                  pathcl::cli::add_info_command(app),
+                                                  pathcl::cli::add_converge_command(app, argc, argv)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -42,11 +42,12 @@ void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::stri
         ->default_str(default_name);
 }
 
-void add_render_options(CLI::App* command, RenderOptions& options, int& device)
+void add_render_options(CLI::App* command, RenderOptions& options, int& device, bool with_spp)
 {
-    command->add_option("--spp", options.spp, "samples per pixel")
-        ->capture_default_str()
-        ->check(CLI::Range(1u, 1u << 30));
+    if (with_spp)
+        command->add_option("--spp", options.spp, "samples per pixel")
+            ->capture_default_str()
+            ->check(CLI::Range(1u, 1u << 30));
     command->add_option("--width", options.width, "image width")->capture_default_str()->check(CLI::Range(1u, 32768u));
     command->add_option("--height", options.height, "image height")
         ->capture_default_str()

@@ -10,9 +10,10 @@
 
 namespace pathcl::cli {
 
-// --spp, --width, --height, --max-bounces, --strategy, --sampler and --device, with the
-// values in `options` (and `device`) as their defaults: the group `render` and `bench` share.
-void add_render_options(CLI::App* command, RenderOptions& options, int& device);
+// --spp (unless with_spp is false), --width, --height, --max-bounces, --strategy,
+// --sampler, --stratified-bounces and --device, with the values in `options` (and
+// `device`) as their defaults: the group `render`, `bench` and `converge` share.
+void add_render_options(CLI::App* command, RenderOptions& options, int& device, bool with_spp = true);
 
 // --specialization, --fast-math and --single-scattering: the options that choose the
 // kernel variant (render, bench, info).

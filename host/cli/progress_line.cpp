@@ -36,7 +36,7 @@ std::string format_duration(double s)
     return buf;
 }
 
-void ProgressLine::show(const RenderProgress& p)
+void ProgressLine::show(const RenderProgress& p, const std::string& label)
 {
     if (!tty_ && !lines_)
         return;
@@ -50,9 +50,9 @@ void ProgressLine::show(const RenderProgress& p)
         std::snprintf(buf, sizeof buf, "%.3g", p.error_estimate);
         error = buf;
     }
-    char line[256];
+    char line[512];
     std::snprintf(line, sizeof line, "%s: pass %u/%u | %.3g samples/s | %s elapsed | ETA %s | relMSE est. %s",
-                  label_.c_str(), p.spp, p.max_spp, p.samples_per_second, format_duration(p.elapsed_seconds).c_str(),
+                  label.c_str(), p.spp, p.max_spp, p.samples_per_second, format_duration(p.elapsed_seconds).c_str(),
                   format_duration(p.eta_seconds).c_str(), error.c_str());
     if (tty_) {
         std::fprintf(stderr, "\r\033[K%s", line);

@@ -17,7 +17,9 @@ public:
     ProgressLine(Mode mode, std::string label);
     ~ProgressLine(); // clears the line
 
-    void show(const RenderProgress& p);
+    void show(const RenderProgress& p) { show(p, label_); }
+    // With another label for this line (what is being rendered now).
+    void show(const RenderProgress& p, const std::string& label);
     // Clears the self-updating line (before other output).
     void finish();
 

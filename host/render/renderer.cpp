@@ -96,7 +96,7 @@ std::vector<std::uint32_t> ray_log_axis(std::uint32_t grid, std::uint32_t size)
 
 struct Renderer::Impl {
     RenderOptions options;
-    BatchPlan plan;
+    BatchPlan default_plan; // of a render with the options as they are
     glm::dvec3 render_origin{0.0};
     CompiledScene compiled;
     RenderStats setup;
@@ -106,7 +106,7 @@ struct Renderer::Impl {
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
         check_options(opt);
-        plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
+        default_plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
         compiled = compile_scene(scene, kernel_features(scene, opt));
         compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
@@ -119,7 +119,7 @@ struct Renderer::Impl {
         for (int index : opt.devices)
             devices.push_back(open(index));
 
-        frame = frame_params(compiled, opt, plan.batch_spp);
+        frame = frame_params(compiled, opt, default_plan.batch_spp);
     }
 
     std::unique_ptr<DeviceRender> open(int index)
@@ -215,7 +215,7 @@ struct Renderer::Impl {
     // that of each of its 3 x 3 neighbours is at most the target (the neighbourhood keeps
     // a pixel whose few batch means happen to agree from stopping alone). Returns the
     // pixels still active.
-    std::size_t update_active(const FilmAccumulator& acc, std::vector<pcl_uint>& active)
+    std::size_t update_active(const FilmAccumulator& acc, double target, std::vector<pcl_uint>& active)
     {
         const std::uint32_t w = options.width, h = options.height;
         std::vector<double> e(pixels());
@@ -233,7 +233,7 @@ struct Renderer::Impl {
                 for (std::uint32_t ny = (y > 0 ? y - 1 : 0); ny <= std::min(y + 1, h - 1); ++ny)
                     for (std::uint32_t nx = (x > 0 ? x - 1 : 0); nx <= std::min(x + 1, w - 1); ++nx)
                         worst = std::max(worst, e[static_cast<std::size_t>(ny) * w + nx]);
-                if (worst <= options.target_error)
+                if (worst <= target)
                     active[i] = 0;
                 else
                     ++remaining;
@@ -242,8 +242,18 @@ struct Renderer::Impl {
         return remaining;
     }
 
-    RenderResult render(std::uint32_t seed, const ProgressCallback& progress)
+    RenderResult render(const RenderRun& run)
     {
+        // This render's options and layout: the Renderer's, with the run's overrides.
+        RenderOptions opt = options;
+        if (run.spp > 0)
+            opt.spp = run.spp;
+        if (run.target_error >= 0.0)
+            opt.target_error = run.target_error;
+        const BatchPlan plan = run.spp > 0 || run.target_error >= 0.0 ? plan_batches(opt) : default_plan;
+        frame.spp = plan.batch_spp;
+        const std::uint32_t seed = run.seed;
+        const ProgressCallback& progress = run.progress;
         RenderResult result;
         RenderStats& stats = result.stats;
         stats = setup;
@@ -257,7 +267,7 @@ struct Renderer::Impl {
         double estimate = -1.0;     // after the last whole batch
         // Passes in flight per device: two under a time budget (it ends within one pass),
         // else enough to keep every device busy while the host waits.
-        const std::size_t window = (options.time_budget > 0.0 ? 2 : 8) * devices.size();
+        const std::size_t window = (opt.time_budget > 0.0 ? 2 : 8) * devices.size();
         const auto start = Clock::now();
 
         auto report = [&]() {
@@ -270,21 +280,21 @@ struct Renderer::Impl {
             p.error_estimate = estimate;
             double pass_rate = spp_done / std::max(p.elapsed_seconds, 1e-9);
             double to_go = plan.max_spp - spp_done;
-            if (options.target_error > 0.0 && estimate > 0.0) // relMSE falls as 1 / spp
-                to_go = std::min(to_go, std::max(0.0, spp_done * (estimate / options.target_error - 1.0)));
-            const bool awaiting_estimate = options.target_error > 0.0 && estimate < 0.0;
+            if (opt.target_error > 0.0 && estimate > 0.0) // relMSE falls as 1 / spp
+                to_go = std::min(to_go, std::max(0.0, spp_done * (estimate / opt.target_error - 1.0)));
+            const bool awaiting_estimate = opt.target_error > 0.0 && estimate < 0.0;
             if (spp_done > 0 && !awaiting_estimate)
                 p.eta_seconds = to_go / pass_rate;
-            if (options.time_budget > 0.0)
-                p.eta_seconds = std::max(0.0, std::min(p.eta_seconds < 0.0 ? INFINITY : p.eta_seconds,
-                                                       options.time_budget - p.elapsed_seconds));
+            if (opt.time_budget > 0.0)
+                p.eta_seconds = std::max(
+                    0.0, std::min(p.eta_seconds < 0.0 ? INFINITY : p.eta_seconds, opt.time_budget - p.elapsed_seconds));
             return p;
         };
         // After each finished pass: the time budget, and the caller's wish to stop.
         auto after_pass = [&]() {
             ++spp_done;
             samples += static_cast<double>(active_pixels);
-            if (options.time_budget > 0.0 && seconds_since(start) >= options.time_budget && !stop) {
+            if (opt.time_budget > 0.0 && seconds_since(start) >= opt.time_budget && !stop) {
                 stop = true;
                 reason = StopReason::Time;
             }
@@ -295,8 +305,8 @@ struct Renderer::Impl {
         };
 
         try {
-            frame.adaptive = options.adaptive ? 1u : 0u;
-            if (options.adaptive) {
+            frame.adaptive = opt.adaptive ? 1u : 0u;
+            if (opt.adaptive) {
                 active.assign(pixels(), 1u);
                 upload_active(active);
             }
@@ -332,13 +342,13 @@ struct Renderer::Impl {
                     estimate = acc.relmse_estimate();
                 if (stop)
                     break;
-                if (options.target_error > 0.0 && spp_done >= plan.min_spp && estimate >= 0.0 &&
-                    estimate <= options.target_error) {
+                if (opt.target_error > 0.0 && spp_done >= plan.min_spp && estimate >= 0.0 &&
+                    estimate <= opt.target_error) {
                     reason = StopReason::TargetError;
                     break;
                 }
-                if (options.adaptive && acc.batches() >= kMinAdaptiveBatches && spp_done >= plan.min_spp) {
-                    active_pixels = update_active(acc, active);
+                if (opt.adaptive && acc.batches() >= kMinAdaptiveBatches && spp_done >= plan.min_spp) {
+                    active_pixels = update_active(acc, opt.target_error, active);
                     if (active_pixels == 0) {
                         reason = StopReason::TargetError;
                         break;
@@ -363,15 +373,15 @@ struct Renderer::Impl {
             stats.error_estimate = acc.relmse_estimate();
         } else {
             stats.error_estimate = acc.per_sample_relmse_estimate();
-            stats.error_is_bound = options.sampler != SamplerType::Independent;
+            stats.error_is_bound = opt.sampler != SamplerType::Independent;
         }
         result.image = acc.image(options.width, options.height, spp_done);
-        if (options.adaptive)
+        if (opt.adaptive)
             result.image.samples = acc.pixel_samples();
         auto& meta = result.image.metadata;
         meta["stop"] = stop_reason_name(reason);
         meta["seed"] = std::to_string(seed);
-        meta["sampler"] = sampler_name(options.sampler);
+        meta["sampler"] = sampler_name(opt.sampler);
         meta["batch_spp"] = std::to_string(plan.batch_spp);
         meta["batches"] = std::to_string(acc.batches());
         if (stats.error_estimate >= 0.0) {
@@ -392,12 +402,12 @@ Renderer::~Renderer() = default;
 
 std::uint32_t Renderer::spp() const
 {
-    return impl_->plan.max_spp;
+    return impl_->default_plan.max_spp;
 }
 
 const BatchPlan& Renderer::plan() const
 {
-    return impl_->plan;
+    return impl_->default_plan;
 }
 
 const RenderStats& Renderer::setup_stats() const
@@ -405,14 +415,22 @@ const RenderStats& Renderer::setup_stats() const
     return impl_->setup;
 }
 
+RenderResult Renderer::render(const RenderRun& run)
+{
+    return impl_->render(run);
+}
+
 RenderResult Renderer::render(std::uint32_t seed, const ProgressCallback& progress)
 {
-    return impl_->render(seed, progress);
+    RenderRun run;
+    run.seed = seed;
+    run.progress = progress;
+    return impl_->render(run);
 }
 
 RenderResult Renderer::render()
 {
-    return impl_->render(impl_->options.seed, {});
+    return render(impl_->options.seed);
 }
 
 FrameParams frame_params(const CompiledScene& compiled, const RenderOptions& opt, std::uint32_t spp)

@@ -69,6 +69,15 @@ struct RenderResult {
     std::vector<CameraRayRecord> camera_rays; // RenderOptions::ray_log_samples > 0
 };
 
+// One render of a Renderer: its seed, what may change from one render to the next, and
+// the progress callback.
+struct RenderRun {
+    std::uint32_t seed = 0;
+    std::uint32_t spp = 0;      // > 0: instead of the options' (e.g. a convergence ladder)
+    double target_error = -1.0; // >= 0: instead of the options' (0: none)
+    ProgressCallback progress;
+};
+
 class Renderer {
 public:
     // Compiles the scene, opens the devices, builds (or loads) the program and uploads
@@ -87,8 +96,9 @@ public:
 
     // A render with this seed: runs batches until the plan's samples are taken or a budget
     // or `progress` ends it, and forms the image with its metadata.
+    RenderResult render(const RenderRun& run);
     RenderResult render(std::uint32_t seed, const ProgressCallback& progress = {});
-    RenderResult render();
+    RenderResult render(); // with the options' seed
 
 private:
     struct Impl;

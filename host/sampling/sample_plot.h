@@ -44,7 +44,8 @@ struct SamplePlotRequest {
 // The largest spp `--spectrum` accepts (its cost grows with spp^2).
 constexpr std::uint32_t kSpectrumMaxSpp = 4096;
 
-// Draws the plot (linear RGB, for write_image to a PNG). `note` receives a one-line
+// Draws the plot with PLplot (host/plot; linear RGB, for write_image to a PNG): one panel,
+// two with the spectrum. `note` receives a one-line
 // summary (number of pixels averaged, frequency range).
 Image draw_sample_plot(const ClDevice& dev, const cl::Program& program, const SamplePlotRequest& request,
                        std::string* note = nullptr);

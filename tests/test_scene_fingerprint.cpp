@@ -1,0 +1,46 @@
+// The scene fingerprint that keys cached results (converge's reference): equal for equal
+// scenes, different when anything a render reads changes.
+#include <gtest/gtest.h>
+
+#include "scene/gltf_loader.h"
+#include "scene/scene_fingerprint.h"
+#include "support/gltf_builder.h"
+
+namespace pathcl {
+namespace {
+
+Scene sphere_scene()
+{
+    test::GltfBuilder b;
+    int mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.5f));
+    b.add_root(b.add_node(b.add_sphere_mesh(1.0, 6, 12, mat, /*inward=*/true)));
+    return import_gltf(b.model, "sphere");
+}
+
+TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows)
+{
+    const Scene base = sphere_scene();
+    const std::uint64_t f = scene_fingerprint(base);
+    EXPECT_EQ(scene_fingerprint(sphere_scene()), f);
+    EXPECT_EQ(scene_fingerprint_hex(base).size(), 16u);
+
+    Scene s = base;
+    s.materials[0].roughness += 0.25f;
+    EXPECT_NE(scene_fingerprint(s), f) << "material";
+    s = base;
+    s.triangles[3].v[1].x = std::nextafter(s.triangles[3].v[1].x, 2.0f);
+    EXPECT_NE(scene_fingerprint(s), f) << "one ulp of one vertex";
+    s = base;
+    s.environment.present = true;
+    s.environment.constant = glm::vec3(1.0f);
+    EXPECT_NE(scene_fingerprint(s), f) << "environment";
+    s = base;
+    s.camera.yfov *= 1.01;
+    EXPECT_NE(scene_fingerprint(s), f) << "camera";
+    s = base;
+    s.materials[0].name = "renamed"; // names do not change a render
+    EXPECT_EQ(scene_fingerprint(s), f);
+}
+
+} // namespace
+} // namespace pathcl
