@@ -82,8 +82,8 @@ void add_program_options(CLI::App* command, RenderOptions& options)
         ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case))
         ->default_str("scene");
     command->add_flag("--fast-math", options.fast_math,
-                      "build the kernels with -cl-fast-relaxed-math (a measured opt-in: README \"What accuracy "
-                      "costs\")");
+                      "build the kernels with -cl-unsafe-math-optimizations (fast math; not -cl-finite-math-only, "
+                      "which traversal cannot take; a measured opt-in: README \"What accuracy costs\")");
     command->add_flag("--single-scattering", options.single_scattering,
                       "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
                       "render them; for cross-checks)");

@@ -74,8 +74,13 @@ bool run_convergence(const Scene& scene, const ConvergenceStudy& study, const Im
                 o.batch_spp = kPilotBatchSpp;
         }
         Renderer renderer(scene, o);
+        SettingBuild build = measure_build(scene, o, renderer);
+        RenderRun warmup;
+        warmup.seed = study.base.seed;
+        warmup.spp = 1;
+        build.first_render_seconds = renderer.render(warmup).stats.render_seconds;
         if (cb.setting_built)
-            cb.setting_built(si, measure_build(scene, o, renderer));
+            cb.setting_built(si, build);
         // Adaptive rows: the relMSE times spp of a uniform render, per seed.
         std::vector<double> pilot(study.seeds, 0.0);
         if (adaptive) {

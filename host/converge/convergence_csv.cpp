@@ -30,7 +30,7 @@ std::string csv_header(const ConvergenceStudy& study)
     for (const std::string& k : varied(study))
         h += "," + k;
     return h + ",spp,spp_taken,seed,render_seconds,samples_per_second,rmse,relmse,mean_bias,mean_bias_stderr,"
-               "failing_pixel_fraction,relmse_estimate,stop,build_cold_seconds,build_cached_seconds\n";
+               "failing_pixel_fraction,relmse_estimate,stop,build_cold_seconds,build_cached_seconds,first_render_seconds\n";
 }
 
 std::string csv_line(const ConvergenceStudy& study, const std::vector<SettingBuild>& builds, const ConvergenceRow& r)
@@ -43,7 +43,8 @@ std::string csv_line(const ConvergenceStudy& study, const std::vector<SettingBui
     line += "," + std::to_string(r.spp) + "," + g(r.spp_taken) + "," + std::to_string(r.seed) + "," +
             g(r.render_seconds) + "," + g(r.samples_per_second) + "," + g(r.error.rmse) + "," + g(r.error.relmse) +
             "," + g(r.error.mean_bias) + "," + g(r.error.mean_bias_stderr) + "," + g(r.error.failing_pixels) + "," +
-            g(r.error_estimate) + "," + r.stop + "," + g(b.cold_seconds) + "," + g(b.cached_seconds) + "\n";
+            g(r.error_estimate) + "," + r.stop + "," + g(b.cold_seconds) + "," + g(b.cached_seconds) + "," +
+            g(b.first_render_seconds) + "\n";
     return line;
 }
 

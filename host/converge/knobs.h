@@ -7,7 +7,7 @@
 //   max-bounces         N
 //   stratified-bounces  N
 //   batch-spp           N (0: every render one batch)
-//   fast-math           off, on (-cl-fast-relaxed-math)
+//   fast-math           off, on (-cl-unsafe-math-optimizations)
 //   specialization      scene, all
 //   adaptive            off, on (per-pixel adaptive sampling; see converge/convergence.h)
 #pragma once

@@ -62,8 +62,9 @@ struct RenderOptions {
     // model, for cross-checks).
     bool single_scattering = false;
     Specialization specialization = Specialization::Scene;
-    // Builds with -cl-fast-relaxed-math: a measured opt-in (README "What accuracy costs");
-    // the compiler may then assume no NaN or Inf, which the film's NaN guard relies on.
+    // Builds with -cl-unsafe-math-optimizations (fast math without the finite-math
+    // assumption, which traversal cannot take): a measured opt-in, README "What accuracy
+    // costs".
     bool fast_math = false;
     // Camera-ray log: the rays of the first ray_log_samples sample indices of the pixels
     // on an evenly spaced grid of at most ray_log_grid x ray_log_grid pixels.
