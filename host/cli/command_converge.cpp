@@ -141,7 +141,7 @@ int run_converge(ConvergeRequest rq)
         report.builds[s] = b;
         line.finish();
         if (!rq.quiet)
-            std::fprintf(stderr, "setting %zu/%zu (%s): kernel build %.2f s cold, %.3f s cached, first 1-spp render %.3f s\n",
+            std::fprintf(stderr, "setting %zu/%zu (%s): kernel build %.2f s cold, %.3f s cached, first render %.3f s\n",
                          s + 1, study.settings.size(), study.settings[s].label().c_str(), b.cold_seconds,
                          b.cached_seconds, b.first_render_seconds);
     };

@@ -77,7 +77,7 @@ bool run_convergence(const Scene& scene, const ConvergenceStudy& study, const Im
         SettingBuild build = measure_build(scene, o, renderer);
         RenderRun warmup;
         warmup.seed = study.base.seed;
-        warmup.spp = 1;
+        warmup.spp = adaptive ? 2 * o.batch_spp : 1; // adaptive: the two batches an estimate needs
         build.first_render_seconds = renderer.render(warmup).stats.render_seconds;
         if (cb.setting_built)
             cb.setting_built(si, build);

@@ -39,9 +39,9 @@ std::string reference_key(const Scene& scene, const RenderOptions& reference);
 struct SettingBuild {
     double cold_seconds = 0.0;   // compiled with every cache bypassed
     double cached_seconds = 0.0; // the Renderer's build, from pathcl's cache
-    // A 1-spp render before the ladder, not a row: drivers finish compiling at the first
-    // dispatch (PoCL builds the work-group function then, about 0.8 s on the dev machine),
-    // which would otherwise land on the first row's time.
+    // A render before the ladder, not a row (1 spp; two batches for adaptive settings):
+    // drivers may finish compiling at the first dispatch (PoCL did, about 0.8 s, after a
+    // build that did not come from its cache), which would otherwise land on a row.
     double first_render_seconds = 0.0;
 };
 

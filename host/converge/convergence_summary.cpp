@@ -155,7 +155,7 @@ std::string summary_markdown(const ConvergenceReport& rep)
     md += "| setting | slope vs spp | slope vs time";
     for (double t : targets)
         md += " | time to " + fmt("%g", t);
-    md += " | efficiency | samples/s | mean bias (std. err.) | failing pixels | build cold / cached, first 1-spp render |\n|---|---|---";
+    md += " | efficiency | samples/s | mean bias (std. err.) | failing pixels | build cold / cached, first render |\n|---|---|---";
     for (std::size_t i = 0; i < targets.size(); ++i)
         md += "|---";
     md += "|---|---|---|---|---|\n";
