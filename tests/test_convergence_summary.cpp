@@ -111,6 +111,21 @@ TEST(ConvergenceSummary, CurvesTakeTheMedianAndRangeOverSeeds)
     EXPECT_GT(t[2], 0.0375);
 }
 
+TEST(ConvergenceSummary, ABiasLimitedFirstSettingDoesNotNarrowTheTargets)
+{
+    // The first setting stalls at 0.1 to 0.09 (a bounce limit's bias); two others converge
+    // from 0.15 to 0.0375. Targets from the first curve alone would all sit near 0.09.
+    SettingCurve stalled, converging = setting_curves(two_seed_rows(), 1, {4, 16})[0];
+    stalled.spp = {4, 16};
+    stalled.seconds = {0.04, 0.16};
+    stalled.relmse = stalled.relmse_min = stalled.relmse_max = {0.1, 0.09};
+    std::vector<double> t = default_targets({stalled, converging, converging});
+    ASSERT_EQ(t.size(), 3u);
+    EXPECT_LT(t[0], 0.15);
+    EXPECT_LT(t[2], 0.085);
+    EXPECT_GT(t[2], 0.0375);
+}
+
 TEST(ConvergenceCsv, OneColumnPerKnobAndPerFigure)
 {
     ConvergenceStudy study;

@@ -1,6 +1,7 @@
 #!/bin/sh
 # The studies behind the README's "What accuracy costs": `pathcl converge` on the Cornell
-# box and the glass-and-mirror box at 128x128, varying one group of knobs at a time.
+# box and the glass-and-mirror box at 128x128, varying one group of knobs at a time, and
+# (when no scenes are named) the build options on sky-glass (glass under an environment).
 # Each study writes OUT/<scene>/<study>/ (convergence.csv, summary.md and two plots).
 # The studies at 8 bounces share one reference (8192 Sobol' spp, rendered by the first
 # study and cached there); the bounce study renders its own at 16 bounces, so that it
@@ -12,6 +13,7 @@ cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 OUT=${2:-docs/accuracy}
 [ $# -gt 2 ] && shift 2 || set --
+ALL=$([ $# -eq 0 ] && echo 1 || echo 0)
 SCENES=${*:-"cornell-box cornell-box-glass-mirror"}
 COMMON="--width 128 --height 128 --max-bounces 8 --seeds 3 --quiet"
 LADDER="--spp-ladder 1,2,4,8,16,32,64,128,256"
@@ -36,3 +38,6 @@ for scene in $SCENES; do
     study "$scene" batch-spp $LADDER --reference "$ref" --vary batch-spp=0,4,16,64
     study "$scene" stratified-bounces $LADDER --reference "$ref" --vary stratified-bounces=0,1,2,8
 done
+# What specializing saves where the scene uses more: glass, a mirror and an environment.
+[ "$ALL" -eq 0 ] || study sky-glass build-options $LADDER --reference-spp 8192 \
+    --vary fast-math=off,on --vary specialization=scene,all

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes scenes/sky.hdr (a 64x32 equirectangular sky: a blue gradient, a darker ground
-half and a small bright sun) and scenes/sky-spheres.gltf (a diffuse ground, two spheres
-and a block lit only by that sky through scene extras.environment). The environment
-test scene; no dependencies beyond Python 3 (Radiance RGBE is written by hand).
+half and a small bright sun), scenes/sky-spheres.gltf (a diffuse ground, two spheres
+and a block lit only by that sky through scene extras.environment; the environment
+test scene) and scenes/sky-glass.gltf (the same with a glass sphere and a mirror block).
+No dependencies beyond Python 3 (Radiance RGBE is written by hand).
 
 Usage: python3 tools/make_sky_scene.py [OUT_DIR]
 """
@@ -47,23 +48,34 @@ def write_hdr(path):
             f.write(b"".join(rgbe(*sky((i + 0.5) / W, (j + 0.5) / H)) for i in range(W)))
 
 
-def main():
-    out_dir = sys.argv[1] if len(sys.argv) > 1 else "scenes"
-    write_hdr(os.path.join(out_dir, "sky.hdr"))
+def scene(name, glass):
+    """sky-spheres; with glass, the white sphere is solid glass and the block a mirror
+    (sky-glass: the glass-and-environment scene of README "What accuracy costs")."""
     b = cb.Builder()
     mats = [cb.lambertian("ground", (0.6, 0.6, 0.6)), cb.lambertian("red", (0.7, 0.2, 0.15)),
             cb.lambertian("white", (0.8, 0.8, 0.8))]
+    if glass:
+        mats += [cb.GLASS, cb.MIRROR]
     size = 4000.0
     b.add_mesh("ground", [[(-size, 0, -size), (-size, 0, size), (size, 0, size), (size, 0, -size)]], 0)
     b.add_mesh("sphere_red", cb.sphere_quads(-400, 400, 0, 400), 1)
-    b.add_mesh("sphere_white", cb.sphere_quads(500, 300, 300, 300), 2)
+    b.add_mesh("sphere_white", cb.sphere_quads(500, 300, 300, 300), 3 if glass else 2)
     block = [(200, 0, -700), (700, 0, -700), (700, 600, -700), (200, 600, -700)]
-    b.add_mesh("block_front", [cb.oriented(block, (450, 300, 0))], 2)
+    b.add_mesh("block_front", [cb.oriented(block, (450, 300, 0))], 4 if glass else 2)
     b.nodes.append({"name": "camera", "camera": 0, "translation": [0.0, 0.9, 3.2],
                     "rotation": [-math.sin(math.radians(6)), 0.0, 0.0, math.cos(math.radians(6))]})
-    gltf = b.document("pathcl tools/make_sky_scene.py", "sky-spheres", mats, 0.7,
-                      ["KHR_materials_specular"], {"environment": {"uri": "sky.hdr", "strength": 1.0}})
-    cb.write_gltf(os.path.join(out_dir, "sky-spheres.gltf"), gltf)
+    extensions = ["KHR_materials_specular"]
+    if glass:
+        extensions += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"]
+    return b.document("pathcl tools/make_sky_scene.py", name, mats, 0.7, extensions,
+                      {"environment": {"uri": "sky.hdr", "strength": 1.0}})
+
+
+def main():
+    out_dir = sys.argv[1] if len(sys.argv) > 1 else "scenes"
+    write_hdr(os.path.join(out_dir, "sky.hdr"))
+    cb.write_gltf(os.path.join(out_dir, "sky-spheres.gltf"), scene("sky-spheres", False))
+    cb.write_gltf(os.path.join(out_dir, "sky-glass.gltf"), scene("sky-glass", True))
 
 
 if __name__ == "__main__":

@@ -24,14 +24,16 @@ double mean_samples(const Image& img, std::uint32_t spp)
     return sum / static_cast<double>(img.samples.size());
 }
 
-SettingBuild measure_build(const Scene& scene, const RenderOptions& o, const Renderer& renderer)
+// After the setting's Renderer is made: its build stored the binary if the cache lacked it.
+SettingBuild measure_build(const Scene& scene, const RenderOptions& o)
 {
     SettingBuild b;
     ClDevice dev = open_device(o.devices.empty() ? 0 : o.devices.front());
+    const std::string options = program_build_options(kernel_features(scene, o), o);
     ProgramSource cold;
     cold.use_cache = false;
-    b.cold_seconds = build_program(dev, program_build_options(kernel_features(scene, o), o), cold).seconds;
-    b.cached_seconds = renderer.setup_stats().kernel_build_seconds;
+    b.cold_seconds = build_program(dev, options, cold).seconds;
+    b.cached_seconds = build_program(dev, options, ProgramSource{}).seconds;
     return b;
 }
 
@@ -74,7 +76,7 @@ bool run_convergence(const Scene& scene, const ConvergenceStudy& study, const Im
                 o.batch_spp = kPilotBatchSpp;
         }
         Renderer renderer(scene, o);
-        SettingBuild build = measure_build(scene, o, renderer);
+        SettingBuild build = measure_build(scene, o);
         RenderRun warmup;
         warmup.seed = study.base.seed;
         warmup.spp = adaptive ? 2 * o.batch_spp : 1; // adaptive: the two batches an estimate needs

@@ -38,7 +38,7 @@ std::string reference_key(const Scene& scene, const RenderOptions& reference);
 
 struct SettingBuild {
     double cold_seconds = 0.0;   // compiled with every cache bypassed
-    double cached_seconds = 0.0; // the Renderer's build, from pathcl's cache
+    double cached_seconds = 0.0; // loaded from pathcl's binary cache
     // A render before the ladder, not a row (1 spp; two batches for adaptive settings):
     // drivers may finish compiling at the first dispatch (PoCL did, about 0.8 s, after a
     // build that did not come from its cache), which would otherwise land on a row.

@@ -118,9 +118,17 @@ double time_to_reach(const SettingCurve& c, double target)
 
 std::vector<double> default_targets(const std::vector<SettingCurve>& curves)
 {
-    if (curves.empty() || curves[0].relmse.size() < 2)
+    // Spread between the settings' median first and median last error: a setting whose
+    // bias stops it short (few bounces) neither sets nor narrows the range.
+    std::vector<double> first, last;
+    for (const SettingCurve& c : curves)
+        if (c.relmse.size() >= 2) {
+            first.push_back(c.relmse.front());
+            last.push_back(c.relmse.back());
+        }
+    if (first.empty())
         return {};
-    double hi = std::log(curves[0].relmse.front()), lo = std::log(curves[0].relmse.back());
+    double hi = std::log(median(first)), lo = std::log(median(last));
     std::vector<double> t;
     for (double f : {0.25, 0.5, 0.75}) {
         double v = round_1sig(std::exp(hi + f * (lo - hi)));

@@ -30,8 +30,8 @@ double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
 // interpolated log-linearly between ladder points; NaN when it never does.
 double time_to_reach(const SettingCurve& curve, double target);
 
-// Three targets spread evenly (in log) over the first setting's error range, rounded to
-// one significant digit.
+// Three targets spread evenly (in log) from the settings' median first-point error to
+// their median last-point error, rounded to one significant digit.
 std::vector<double> default_targets(const std::vector<SettingCurve>& curves);
 
 struct ConvergenceReport {

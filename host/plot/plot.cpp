@@ -72,10 +72,15 @@ struct Plot::Impl {
 
     Impl(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 255) {}
 
-    void colour(int series)
+    // The palette entry and dash style of series i: its own, else solid in ten colours,
+    // then dashed styles past ten series.
+    static int colour_of(const PlotSeries& s, std::size_t i)
     {
-        pls.col0(kFirstSeries + series % kSeriesColours);
-        pls.lsty(1 + (series / kSeriesColours) % 8); // solid, then dashed styles past ten series
+        return kFirstSeries + (s.colour >= 0 ? s.colour : static_cast<int>(i)) % kSeriesColours;
+    }
+    static int style_of(const PlotSeries& s, std::size_t i)
+    {
+        return 1 + (s.style >= 0 ? s.style : static_cast<int>(i) / kSeriesColours) % 8;
     }
     void scratch(double r, double g, double b, double alpha)
     {
@@ -83,11 +88,15 @@ struct Plot::Impl {
                    static_cast<PLINT>(b * 255.0), alpha);
         pls.col0(kScratch);
     }
-    // A panel with axes `a` over the plot-coordinate window.
-    void panel(const PlotAxes& a, double x0, double x1, double y0, double y1, bool square)
+    // A panel with axes `a` over the plot-coordinate window; legend_room: the fraction of
+    // the page's width kept free on the right.
+    void panel(const PlotAxes& a, double x0, double x1, double y0, double y1, bool square, double legend_room = 0.0)
     {
         pls.adv(0);
-        pls.vsta();
+        if (legend_room > 0.0)
+            pls.vpor(0.08, 0.98 - legend_room, 0.1, 0.92);
+        else
+            pls.vsta();
         if (square)
             pls.vasp(1.0);
         pls.wind(x0, x1, y0, y1);
@@ -132,7 +141,12 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
     auto [y0, y1] =
         a.y_min < a.y_max ? std::pair(to_axis(a.y_min, a.log_y), to_axis(a.y_max, a.log_y)) : padded_range(ys);
     Impl& m = *impl_;
-    m.panel(a, x0, x1, y0, y1, false);
+    // Room for the legend: about one page-width per 110 characters of its longest line.
+    std::size_t longest = a.legend_title.size();
+    for (const PlotSeries& s : series)
+        longest = std::max(longest, s.label.size());
+    const double legend_room = series.empty() ? 0.0 : std::clamp(0.06 + static_cast<double>(longest) / 110.0, 0.15, 0.45);
+    m.panel(a, x0, x1, y0, y1, false, legend_room);
     for (std::size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
         if (s.y_low.size() != s.x.size() || s.y_high.size() != s.x.size())
@@ -151,14 +165,15 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
             }
         if (px.size() < 3)
             continue;
-        int c = kFirstSeries + static_cast<int>(i) % kSeriesColours;
+        int c = Impl::colour_of(s, i);
         m.scratch(kPaletteR[c] / 255.0, kPaletteG[c] / 255.0, kPaletteB[c] / 255.0, 0.18);
         m.pls.fill(static_cast<PLINT>(px.size()), px.data(), py.data());
     }
     m.pls.width(2.0);
     for (std::size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
-        m.colour(static_cast<int>(i));
+        m.pls.col0(Impl::colour_of(s, i));
+        m.pls.lsty(Impl::style_of(s, i));
         // Runs of drawable points (a log axis breaks the line at values <= 0).
         std::vector<PLFLT> px, py;
         auto flush = [&] {
@@ -182,21 +197,29 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
     m.pls.lsty(1);
     if (series.empty())
         return;
-    const PLINT n = static_cast<PLINT>(series.size());
-    std::vector<PLINT> opt(series.size(), PL_LEGEND_LINE), text_colours(series.size(), kText), line_colours,
-        line_styles;
-    std::vector<PLFLT> line_widths(series.size(), 2.0);
+    // The legend: an optional title line (no line sample), then one entry per series.
+    std::vector<PLINT> opt, text_colours, line_colours, line_styles;
+    std::vector<PLFLT> line_widths;
     std::vector<const char*> text;
-    for (std::size_t i = 0; i < series.size(); ++i) {
-        line_colours.push_back(kFirstSeries + static_cast<int>(i) % kSeriesColours);
-        line_styles.push_back(1 + (static_cast<int>(i) / kSeriesColours) % 8);
-        text.push_back(series[i].label.c_str());
-    }
+    auto entry = [&](PLINT o, const std::string& label, int colour, int style) {
+        opt.push_back(o);
+        text_colours.push_back(kText);
+        line_colours.push_back(colour);
+        line_styles.push_back(style);
+        line_widths.push_back(2.0);
+        text.push_back(label.c_str());
+    };
+    if (!a.legend_title.empty())
+        entry(PL_LEGEND_NONE, a.legend_title, kText, 1);
+    for (std::size_t i = 0; i < series.size(); ++i)
+        entry(PL_LEGEND_LINE, series[i].label, Impl::colour_of(series[i], i), Impl::style_of(series[i], i));
+    const PLINT n = static_cast<PLINT>(opt.size());
     PLFLT legend_width = 0.0, legend_height = 0.0;
-    m.pls.schr(0.0, 0.5);
+    // Smaller text for a long legend, so that it fits the panel's height.
+    const PLFLT text_scale = n > 16 ? 0.55 : 0.75, text_spacing = n > 16 ? 1.3 : 2.0;
     m.pls.legend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-                 PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.01, 0.01, 0.06, 0, kText, 1, n, 1, n,
-                 opt.data(), 0.8, 1.0, 2.2, 0.0, text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr,
+                 PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.01, 0.0, 0.06, 0, kText, 1, n, 1, n,
+                 opt.data(), 0.8, text_scale, text_spacing, 0.0, text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr,
                  line_colours.data(), line_styles.data(), line_widths.data(), nullptr, nullptr, nullptr, nullptr);
     m.pls.schr(0.0, 0.8);
 }

@@ -17,10 +17,14 @@ struct PlotSeries {
     std::string label;
     std::vector<double> x, y;
     std::vector<double> y_low, y_high; // a band around the line (e.g. min and max), or empty
+    // Palette entry and dash style (from 0); -1: from the series' index (ten colours, then
+    // the next dash style). A two-knob study gives one knob the colour, the other the dash.
+    int colour = -1, style = -1;
 };
 
 struct PlotAxes {
     std::string title, x_label, y_label;
+    std::string legend_title; // the legend's first line (e.g. the knobs a label lists)
     bool log_x = false, log_y = false;
     // Limits; from the data (with a margin) where min >= max.
     double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;
@@ -40,7 +44,8 @@ public:
     Plot(const Plot&) = delete;
     Plot& operator=(const Plot&) = delete;
 
-    // Lines (log axes drop points <= 0), each with its band, and a legend.
+    // Lines (log axes drop points <= 0), each with its band, and a legend to the right of
+    // the panel (outside it: it never hides a line).
     void lines(const PlotAxes& axes, const std::vector<PlotSeries>& series);
     // Points of the unit square as dots over grids (the sample visualizer).
     void points(const PlotAxes& axes, const std::vector<glm::vec2>& points, const std::vector<PlotGrid>& grids);
