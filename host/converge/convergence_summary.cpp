@@ -159,15 +159,16 @@ std::string summary_markdown(const ConvergenceReport& rep)
           "least-squares fits of log relMSE against log spp and log time over "
           "the ladder; the time to a target is interpolated on the median curve. "
           "Efficiency is 1 / (relMSE x time) at each setting's largest spp, "
-          "relative to the first setting.\n\n";
+          "relative to the first setting; efficiency (RMSE) is 1 / (RMSE^2 x time), "
+          "which bright pixels dominate where relMSE weighs every pixel alike.\n\n";
     md += "| setting | slope vs spp | slope vs time";
     for (double t : targets)
         md += " | time to " + fmt("%g", t);
-    md += " | efficiency | samples/s | mean bias (std. err.) | failing pixels | build cold / cached, first render |\n|---|---|---";
+    md += " | efficiency | efficiency (RMSE) | samples/s | mean bias (std. err.) | failing pixels | build cold / cached, first render |\n|---|---|---";
     for (std::size_t i = 0; i < targets.size(); ++i)
         md += "|---";
-    md += "|---|---|---|---|---|\n";
-    double first_efficiency = kNaN;
+    md += "|---|---|---|---|---|---|\n";
+    double first_efficiency = kNaN, first_rmse_efficiency = kNaN;
     for (std::size_t s = 0; s < st.settings.size(); ++s) {
         const SettingCurve& c = curves[s];
         md += "| " + st.settings[s].label();
@@ -182,15 +183,20 @@ std::string summary_markdown(const ConvergenceReport& rep)
         double efficiency = 1.0 / (c.relmse.back() * c.seconds.back());
         if (s == 0)
             first_efficiency = efficiency;
-        std::vector<double> rate, bias, bias_se, failing;
+        std::vector<double> rate, bias, bias_se, failing, rmse;
         for (const ConvergenceRow* r : last_point(rep.rows, s)) {
+            rmse.push_back(r->error.rmse);
             rate.push_back(r->samples_per_second);
             bias.push_back(r->error.mean_bias);
             bias_se.push_back(r->error.mean_bias_stderr);
             failing.push_back(r->error.failing_pixels);
         }
+        const double rmse_efficiency = 1.0 / (median(rmse) * median(rmse) * c.seconds.back());
+        if (s == 0)
+            first_rmse_efficiency = rmse_efficiency;
         const SettingBuild b = s < rep.builds.size() ? rep.builds[s] : SettingBuild{};
-        md += " | " + fmt("%.2f", efficiency / first_efficiency) + " | " + fmt("%.3g", median(rate)) + " | " +
+        md += " | " + fmt("%.2f", efficiency / first_efficiency) + " | " +
+              fmt("%.2f", rmse_efficiency / first_rmse_efficiency) + " | " + fmt("%.3g", median(rate)) + " | " +
               fmt("%.2g", median(bias)) + " (" + fmt("%.1g", median(bias_se)) + ") | " +
               fmt("%.2g%%", 100.0 * median(failing)) + " | " + fmt("%.2f", b.cold_seconds) + " / " +
               fmt("%.3f", b.cached_seconds) + " s, " + fmt("%.3f", b.first_render_seconds) + " s |\n";

@@ -1,7 +1,7 @@
 // What a convergence study's rows say: per setting, the curve over the ladder (medians
 // over seeds with their min and max), the fitted slope of log relMSE against log spp and
-// log time, the time to reach error targets, and the efficiency 1 / (relMSE x time)
-// relative to the first setting (summary.md).
+// log time, the time to reach error targets, and the efficiencies 1 / (relMSE x time)
+// and 1 / (RMSE^2 x time) relative to the first setting (summary.md).
 #pragma once
 
 #include <cstdint>
