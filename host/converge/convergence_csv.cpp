@@ -29,8 +29,9 @@ std::string csv_header(const ConvergenceStudy& study)
     std::string h = "setting";
     for (const std::string& k : varied(study))
         h += "," + k;
-    return h + ",spp,spp_taken,seed,render_seconds,samples_per_second,rmse,relmse,mean_bias,mean_bias_stderr,"
-               "failing_pixel_fraction,relmse_estimate,stop,build_cold_seconds,build_cached_seconds,first_render_seconds\n";
+    return h +
+           ",spp,spp_taken,seed,render_seconds,samples_per_second,rmse,relmse,mean_bias,mean_bias_stderr,"
+           "failing_pixel_fraction,relmse_estimate,stop,build_cold_seconds,build_cached_seconds,first_render_seconds\n";
 }
 
 std::string csv_line(const ConvergenceStudy& study, const std::vector<SettingBuild>& builds, const ConvergenceRow& r)

@@ -164,7 +164,8 @@ std::string summary_markdown(const ConvergenceReport& rep)
     md += "| setting | slope vs spp | slope vs time";
     for (double t : targets)
         md += " | time to " + fmt("%g", t);
-    md += " | efficiency | efficiency (RMSE) | samples/s | mean bias (std. err.) | failing pixels | build cold / cached, first render |\n|---|---|---";
+    md += " | efficiency | efficiency (RMSE) | samples/s | mean bias (std. err.) | failing pixels | build cold / "
+          "cached, first render |\n|---|---|---";
     for (std::size_t i = 0; i < targets.size(); ++i)
         md += "|---";
     md += "|---|---|---|---|---|---|\n";

@@ -145,7 +145,8 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
     std::size_t longest = a.legend_title.size();
     for (const PlotSeries& s : series)
         longest = std::max(longest, s.label.size());
-    const double legend_room = series.empty() ? 0.0 : std::clamp(0.06 + static_cast<double>(longest) / 110.0, 0.15, 0.45);
+    const double legend_room =
+        series.empty() ? 0.0 : std::clamp(0.06 + static_cast<double>(longest) / 110.0, 0.15, 0.45);
     m.panel(a, x0, x1, y0, y1, false, legend_room);
     for (std::size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
@@ -218,10 +219,9 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
     // Smaller text for a long legend, so that it fits the panel's height.
     const PLFLT text_scale = n > 16 ? 0.55 : 0.75, text_spacing = n > 16 ? 1.3 : 2.0;
     m.pls.legend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-                 PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.01, 0.0, 0.06, 0, kText, 1, n, 1, n,
-                 opt.data(), 0.8, text_scale, text_spacing, 0.0, text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr,
+                 PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.01, 0.0, 0.06, 0, kText, 1, n, 1, n, opt.data(), 0.8,
+                 text_scale, text_spacing, 0.0, text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr,
                  line_colours.data(), line_styles.data(), line_widths.data(), nullptr, nullptr, nullptr, nullptr);
-    m.pls.schr(0.0, 0.8);
 }
 
 void Plot::points(const PlotAxes& a, const std::vector<glm::vec2>& points, const std::vector<PlotGrid>& grids)
