@@ -198,7 +198,7 @@ void add_budget_flags(CLI::App* render, RenderRequest& rq)
         ->check(CLI::Range(1u, 1u << 30));
     render->add_flag("--adaptive", o.adaptive,
                      "with --target-error: pixels whose estimated error (and their neighbours') reach it stop taking "
-                     "samples");
+                     "samples (slightly biased where rare paths carry much light: README \"What accuracy costs\")");
     auto* progress =
         render->add_flag("--progress", rq.progress, "progress lines on stderr even when it is not a terminal");
     render->add_flag("--quiet", rq.quiet, "no progress line")->excludes(progress);

@@ -141,12 +141,16 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
     auto [y0, y1] =
         a.y_min < a.y_max ? std::pair(to_axis(a.y_min, a.log_y), to_axis(a.y_max, a.log_y)) : padded_range(ys);
     Impl& m = *impl_;
-    // Room for the legend: about one page-width per 110 characters of its longest line.
+    // A long legend gets smaller text, so that it fits the panel's height; room for it:
+    // one page-width per 110 characters of its longest line at that size (80 at the other).
+    const std::size_t entries = series.size() + (a.legend_title.empty() ? 0 : 1);
+    const bool long_legend = entries > 16;
     std::size_t longest = a.legend_title.size();
     for (const PlotSeries& s : series)
         longest = std::max(longest, s.label.size());
     const double legend_room =
-        series.empty() ? 0.0 : std::clamp(0.06 + static_cast<double>(longest) / 110.0, 0.15, 0.45);
+        series.empty() ? 0.0
+                       : std::clamp(0.08 + static_cast<double>(longest) / (long_legend ? 110.0 : 80.0), 0.2, 0.45);
     m.panel(a, x0, x1, y0, y1, false, legend_room);
     for (std::size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
@@ -216,8 +220,7 @@ void Plot::lines(const PlotAxes& a, const std::vector<PlotSeries>& series)
         entry(PL_LEGEND_LINE, series[i].label, Impl::colour_of(series[i], i), Impl::style_of(series[i], i));
     const PLINT n = static_cast<PLINT>(opt.size());
     PLFLT legend_width = 0.0, legend_height = 0.0;
-    // Smaller text for a long legend, so that it fits the panel's height.
-    const PLFLT text_scale = n > 16 ? 0.55 : 0.75, text_spacing = n > 16 ? 1.3 : 2.0;
+    const PLFLT text_scale = long_legend ? 0.55 : 0.75, text_spacing = long_legend ? 1.3 : 2.0;
     m.pls.legend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
                  PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.01, 0.0, 0.06, 0, kText, 1, n, 1, n, opt.data(), 0.8,
                  text_scale, text_spacing, 0.0, text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr,
