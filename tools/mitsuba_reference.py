@@ -352,7 +352,7 @@ def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=(), s
             "far_clip": float(camera.get("zfar", 1e4)),
             "to_world": camera_to_world(mi, camera),
             # Independent samples (the default) so that separately seeded runs are
-            # independent too; tools/mitsuba_efficiency.py also times Mitsuba's others.
+            # independent too; tools/compare_mitsuba.py also times Mitsuba's others.
             "sampler": {"type": sampler, "sample_count": spp},
             "film": {"type": "hdrfilm", "width": width, "height": height,
                      "rfilter": {"type": "box"}, "pixel_format": "rgb",
