@@ -5,7 +5,7 @@
 # Each study writes OUT/<scene>/<study>/ (convergence.csv, summary.md and two plots).
 # The studies at 8 bounces share one reference (8192 Sobol' spp, rendered by the first
 # study and cached there); the bounce study renders its own at 16 bounces, so that it
-# measures what cutting paths short costs. About 40 minutes on the 2-core dev machine;
+# measures what cutting paths short costs. About 30 minutes on the 2-core dev machine;
 # run it on an otherwise idle machine, the times are what it compares.
 #   tools/accuracy_costs.sh [build-dir] [out-dir] [scenes...]
 set -eu
