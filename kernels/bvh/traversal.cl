@@ -32,8 +32,9 @@ static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, 
 }
 
 /* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
- * (shadow rays). Children are visited nearest entry first; the others wait on the stack
- * with their entry distance and are dropped once a closer hit is known. */
+ * (shadow rays; its own loop, in no order). For the closest hit, children are visited
+ * nearest entry first; the others wait on the stack with their entry distance and are
+ * dropped once a closer hit is known. */
 static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles, float3 origin,
                             float3 dir, float t_max, bool any_hit)
 {
@@ -89,8 +90,6 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
                     hit.b1 = b1;
                     hit.b2 = b2;
                     hit.triangle = i;
-                    if (any_hit)
-                        return hit;
                 }
             }
         } else {
