@@ -23,6 +23,16 @@ void FilmSum::add(const std::vector<FilmPixel>& film, const std::vector<pcl_uint
     }
 }
 
+FilmSum::Moments FilmSum::moments(std::size_t i, int c) const
+{
+    Moments m;
+    m.n = sum_[i * 4 + 3]; // samples actually accumulated (bad ones excluded)
+    const double s = sum_[i * 4 + c], q = sum_sq_[i * 4 + c];
+    m.mean = m.n > 0.0 ? s / m.n : 0.0;
+    m.variance = m.n > 1.0 ? std::max(0.0, (q - s * m.mean) / (m.n - 1.0)) : 0.0;
+    return m;
+}
+
 Image FilmSum::image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const
 {
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
@@ -32,16 +42,12 @@ Image FilmSum::image(std::uint32_t width, std::uint32_t height, std::uint32_t sp
     img.spp = spp;
     img.rgb.resize(pixels * 3);
     img.variance.resize(pixels * 3);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        double n = sum_[i * 4 + 3]; // samples actually accumulated (bad ones excluded)
+    for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) {
-            double s = sum_[i * 4 + c], q = sum_sq_[i * 4 + c];
-            double mean = n > 0.0 ? s / n : 0.0;
-            double var = n > 1.0 ? std::max(0.0, (q - s * mean) / (n - 1.0)) : 0.0;
-            img.rgb[i * 3 + c] = static_cast<float>(mean);
-            img.variance[i * 3 + c] = static_cast<float>(var);
+            const Moments m = moments(i, c);
+            img.rgb[i * 3 + c] = static_cast<float>(m.mean);
+            img.variance[i * 3 + c] = static_cast<float>(m.variance);
         }
-    }
     return img;
 }
 
@@ -94,9 +100,8 @@ double FilmAccumulator::pixel_channel_estimate(std::size_t i, int c) const
     double k = pixel_batches_[i];
     double s = batch_mean_sum_[i * 3 + c], q = batch_mean_sq_[i * 3 + c];
     double spread = std::max(0.0, (q - s * s / k) / (k - 1.0)); // variance of one batch mean
-    double n = total_.sum_[i * 4 + 3];
-    double mean = total_.sum_[i * 4 + c] / n;
-    return spread * batch_spp_ / n / (mean * mean + kRelMseEpsilon);
+    const FilmSum::Moments m = total_.moments(i, c);
+    return spread * batch_spp_ / m.n / (m.mean * m.mean + kRelMseEpsilon);
 }
 
 double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
@@ -125,14 +130,11 @@ double FilmAccumulator::per_sample_relmse_estimate() const
     double sum = 0.0;
     std::size_t terms = 0;
     for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
-        double n = total_.sum_[i * 4 + 3];
-        if (!(n > 1.0))
+        if (!(total_.sum_[i * 4 + 3] > 1.0))
             continue;
         for (int c = 0; c < 3; ++c) {
-            double s = total_.sum_[i * 4 + c], q = total_.sum_sq_[i * 4 + c];
-            double mean = s / n;
-            double var = std::max(0.0, (q - s * mean) / (n - 1.0));
-            sum += var / n / (mean * mean + kRelMseEpsilon);
+            const FilmSum::Moments m = total_.moments(i, c);
+            sum += m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
         }
         terms += 3;
     }

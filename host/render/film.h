@@ -32,6 +32,11 @@ public:
 
 private:
     friend class FilmAccumulator;
+    struct Moments {
+        double n = 0.0, mean = 0.0, variance = 0.0; // samples, mean, per-sample variance (0 below 2)
+    };
+    Moments moments(std::size_t pixel, int channel) const;
+
     std::vector<double> sum_, sum_sq_; // four channels per pixel: rgb and the sample count
     std::uint64_t bad_ = 0;
 };
