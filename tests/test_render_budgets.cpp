@@ -36,6 +36,12 @@ const Image& cornell_reference()
     return ref;
 }
 
+const Scene& glass_mirror_box()
+{
+    static Scene s = load_gltf(kSource + "/scenes/cornell-box-glass-mirror.gltf");
+    return s;
+}
+
 RenderOptions cornell_options(SamplerType sampler)
 {
     RenderOptions o = test::independent_options();
@@ -183,7 +189,7 @@ TEST(Specialization, EveryFeatureCompiledInRendersTheSameImage)
     // The glass-and-mirror box uses transmission and glossy lobes but no texture, vertex
     // colour, thin lens, environment or punctual light: the full variant reads arrays the
     // scene does not fill (white colours) and runs branches it never takes.
-    Scene scene = load_gltf(kSource + "/scenes/cornell-box-glass-mirror.gltf");
+    const Scene& scene = glass_mirror_box();
     RenderOptions o = cornell_options(SamplerType::Independent);
     o.spp = 256;
     RenderOptions all = o;
@@ -201,7 +207,7 @@ TEST(FastMath, RendersTheReferenceImage)
 {
     // Reordered and contracted arithmetic may move a pixel by ulps, never the image:
     // glass (refraction, Fresnel) and mirrors are where a dropped check would show.
-    Scene scene = load_gltf(kSource + "/scenes/cornell-box-glass-mirror.gltf");
+    const Scene& scene = glass_mirror_box();
     RenderOptions o = cornell_options(SamplerType::Independent);
     o.spp = 256;
     o.fast_math = true;
