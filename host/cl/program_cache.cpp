@@ -1,5 +1,7 @@
 #include "cl/program_cache.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -11,13 +13,53 @@
 namespace pathcl {
 namespace {
 
-std::uint64_t fnv1a64(const std::string& s, std::uint64_t h = 0xcbf29ce484222325ull)
+constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ull;
+constexpr char kMagic[8] = {'P', 'A', 'T', 'H', 'C', 'L', 'K', 'C'};
+// Bump when the entry layout changes: older entries then read as misses.
+constexpr std::uint32_t kFormatVersion = 1;
+
+std::uint64_t fnv1a64(const unsigned char* p, std::size_t n, std::uint64_t h = kFnvBasis)
 {
-    for (unsigned char c : s) {
-        h ^= c;
+    for (std::size_t i = 0; i < n; ++i) {
+        h ^= p[i];
         h *= 0x100000001b3ull;
     }
     return h;
+}
+
+std::uint64_t fnv1a64(const std::string& s, std::uint64_t h = kFnvBasis)
+{
+    return fnv1a64(reinterpret_cast<const unsigned char*>(s.data()), s.size(), h);
+}
+
+void put_le(std::vector<unsigned char>& out, std::uint64_t v, int bytes)
+{
+    for (int i = 0; i < bytes; ++i)
+        out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+std::uint64_t get_le(const unsigned char* p, int bytes)
+{
+    std::uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i)
+        v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+}
+
+// Everything the checksum follows: magic, version, key length and key, body length.
+std::vector<unsigned char> entry_header(const std::string& key, std::uint64_t body_size)
+{
+    std::vector<unsigned char> h(std::begin(kMagic), std::end(kMagic));
+    put_le(h, kFormatVersion, 4);
+    put_le(h, key.size(), 4);
+    h.insert(h.end(), key.begin(), key.end());
+    put_le(h, body_size, 8);
+    return h;
+}
+
+std::uint64_t entry_checksum(const std::vector<unsigned char>& header, const unsigned char* body, std::size_t n)
+{
+    return fnv1a64(body, n, fnv1a64(header.data(), header.size()));
 }
 
 std::filesystem::path cache_dir()
@@ -30,6 +72,19 @@ std::filesystem::path cache_dir()
         return std::filesystem::path(home) / ".cache" / "pathcl";
     return {};
 }
+
+// Removes the temporary file on every way out of a store but a successful rename.
+struct TempFile {
+    std::filesystem::path path;
+    bool renamed = false;
+    ~TempFile()
+    {
+        if (!renamed) {
+            std::error_code ec;
+            std::filesystem::remove(path, ec);
+        }
+    }
+};
 
 } // namespace
 
@@ -48,12 +103,28 @@ std::optional<std::vector<unsigned char>> program_cache_load(const std::string& 
     std::filesystem::path dir = cache_dir();
     if (dir.empty())
         return std::nullopt;
-    std::ifstream f(dir / (key + ".bin"), std::ios::binary);
-    if (!f)
+    // The body length is whatever the file holds past the header; the stored header must
+    // then match, byte for byte, the one this key and length give. A bad entry is left in
+    // place (the rebuild's store replaces it): deleting it could race a writer's rename.
+    const std::filesystem::path path = dir / (key + ".bin");
+    const std::size_t overhead = sizeof kMagic + 4 + 4 + key.size() + 8 + 8;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec); // fails for a directory
+    if (ec || size <= overhead)
         return std::nullopt;
-    std::vector<unsigned char> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-    if (data.empty())
+    // read(), unlike a streambuf iterator, reports a read error in the stream state rather
+    // than by throwing.
+    std::vector<unsigned char> data(size);
+    std::ifstream f(path, std::ios::binary);
+    if (!f.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(size)))
         return std::nullopt;
+    const std::size_t body_size = data.size() - overhead;
+    const std::vector<unsigned char> header = entry_header(key, body_size);
+    if (!std::equal(header.begin(), header.end(), data.begin()))
+        return std::nullopt;
+    if (get_le(data.data() + header.size(), 8) != entry_checksum(header, data.data() + overhead, body_size))
+        return std::nullopt;
+    data.erase(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(overhead));
     return data;
 }
 
@@ -64,19 +135,23 @@ void program_cache_store(const std::string& key, const std::vector<unsigned char
         return;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    // Write to a private name, then rename: readers never see a partial binary.
-    std::filesystem::path tmp = dir / (key + ".tmp." + std::to_string(::getpid()));
+    std::vector<unsigned char> header = entry_header(key, binary.size());
+    put_le(header, entry_checksum(header, binary.data(), binary.size()), 8);
+    // Write to a private name (per process and per call), then rename: readers never see a
+    // partial entry.
+    static std::atomic<unsigned> serial{0};
+    TempFile tmp{dir / (key + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(serial++))};
     {
-        std::ofstream f(tmp, std::ios::binary);
-        if (!f)
-            return;
+        std::ofstream f(tmp.path, std::ios::binary);
+        f.write(reinterpret_cast<const char*>(header.data()), static_cast<std::streamsize>(header.size()));
         f.write(reinterpret_cast<const char*>(binary.data()), static_cast<std::streamsize>(binary.size()));
-        if (!f)
+        // Buffered bytes reach the file at close: a full disk may only show there.
+        f.close();
+        if (f.fail())
             return;
     }
-    std::filesystem::rename(tmp, dir / (key + ".bin"), ec);
-    if (ec)
-        std::filesystem::remove(tmp, ec);
+    std::filesystem::rename(tmp.path, dir / (key + ".bin"), ec);
+    tmp.renamed = !ec;
 }
 
 } // namespace pathcl

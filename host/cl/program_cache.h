@@ -3,6 +3,13 @@
 // other drivers may not; this one works for all. Directory: $PATHCL_CACHE_DIR, else
 // $XDG_CACHE_HOME/pathcl, else ~/.cache/pathcl. Any failure to read or write it only costs
 // a recompile.
+//
+// Each entry, <key>.bin, is a header then the driver's binary: magic "PATHCLKC", format
+// version (u32), key length (u32) and bytes, binary length (u64), then a 64-bit FNV-1a of
+// all of that and the binary (u64); integers little-endian. Drivers crash on malformed
+// binaries and a valid one under the wrong key renders the wrong program, so an entry that
+// fails any check (truncated, corrupted, renamed, older format) is a miss: it is rebuilt
+// and rewritten, never handed to the driver.
 #pragma once
 
 #include <optional>
