@@ -151,7 +151,7 @@ TEST_P(GltfBadImageUri, ThrowsOneLineNamingTheFile)
 
 INSTANTIATE_TEST_SUITE_P(
     GltfBrokenData, GltfBadImageUri,
-    ::testing::Values(UriCase{"MissingFile", "missing.png", "cannot read the file"},
+    ::testing::Values(UriCase{"MissingFile", "missing.png", "no such file in the scene's directory"},
                       UriCase{"AbsolutePath", "ABSOLUTE", "is absolute"},
                       UriCase{"HttpScheme", "http://example.com/a.png", "the URI scheme 'http:' is not read"},
                       UriCase{"FileScheme", "file:///tmp/a.png", "the URI scheme 'file:' is not read"},

@@ -29,6 +29,16 @@ std::string as_is(const std::string& parameter)
 
 } // namespace
 
+std::string one_line(std::string text)
+{
+    for (char& c : text)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+    return text;
+}
+
 Error::Error(const std::string& message) : std::runtime_error(message)
 {}
 

@@ -29,6 +29,10 @@ private:
     std::string parameter_, detail_;
 };
 
+// `text` on one line: line breaks become spaces, trailing blanks go (for the messages of
+// libraries, which end in or contain newlines).
+std::string one_line(std::string text);
+
 // Prints a warning line to stderr ("pathcl: warning: ...").
 void warn(const std::string& message);
 

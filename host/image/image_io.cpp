@@ -1,12 +1,15 @@
 #include "image/image_io.h"
 
+#include <fcntl.h>
 #include <filesystem>
+#include <unistd.h>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include "common/error.h"
+#include "common/muted_stderr.h"
 #include "common/staged_files.h"
 
 namespace pathcl {
@@ -16,6 +19,47 @@ namespace fs = std::filesystem;
 using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
+
+// Whether `file` is on disk whole: flushed (fsync reports a write the kernel could not
+// complete) and read back to the last pixel. The image writers do not all report a failed
+// write (libpng's can leave a 0-byte file and succeed), so the renamed file is never
+// trusted blindly.
+bool written_completely(const std::string& file, int width, int height)
+{
+    MutedStderr muted;
+    int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return false;
+    bool synced = ::fsync(fd) == 0;
+    ::close(fd);
+    if (!synced)
+        return false;
+    auto in = OIIO::ImageInput::open(file);
+    if (!in || in->spec().width != width || in->spec().height != height)
+        return false;
+    std::vector<float> px(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                          static_cast<std::size_t>(in->spec().nchannels));
+    bool ok = in->read_image(0, 0, 0, in->spec().nchannels, TypeDesc::FLOAT, px.data());
+    (void)in->geterror(); // clear OIIO's per-thread error, so it is not printed later
+    return ok;
+}
+
+// The header of an image to be read whole: a regular file (a FIFO would block), of at most
+// kMaxImagePixels; checked before any pixel is decoded.
+void check_image_header(const std::string& path)
+{
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        throw Error(path + (fs::exists(path, ec) ? ": is not a regular file" : ": no such file"));
+    auto in = OIIO::ImageInput::open(path);
+    if (!in)
+        throw Error(path + ": cannot read image: " + one_line(OIIO::geterror()));
+    const ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
+        static_cast<std::size_t>(spec.width) > kMaxImagePixels / static_cast<std::size_t>(spec.height))
+        throw Error(path + ": unsupported image size " + std::to_string(spec.width) + "x" +
+                    std::to_string(spec.height) + " (at most " + std::to_string(kMaxImagePixels) + " pixels)");
+}
 
 } // namespace
 
@@ -73,10 +117,11 @@ void write_image_file(const std::string& file, const std::string& path, const Im
     if (out.has_error())
         throw Error(path + ": cannot prepare image: " + out.geterror());
 
-    if (!out.write(file)) {
+    if (!out.write(file) || !written_completely(file, w, h)) {
+        std::string why = out.has_error() ? out.geterror() : "the file on disk is incomplete (is the disk full?)";
         std::error_code ec;
         fs::remove(file, ec);
-        throw Error(path + ": cannot write: " + out.geterror());
+        throw Error(path + ": cannot write: " + why);
     }
 }
 
@@ -89,9 +134,11 @@ void write_image(const std::string& path, const Image& img)
 
 Image read_image(const std::string& path)
 {
+    MutedStderr muted; // image libraries' own lines; their errors reach us by geterror()
+    check_image_header(path);
     ImageBuf in(path);
     if (!in.read(0, 0, true, TypeDesc::FLOAT))
-        throw Error(path + ": cannot read image: " + in.geterror());
+        throw Error(path + ": cannot read image: " + one_line(in.geterror()));
     const ImageSpec& spec = in.spec();
     auto channel = [&](const char* name) { return spec.channelindex(name); };
     int r = channel("R"), g = channel("G"), b = channel("B");

@@ -7,6 +7,7 @@
 // never destroys an existing one.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "image/image.h"
@@ -22,7 +23,12 @@ void write_image(const std::string& path, const Image& image);
 // renames it), in the format path's extension names.
 void write_image_file(const std::string& file, const std::string& path, const Image& image);
 
-// Reads an EXR written by write_image (variance channels optional: zero if absent).
+// Images read whole (an environment map, a render to compare) may have at most 2^27
+// pixels (16384 x 8192, 1.5 GiB as float RGB); the size is checked from the header.
+constexpr std::size_t kMaxImagePixels = std::size_t(1) << 27;
+
+// Reads an EXR written by write_image (variance channels optional: zero if absent), or
+// any image OpenImageIO reads, from a regular file of at most kMaxImagePixels pixels.
 Image read_image(const std::string& path);
 
 } // namespace pathcl

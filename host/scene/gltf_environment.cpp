@@ -1,13 +1,13 @@
-// import_environment: the uri is resolved, made canonical and compared, component by
-// component, with the canonical scene directory, so neither ".." nor a link leads out.
+// import_environment: the uri must name a regular file inside the scene's directory
+// (confined_path: neither ".." nor a link leads out).
 #include "scene/gltf_environment.h"
 
-#include <algorithm>
-#include <filesystem>
+#include <cmath>
 
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/confined_files.h"
 #include "scene/environment_image.h"
 #include "scene/gltf_values.h"
 
@@ -22,17 +22,11 @@ SceneEnvironment import_environment(const tinygltf::Value& extras, const std::st
     const tinygltf::Value& env = extras.Get("environment");
     if (!env.IsObject() || !env.Has("uri") || !env.Get("uri").IsString())
         throw Error(source + ": scene extras.environment needs a string \"uri\"");
-    namespace fs = std::filesystem;
     std::string uri = env.Get("uri").Get<std::string>();
-    fs::path dir = fs::weakly_canonical(fs::path(base_dir.empty() ? "." : base_dir));
-    fs::path file = fs::weakly_canonical(dir / uri);
-    auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
-    if (d != dir.end() || fs::path(uri).is_absolute())
-        throw Error(source + ": environment uri '" + uri + "' leaves the scene's directory");
-    read_environment_image(environment, file.string());
+    read_environment_image(environment, confined_path(base_dir, uri, source + ": environment uri '" + uri + "'"));
     environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
-    if (!(environment.strength >= 0.0f))
-        throw Error(source + ": environment strength must be non-negative");
+    if (!(environment.strength >= 0.0f) || !std::isfinite(environment.strength))
+        throw Error(source + ": environment strength must be finite and non-negative");
     return environment;
 }
 

@@ -10,12 +10,14 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "common/muted_stderr.h"
 
 namespace pathcl {
 namespace {
 
-// Largest image accepted: 2^28 texels (1 GiB of RGBA8), far beyond any glTF texture.
-constexpr std::size_t kMaxTexels = std::size_t(1) << 28;
+// Largest image accepted: 2^27 texels (16384 x 8192; 512 MiB as RGBA8), beyond any glTF
+// texture; checked from the header, before anything is decoded.
+constexpr std::size_t kMaxTexels = std::size_t(1) << 27;
 
 // The format plugin for the bytes' signature: glTF 2.0 images are PNG or JPEG.
 const char* image_format(const unsigned char* b, std::size_t size)
@@ -26,16 +28,6 @@ const char* image_format(const unsigned char* b, std::size_t size)
     if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
         return "jpeg";
     return nullptr;
-}
-
-std::string one_line(std::string s)
-{
-    for (char& c : s)
-        if (c == '\n' || c == '\r')
-            c = ' ';
-    while (!s.empty() && s.back() == ' ')
-        s.pop_back();
-    return s;
 }
 
 void check_size(std::size_t width, std::size_t height, const std::string& what)
@@ -73,6 +65,7 @@ SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std:
     const char* format = image_format(bytes, size);
     if (!format)
         throw Error(what + ": not a PNG or JPEG image (the formats glTF 2.0 allows)");
+    MutedStderr muted; // libpng prints its errors too; OpenImageIO hands them to us
     OIIO::Filesystem::IOMemReader reader(bytes, size);
     auto in = OIIO::ImageInput::create(format);
     if (!in || !in->set_ioproxy(&reader))
@@ -154,33 +147,15 @@ void check_image_uri(const std::string& uri, const std::string& what)
         throw Error(what + ": the image path '" + uri + "' is absolute (image URIs are relative to the glTF file)");
 }
 
-bool load_gltf_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
-                     const unsigned char* bytes, int size, void*)
+bool keep_encoded_image(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                        int size, void*)
 {
     if (image->bufferView >= 0)
         return true; // decoded by the importer, which checks the view against its buffer first
-    std::string what = "image " + std::to_string(index) + (image->uri.empty() ? "" : " '" + image->uri + "'");
-    try {
-        if (!image->uri.empty())
-            check_image_uri(image->uri, what);
-        SceneImage img = decode_image(bytes, size > 0 ? static_cast<std::size_t>(size) : 0, what);
-        image->width = static_cast<int>(img.width);
-        image->height = static_cast<int>(img.height);
-        image->component = 4;
-        image->bits = img.bits;
-        image->pixel_type =
-            img.bits == 16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-        if (img.bits == 16)
-            image->image.assign(reinterpret_cast<const unsigned char*>(img.rgba16.data()),
-                                reinterpret_cast<const unsigned char*>(img.rgba16.data() + img.rgba16.size()));
-        else
-            image->image = std::move(img.rgba8);
-        return true;
-    } catch (const Error& e) {
-        if (err)
-            *err += e.what();
-        return false;
-    }
+    image->image.assign(bytes, bytes + std::max(size, 0));
+    image->bits = 0; // encoded bytes, not pixels
+    image->component = 0;
+    return true;
 }
 
 } // namespace pathcl

@@ -1,7 +1,7 @@
 // Images of a glTF file: PNG and JPEG bytes (from files, data: URIs and bufferViews)
 // decoded by OpenImageIO into RGBA SceneImages, and the rule for which image URIs are
-// read. tinygltf decodes nothing itself: load_gltf installs load_gltf_image as its image
-// loader, and the importer decodes bufferView images (.glb) with decode_image.
+// read. tinygltf decodes nothing itself: load_gltf installs keep_encoded_image as its
+// image loader, and the importer decodes the images textures use with decode_image.
 #pragma once
 
 #include <cstddef>
@@ -20,20 +20,20 @@ namespace pathcl {
 // pathcl::Error("what: ...") for any other format or for undecodable bytes.
 SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what);
 
-// The pixels tinygltf holds for an image (as load_gltf_image leaves them, or as a program
-// filled them in): width x height x component (1 to 4) channels of `bits` (8 or 16),
-// expanded to RGBA. Throws pathcl::Error("what: ...") when they are inconsistent.
+// The pixels tinygltf holds for an image (as a program filled them in): width x height x component (1 to 4) channels of
+// `bits` (8 or 16), expanded to RGBA. Throws pathcl::Error("what: ...") when they are inconsistent.
 SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what);
 
 // Image URIs are relative paths (resolved against the glTF file's directory) or data:
 // URIs. Throws pathcl::Error("what: ...") for an absolute path or any other scheme.
 void check_image_uri(const std::string& uri, const std::string& what);
 
-// tinygltf's image loader callback (TinyGLTF::SetImageLoader): decodes the bytes of a
-// uri or data: image with decode_image into image->image as RGBA (component 4, bits 8 or
-// 16). bufferView images are left undecoded (the importer decodes them after checking the
-// view's bounds, which tinygltf does not). On failure returns false with *err set.
-bool load_gltf_image(tinygltf::Image* image, int index, std::string* err, std::string* warn, int req_width,
-                     int req_height, const unsigned char* bytes, int size, void* user_data);
+// tinygltf's image loader callback (TinyGLTF::SetImageLoader): keeps the bytes of a uri
+// or data: image undecoded in image->image and marks them so with bits 0; the importer
+// decodes an image only when a texture uses it, so an unused image costs no memory.
+// bufferView images are left alone (the importer reads them after checking the view's
+// bounds, which tinygltf does not). Never fails.
+bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string* warn, int req_width,
+                        int req_height, const unsigned char* bytes, int size, void* user_data);
 
 } // namespace pathcl

@@ -28,6 +28,8 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
     if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || color.x < 0.0 || color.y < 0.0 || color.z < 0.0)
         throw Error(source + ": " + name + ": color and intensity must be finite and non-negative");
     out.intensity = glm::vec3(color * l.intensity);
+    if (!std::isfinite(out.intensity.x) || !std::isfinite(out.intensity.y) || !std::isfinite(out.intensity.z))
+        throw Error(source + ": " + name + ": color times intensity overflows single precision");
     glm::dmat3 m3(world);
     glm::dvec3 dir = m3 * glm::dvec3(0.0, 0.0, -1.0);
     glm::dvec3 right = m3 * glm::dvec3(1.0, 0.0, 0.0);
@@ -45,6 +47,11 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
             double scale = std::cbrt(std::fabs(glm::determinant(m3)));
             if (!(radius > 0.0) || !std::isfinite(radius * scale))
                 throw Error(source + ": " + name + ": extras.radius must be a positive number");
+            // The emitted radiance is intensity / (pi r^2), in single precision on the device.
+            glm::dvec3 radiance = glm::dvec3(out.intensity) / (std::numbers::pi * radius * scale * radius * scale);
+            if (!(static_cast<float>(radius * scale) > 0.0f) || !std::isfinite(static_cast<float>(radiance.x)) ||
+                !std::isfinite(static_cast<float>(radiance.y)) || !std::isfinite(static_cast<float>(radiance.z)))
+                throw Error(source + ": " + name + ": extras.radius is so small that the sphere's radiance overflows");
             out.type = SceneLight::Type::Sphere;
             out.radius = radius * scale;
         }

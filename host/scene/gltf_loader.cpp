@@ -14,7 +14,9 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/confined_files.h"
 #include "scene/gltf_camera.h"
+#include "scene/gltf_container.h"
 #include "scene/gltf_environment.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_lights.h"
@@ -27,13 +29,8 @@
 namespace pathcl {
 namespace {
 
-std::string one_line(std::string s)
-{
-    std::replace(s.begin(), s.end(), '\n', ' ');
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\r'))
-        s.pop_back();
-    return s;
-}
+// A .gltf or .glb larger than this is refused (a GLB cannot be larger: its length is 32 bits).
+constexpr std::size_t kMaxGltfFileBytes = 0xffffffffu;
 
 glm::dmat4 local_transform(const tinygltf::Node& node)
 {
@@ -105,6 +102,40 @@ struct Importer {
                  " zero-length or NaN normals by the geometric normal");
     }
 
+    // glTF nodes form disjoint trees: a node has at most one parent and a scene's roots
+    // have none. Checked before the walk, which could otherwise loop forever (a cycle) or
+    // visit a node exponentially often (a chain of nodes that each list the next twice).
+    void check_forest(const std::vector<int>& roots) const
+    {
+        const int n = static_cast<int>(model.nodes.size());
+        auto check_index = [&](int node) {
+            if (node < 0 || node >= n)
+                throw Error(source + ": node index " + std::to_string(node) + " does not exist");
+        };
+        std::vector<int> parent(model.nodes.size(), -1);
+        for (int i = 0; i < n; ++i)
+            for (int child : model.nodes[static_cast<std::size_t>(i)].children) {
+                check_index(child);
+                int& p = parent[static_cast<std::size_t>(child)];
+                if (p >= 0)
+                    throw Error(source + ": node " + std::to_string(child) + " is a child of node " +
+                                std::to_string(p) + " and of node " + std::to_string(i) +
+                                " (a glTF node has at most one parent)");
+                p = i;
+            }
+        std::vector<bool> is_root(model.nodes.size(), false);
+        for (int root : roots) {
+            check_index(root);
+            if (parent[static_cast<std::size_t>(root)] >= 0)
+                throw Error(source + ": root node " + std::to_string(root) + " is a child of node " +
+                            std::to_string(parent[static_cast<std::size_t>(root)]) +
+                            " (the hierarchy has a cycle or a root that is not a root)");
+            if (is_root[static_cast<std::size_t>(root)])
+                throw Error(source + ": the scene lists root node " + std::to_string(root) + " twice");
+            is_root[static_cast<std::size_t>(root)] = true;
+        }
+    }
+
     // Walks the hierarchy below `roots` depth first, composing the node transforms in
     // double precision, and imports each node's mesh and light, and the chosen camera
     // (into scene.camera, still in world space). Returns whether it found that camera.
@@ -116,19 +147,14 @@ struct Importer {
         struct Item {
             int node;
             glm::dmat4 parent;
-            int depth;
         };
+        check_forest(roots);
         std::vector<Item> stack;
         for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-            stack.push_back({*it, glm::dmat4(1.0), 0});
-        const int max_depth = static_cast<int>(model.nodes.size()) + 1; // deeper means a cycle
+            stack.push_back({*it, glm::dmat4(1.0)});
         while (!stack.empty()) {
             Item item = stack.back();
             stack.pop_back();
-            if (item.node < 0 || item.node >= static_cast<int>(model.nodes.size()))
-                throw Error(source + ": node index " + std::to_string(item.node) + " does not exist");
-            if (item.depth > max_depth)
-                throw Error(source + ": the node hierarchy has a cycle");
             const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(item.node)];
             glm::dmat4 world = item.parent * local_transform(node);
             std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " '" + node.name + "'");
@@ -154,7 +180,7 @@ struct Importer {
                 }
             }
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
-                stack.push_back({*it, world, item.depth + 1});
+                stack.push_back({*it, world});
         }
         if (camera_choice >= 0 && !have_camera)
             throw ParameterError("camera", "there is no camera node " + std::to_string(camera_choice) + ": " + source +
@@ -178,17 +204,36 @@ Scene load_gltf(const std::string& path, int camera)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(path + ": no such file");
+        throw Error(path + (std::filesystem::exists(path, ec) ? ": is not a regular file" : ": no such file"));
+    // Read here, not by tinygltf: the container and the JSON nesting are checked first.
+    std::vector<unsigned char> bytes = read_regular_file(path, kMaxGltfFileBytes);
+    bool binary = is_glb(bytes.data(), bytes.size());
+    if (binary)
+        check_glb(bytes.data(), bytes.size(), path);
+    else
+        check_json_nesting(bytes.data(), bytes.size(), path);
+    std::string base_dir = std::filesystem::path(path).parent_path().string();
+    ConfinedFiles files(base_dir);
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(load_gltf_image, nullptr); // OpenImageIO decodes, not tinygltf
+    loader.SetFsCallbacks(files.callbacks());
+    loader.SetImageLoader(keep_encoded_image, nullptr); // decoded later, and only if a texture uses it
     tinygltf::Model model;
     std::string err, warning;
-    bool binary = std::filesystem::path(path).extension() == ".glb";
-    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warning, path)
-                     : loader.LoadASCIIFromFile(&model, &err, &warning, path);
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warning, bytes.data(),
+                                                   static_cast<unsigned int>(bytes.size()), base_dir)
+                     : loader.LoadASCIIFromString(&model, &err, &warning, reinterpret_cast<const char*>(bytes.data()),
+                                                  static_cast<unsigned int>(bytes.size()), base_dir);
+    if (!ok && !files.refusals().empty())
+        throw Error(path + ": " + files.refusals().front());
     if (!ok)
         throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
-    return import_gltf(model, path, std::filesystem::path(path).parent_path().string(), camera);
+    Importer importer(model, path, base_dir);
+    importer.camera_choice = camera;
+    importer.textures.set_refusals(&files.refusals());
+    importer.run();
+    importer.scene.input_files = files.files_read();
+    importer.scene.input_files.push_back(path);
+    return std::move(importer.scene);
 }
 
 } // namespace pathcl

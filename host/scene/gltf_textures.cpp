@@ -164,11 +164,20 @@ int TextureImporter::image(int gltf_image, const std::string& where)
             if (!im.uri.empty())
                 check_image_uri(im.uri, what);
             if (im.image.empty()) {
+                for (const std::string& r : refusals_ ? *refusals_ : std::vector<std::string>{})
+                    if (r.rfind(im.uri + ":", 0) == 0)
+                        throw Error(what + r.substr(im.uri.size()));
                 std::string file = (std::filesystem::path(base_dir_.empty() ? "." : base_dir_) / im.uri).string();
                 throw Error(what + (im.uri.empty() ? ": has no image data" : ": cannot read the file '" + file + "'"));
             }
-            decoded = image_from_pixels(im, what);
+            // bits 0: the encoded bytes keep_encoded_image kept; else pixels a program set.
+            decoded = im.bits == 0 ? decode_image(im.image.data(), im.image.size(), what) : image_from_pixels(im, what);
         }
+        std::size_t bytes = decoded.rgba8.size() + 2 * decoded.rgba16.size();
+        if (bytes > kMaxTotalImageBytes - image_bytes_)
+            throw Error(what + ": the decoded images would exceed the limit of " +
+                        std::to_string(kMaxTotalImageBytes >> 20) + " MiB");
+        image_bytes_ += bytes;
     } catch (const Error& e) {
         throw Error(source_ + ": " + where + ": " + e.what());
     }

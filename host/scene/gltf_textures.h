@@ -4,6 +4,7 @@
 // mode, filter or transform, or an unreadable image, is a pathcl::Error naming the file.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,14 @@ public:
     // The images read so far, indexed by SceneTexture::image.
     std::vector<SceneImage> take_images() { return std::move(images_); }
 
+    // The reasons the file-system callbacks gave for refusing files ("uri: reason"), so
+    // that an image left unread says why; null if none were kept.
+    void set_refusals(const std::vector<std::string>* refusals) { refusals_ = refusals; }
+
+    // All decoded images together may hold at most this many bytes (4 GiB): a few small
+    // PNGs of huge dimensions must not exhaust the host's memory.
+    static constexpr std::size_t kMaxTotalImageBytes = std::size_t(4) << 30;
+
 private:
     int image(int gltf_image, const std::string& where);
 
@@ -40,6 +49,8 @@ private:
     std::string source_, base_dir_;
     std::vector<int> scene_image_; // glTF image index -> index in images_, -1 until read
     std::vector<SceneImage> images_;
+    std::size_t image_bytes_ = 0; // decoded so far
+    const std::vector<std::string>* refusals_ = nullptr;
 };
 
 // KHR_texture_transform as the rows of the 2x3 matrix (u', v') = M (u, v, 1), the order
