@@ -94,10 +94,13 @@ protected:
         fs::remove_all(root_, ec);
     }
 
-    RunResult run(const std::string& args) const
+    RunResult run(const std::string& args) const { return run_limited("", args); }
+
+    // The binary run after the shell commands `prelude` (limits, traps) in the same shell.
+    RunResult run_limited(const std::string& prelude, const std::string& args) const
     {
         fs::path out = capture_ / "stdout.txt", err = capture_ / "stderr.txt";
-        std::string cmd = "cd " + quoted(work_.string()) + " && " + quoted(kBinary) + " " + args + " >" +
+        std::string cmd = "cd " + quoted(work_.string()) + " && " + prelude + quoted(kBinary) + " " + args + " >" +
                           quoted(out.string()) + " 2>" + quoted(err.string());
         int rc = std::system(cmd.c_str());
         RunResult r;
@@ -217,6 +220,45 @@ TEST_F(Cli, FailedSecondWriteLeavesTheFirstOutputUntouched)
     expect_clean_failure(r, "pathcl-cannot-write.png");
     EXPECT_EQ(read_file(work_ / "keep.exr"), "the user's earlier render");
     EXPECT_EQ(listing(work_), std::set<std::string>{"keep.exr"}) << "a temporary file was left behind";
+}
+
+// A full disk, simulated by a file-size limit (SIGXFSZ ignored, so the write fails with
+// EFBIG as it would with ENOSPC): one line naming the output, the user's files unchanged,
+// no temporary file. Guards the read-back check: the PNG writer reports no error and left
+// 0-byte files in place of both outputs before it.
+TEST_F(Cli, FullDiskLeavesExistingOutputsIntactAndNoTemporaryFiles)
+{
+    const std::string render = "render " + quoted(kCornell) + " --width 64 --height 64 --spp 1 -o ";
+    // First unlimited, so that the kernel caches (pathcl's, PoCL's) need no writing after.
+    ASSERT_EQ(run(render + quoted((capture_ / "warm.png").string())).status, 0);
+    for (const char* name : {"keep.png", "keep.exr"}) {
+        write_file(work_ / name, "the user's earlier render");
+        RunResult r = run_limited("trap '' XFSZ; ulimit -f 2;", render + name);
+        expect_clean_failure(r, name);
+        EXPECT_EQ(read_file(work_ / name), "the user's earlier render");
+        EXPECT_EQ(listing(work_), std::set<std::string>{name}) << "a temporary file was left behind";
+        fs::remove(work_ / name);
+    }
+}
+
+// An output that is one of the render's inputs (a texture of the scene, the environment
+// map) is refused before anything is rendered, and the input stays as it was.
+TEST_F(Cli, OutputEqualToAnInputIsRefused)
+{
+    const fs::path scenes = fs::path(PATHCL_SOURCE_DIR) / "scenes";
+    fs::copy(scenes / "textured.gltf", work_ / "textured.gltf");
+    fs::copy(scenes / "textures", work_ / "textures");
+    const std::string texture = read_file(work_ / "textures" / "tiles-base.png");
+    RunResult r = run("render textured.gltf -o textures/tiles-base.png" + kTiny);
+    expect_clean_failure(r, "tiles-base.png");
+    EXPECT_NE(r.err.find("is an input of this render"), std::string::npos) << r.err;
+    EXPECT_EQ(read_file(work_ / "textures" / "tiles-base.png"), texture);
+
+    ASSERT_EQ(run("render textured.gltf -o env.exr" + kTiny).status, 0);
+    const std::string env = read_file(work_ / "env.exr");
+    r = run("render " + quoted(kCornell) + " --env env.exr -o ./env.exr" + kTiny);
+    expect_clean_failure(r, "env.exr");
+    EXPECT_EQ(read_file(work_ / "env.exr"), env);
 }
 
 TEST_F(Cli, UnknownSamplerIsOneLineError)

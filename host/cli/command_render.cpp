@@ -21,7 +21,8 @@ namespace {
 
 struct EnvironmentFlags {
     std::string file;
-    float strength = -1.0f; // < 0: keep the scene's
+    float strength = 1.0f; // used only when given; else the scene's
+    CLI::Option* strength_option = nullptr;
     double rotation_degrees = 0.0;
     std::vector<float> background; // empty or R, G, B
 };
@@ -41,8 +42,13 @@ void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
         read_environment_image(env, f.file);
         env.strength = 1.0f;
     }
-    if (f.strength >= 0.0f)
+    if (f.strength_option->count()) {
+        if (!(f.strength >= 0.0f) || !std::isfinite(f.strength))
+            throw Error("--env-strength: must be finite and non-negative");
         env.strength = f.strength;
+    }
+    if (!std::isfinite(f.rotation_degrees))
+        throw Error("--env-rotation: must be a finite number of degrees");
     env.rotation_degrees = f.rotation_degrees;
 }
 
@@ -143,6 +149,13 @@ int run_render(RenderRequest rq)
     Scene scene = load_gltf(rq.scene_path, rq.camera.camera);
     apply_environment_flags(scene, rq.environment);
     apply_camera_overrides(scene, rq.camera.overrides());
+    std::vector<std::string> inputs = scene.input_files;
+    if (scene.environment.present && !scene.environment.path.empty())
+        inputs.push_back(scene.environment.path);
+    for (const std::string& output : rq.outputs)
+        check_not_an_input(output, inputs);
+    if (!rq.ray_log.empty())
+        check_not_an_input(rq.ray_log, inputs);
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
     opt.devices = {rq.device};
@@ -226,7 +239,8 @@ void add_environment_flags(CLI::App* render, EnvironmentFlags& e)
 {
     render->add_option("--env", e.file, "equirectangular environment map (EXR/HDR), overrides the scene's")
         ->check(CLI::ExistingFile);
-    render->add_option("--env-strength", e.strength, "environment radiance scale (default: the scene's, else 1)");
+    e.strength_option =
+        render->add_option("--env-strength", e.strength, "environment radiance scale (default: the scene's, else 1)");
     render->add_option("--env-rotation", e.rotation_degrees, "rotate the environment about +Y, degrees");
     render->add_option("--background", e.background, "constant environment radiance R,G,B")
         ->delimiter(',')

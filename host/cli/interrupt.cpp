@@ -2,6 +2,8 @@
 
 #include <csignal>
 
+#include "common/staged_files.h"
+
 namespace pathcl::cli {
 namespace {
 
@@ -9,9 +11,15 @@ volatile std::sig_atomic_t g_signal = 0;
 
 extern "C" void on_signal(int sig)
 {
+    if (g_signal != 0) {
+        // The second one ends the process at once, without the outputs being written: the
+        // temporary files go, every existing output stays as it was.
+        remove_staged_files_on_signal();
+        std::signal(sig, SIG_DFL);
+        std::raise(sig);
+        return;
+    }
     g_signal = sig;
-    // The next one is not caught: a second Ctrl-C ends the process at once.
-    std::signal(sig, SIG_DFL);
 }
 
 } // namespace

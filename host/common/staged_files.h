@@ -15,6 +15,14 @@ std::string lowercase_extension(const std::string& path);
 // a directory: the checks every output makes before any work is done.
 void check_output_location(const std::string& path);
 
+// Throws pathcl::Error when `output` names the same file as one of `inputs` (by identity,
+// so links and other spellings count): a render never overwrites what it reads.
+void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
+
+// Removes every staged temporary file now; async-signal-safe (only unlink), for a signal
+// handler that is about to end the process.
+void remove_staged_files_on_signal();
+
 class StagedFiles {
 public:
     StagedFiles() = default;
