@@ -1,7 +1,9 @@
 // `pathcl render`: loads a scene, applies the environment and camera flags, renders, and
 // writes every requested image (and the camera-ray log) or none of them.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/interrupt.h"
@@ -10,11 +12,13 @@
 #include "common/error.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
+#include "render/checkpoint.h"
 #include "render/ray_log.h"
 #include "render/renderer.h"
 #include "scene/camera_overrides.h"
 #include "scene/environment_image.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene_fingerprint.h"
 
 namespace pathcl::cli {
 namespace {
@@ -106,7 +110,9 @@ struct RenderRequest {
     int device = 0;
     EnvironmentFlags environment;
     CameraFlags camera;
-    std::string ray_log; // --ray-log FILE.ply
+    std::string ray_log;            // --ray-log FILE.ply
+    std::string checkpoint, resume; // --checkpoint FILE, --resume FILE
+    double checkpoint_every = 60.0;
 };
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
@@ -156,11 +162,26 @@ int run_render(RenderRequest rq)
         check_not_an_input(output, inputs);
     if (!rq.ray_log.empty())
         check_not_an_input(rq.ray_log, inputs);
+    if (!rq.checkpoint.empty()) {
+        check_output_location(rq.checkpoint);
+        check_not_an_input(rq.checkpoint, inputs);
+        for (const std::string& output : rq.outputs)
+            if (output == rq.checkpoint)
+                throw Error(rq.checkpoint + ": is both an output image and the checkpoint");
+        if (!(rq.checkpoint_every > 0.0) || !std::isfinite(rq.checkpoint_every))
+            throw Error("--checkpoint-every must be a positive number of seconds");
+    }
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
     opt.devices = {rq.device};
     if (!rq.ray_log.empty())
         opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
+    std::optional<RenderCheckpoint> resume;
+    if (!rq.resume.empty()) {
+        if (!rq.ray_log.empty())
+            throw Error("--ray-log cannot be combined with --resume (the logged rays are those of the first passes)");
+        resume = read_checkpoint(rq.resume);
+    }
     Renderer renderer(scene, opt);
     catch_interrupts();
     RenderResult r;
@@ -169,10 +190,27 @@ int run_render(RenderRequest rq)
                           : rq.progress ? ProgressLine::Mode::Lines
                                         : ProgressLine::Mode::Auto,
                           rq.outputs.front());
-        r = renderer.render(opt.seed, [&](const RenderProgress& p) {
+        RenderRun run;
+        run.seed = opt.seed;
+        run.progress = [&](const RenderProgress& p) {
             line.show(p);
             return !interrupted();
-        });
+        };
+        if (resume || !rq.checkpoint.empty())
+            run.scene_key = scene_fingerprint_hex(scene);
+        run.resume = resume ? &*resume : nullptr;
+        auto last_checkpoint = std::chrono::steady_clock::now();
+        if (!rq.checkpoint.empty()) {
+            run.checkpoint_due = [&]() {
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count() >=
+                       rq.checkpoint_every;
+            };
+            run.checkpoint = [&](const RenderCheckpoint& cp) {
+                write_checkpoint(rq.checkpoint, cp);
+                last_checkpoint = std::chrono::steady_clock::now();
+            };
+        }
+        r = renderer.render(run);
     }
     // Every output complete before any replaces what the user has.
     StagedFiles staged;
@@ -268,6 +306,14 @@ Command add_render_command(CLI::App& app)
     render->add_option("--ray-log", rq->ray_log,
                        "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
                        "directions as normals");
+    render->add_option("--checkpoint", rq->checkpoint,
+                       "write the render's state to FILE every --checkpoint-every seconds and when it stops early, "
+                       "so that --resume FILE continues it");
+    render->add_option("--checkpoint-every", rq->checkpoint_every, "seconds between checkpoints")
+        ->capture_default_str();
+    render->add_option("--resume", rq->resume,
+                       "continue the render whose checkpoint FILE holds (same scene and options: the image equals "
+                       "the uninterrupted render's bit for bit)");
     add_program_options(render, rq->options);
     return {render, [rq] { return run_render(*rq); }};
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "common/error.h"
+
 namespace pathcl {
 
 FilmSum::FilmSum(std::size_t pixels) : sum_(pixels * 4, 0.0), sum_sq_(pixels * 4, 0.0)
@@ -85,6 +87,26 @@ void FilmAccumulator::add_batch(const FilmSum& batch)
 void FilmAccumulator::add_partial_batch(const FilmSum& batch)
 {
     add_to_total(batch);
+}
+
+FilmAccumulator::State FilmAccumulator::state() const
+{
+    return State{total_.sum_, total_.sum_sq_, batch_mean_sum_, batch_mean_sq_, pixel_batches_, total_.bad_, batches_};
+}
+
+void FilmAccumulator::restore(const State& s)
+{
+    if (s.sum.size() != total_.sum_.size() || s.sum_sq.size() != total_.sum_sq_.size() ||
+        s.batch_mean_sum.size() != batch_mean_sum_.size() || s.batch_mean_sq.size() != batch_mean_sq_.size() ||
+        s.pixel_batches.size() != pixel_batches_.size())
+        throw Error("the film state does not match the image size");
+    total_.sum_ = s.sum;
+    total_.sum_sq_ = s.sum_sq;
+    total_.bad_ = s.bad;
+    batch_mean_sum_ = s.batch_mean_sum;
+    batch_mean_sq_ = s.batch_mean_sq;
+    pixel_batches_ = s.pixel_batches;
+    batches_ = s.batches;
 }
 
 std::vector<std::uint32_t> FilmAccumulator::pixel_samples() const

@@ -61,6 +61,17 @@ public:
     // Samples each pixel has accumulated (rejected ones excluded).
     std::vector<std::uint32_t> pixel_samples() const;
 
+    // Everything it holds, for a checkpoint (render/checkpoint.h); restore() takes back a
+    // state of the same pixel count and batch size and continues bit for bit.
+    struct State {
+        std::vector<double> sum, sum_sq, batch_mean_sum, batch_mean_sq;
+        std::vector<std::uint32_t> pixel_batches;
+        std::uint64_t bad = 0;
+        std::uint32_t batches = 0;
+    };
+    State state() const;
+    void restore(const State& state); // throws pathcl::Error when the sizes differ
+
     // The estimated relMSE of image(): the mean over pixels and channels of
     // var(mean) / (mean^2 + 0.01). var(mean) is s^2 * batch_spp / n, s^2 the variance of
     // the pixel's whole-batch means and n its samples (s^2 / k after k whole batches).

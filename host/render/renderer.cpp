@@ -242,6 +242,58 @@ struct Renderer::Impl {
         return remaining;
     }
 
+    // Everything a render's image depends on besides the scene: checkpoints carry it.
+    std::string checkpoint_key(const RenderRun& run, const RenderOptions& opt, const BatchPlan& plan) const
+    {
+        std::string key =
+            "scene " + run.scene_key + "; size " + std::to_string(opt.width) + "x" + std::to_string(opt.height) +
+            "; seed " + std::to_string(run.seed) + "; sampler " + sampler_name(opt.sampler) + "; strategy " +
+            strategy_name(opt.strategy) + "; bounces " + std::to_string(opt.max_bounces) + "; stratified bounces " +
+            std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
+            std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
+            std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
+            std::to_string(opt.adaptive) + "; devices";
+        for (const auto& dr : devices)
+            key += " " + dr->dev.info.name;
+        return key;
+    }
+
+    RenderCheckpoint capture(const std::string& key, std::uint32_t batch, std::uint32_t pass, std::uint32_t spp_done,
+                             double samples, const FilmAccumulator& acc, const std::vector<pcl_uint>& active)
+    {
+        RenderCheckpoint cp;
+        cp.key = key;
+        cp.batch = batch;
+        cp.pass = pass;
+        cp.spp_done = spp_done;
+        cp.samples = samples;
+        cp.film = acc.state();
+        cp.active = active;
+        for (auto& dr : devices) {
+            cp.device_films.emplace_back(pixels());
+            cp.device_bad.emplace_back(pixels());
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel),
+                                            cp.device_films.back().data());
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
+                                            cp.device_bad.back().data());
+        }
+        return cp;
+    }
+
+    // The devices' films as the checkpoint holds them (the batch in progress).
+    void upload_films(const RenderCheckpoint& cp)
+    {
+        for (std::size_t d = 0; d < devices.size(); ++d) {
+            if (cp.device_films[d].size() != pixels() || cp.device_bad[d].size() != pixels())
+                throw Error("the checkpoint's films do not match the image size");
+            auto& q = devices[d]->dev.queue;
+            q.enqueueWriteBuffer(devices[d]->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel),
+                                 cp.device_films[d].data());
+            q.enqueueWriteBuffer(devices[d]->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
+                                 cp.device_bad[d].data());
+        }
+    }
+
     RenderResult render(const RenderRun& run)
     {
         // This render's options and layout: the Renderer's, with the run's overrides.
@@ -269,6 +321,26 @@ struct Renderer::Impl {
         // else enough to keep every device busy while the host waits.
         const std::size_t window = (opt.time_budget > 0.0 ? 2 : 8) * devices.size();
         const auto start = Clock::now();
+        const bool checkpoints = static_cast<bool>(run.checkpoint);
+        std::string key;
+        if (checkpoints || run.resume)
+            key = checkpoint_key(run, opt, plan);
+        std::uint32_t first_batch = 0, first_pass = 0;
+        if (run.resume) {
+            const RenderCheckpoint& cp = *run.resume;
+            if (cp.key != key)
+                throw ParameterError("resume", "the checkpoint is of another render (it has \"" + cp.key +
+                                                   "\", this render is \"" + key + "\")");
+            if (cp.device_films.size() != devices.size() || (opt.adaptive && cp.active.size() != pixels()))
+                throw ParameterError("resume", "the checkpoint does not match this render's devices or image");
+            acc.restore(cp.film);
+            first_batch = cp.batch;
+            first_pass = cp.pass;
+            spp_done = cp.spp_done;
+            if (acc.batches() >= 2)
+                estimate = acc.relmse_estimate();
+        }
+        const std::uint32_t spp_at_start = spp_done;
 
         auto report = [&]() {
             RenderProgress p;
@@ -278,7 +350,7 @@ struct Renderer::Impl {
             p.elapsed_seconds = seconds_since(start);
             p.samples_per_second = samples / std::max(p.elapsed_seconds, 1e-9);
             p.error_estimate = estimate;
-            double pass_rate = spp_done / std::max(p.elapsed_seconds, 1e-9);
+            double pass_rate = (spp_done - spp_at_start) / std::max(p.elapsed_seconds, 1e-9);
             double to_go = plan.max_spp - spp_done;
             if (opt.target_error > 0.0 && estimate > 0.0) // relMSE falls as 1 / spp
                 to_go = std::min(to_go, std::max(0.0, spp_done * (estimate / opt.target_error - 1.0)));
@@ -308,15 +380,35 @@ struct Renderer::Impl {
             frame.adaptive = opt.adaptive ? 1u : 0u;
             if (opt.adaptive) {
                 active.assign(pixels(), 1u);
+                if (run.resume) {
+                    active = run.resume->active;
+                    active_pixels = static_cast<std::size_t>(std::count(active.begin(), active.end(), 1u));
+                }
                 upload_active(active);
             }
-            clear_films();
+            if (first_pass > 0)
+                upload_films(*run.resume);
+            else
+                clear_films();
             std::deque<cl::Event> in_flight;
-            for (std::uint32_t b = 0; b < plan.batch_count() && !stop; ++b) {
+            auto drain = [&]() {
+                while (!in_flight.empty()) {
+                    in_flight.front().wait();
+                    in_flight.pop_front();
+                    after_pass();
+                }
+            };
+            for (std::uint32_t b = first_batch; b < plan.batch_count() && !stop; ++b) {
                 frame.seed = batch_seed(seed, b);
                 const std::uint32_t passes = plan.batch_passes(b);
-                std::uint32_t s = 0;
+                std::uint32_t s = b == first_batch ? first_pass : 0;
                 for (; s < passes && !stop; ++s) {
+                    if (checkpoints && run.checkpoint_due && run.checkpoint_due()) {
+                        drain();
+                        run.checkpoint(capture(key, b, s, spp_done, samples, acc, active));
+                        if (stop)
+                            break;
+                    }
                     in_flight.emplace_back();
                     enqueue_pass(b, s, &in_flight.back(), result.camera_rays);
                     while (in_flight.size() > window) {
@@ -325,17 +417,19 @@ struct Renderer::Impl {
                         after_pass();
                     }
                 }
-                while (!in_flight.empty()) {
-                    in_flight.front().wait();
-                    in_flight.pop_front();
-                    after_pass();
-                }
+                drain();
                 FilmSum sum = read_films();
                 if (s < passes) {
+                    if (checkpoints) // stopped early: the state to resume from
+                        run.checkpoint(capture(key, b, s, spp_done, samples, acc, active));
                     acc.add_partial_batch(sum);
                     break;
                 }
                 acc.add_batch(sum);
+                if (checkpoints && stop && b + 1 < plan.batch_count()) {
+                    clear_films();
+                    run.checkpoint(capture(key, b + 1, 0, spp_done, samples, acc, active));
+                }
                 if (b + 1 < plan.batch_count())
                     clear_films();
                 if (acc.batches() >= 2)

@@ -17,6 +17,7 @@
 
 #include "image/image.h"
 #include "render/batches.h"
+#include "render/checkpoint.h"
 #include "render/render_options.h"
 #include "scene/scene.h"
 
@@ -76,6 +77,14 @@ struct RenderRun {
     std::uint32_t spp = 0;      // > 0: instead of the options' (e.g. a convergence ladder)
     double target_error = -1.0; // >= 0: instead of the options' (0: none)
     ProgressCallback progress;
+    // Checkpoints (render/checkpoint.h). With `checkpoint` set, the render drains its
+    // passes and hands over its state whenever `checkpoint_due` says so at a pass
+    // boundary, and once more when a budget or the caller stopped it early. `resume`
+    // continues such a state. `scene_key` names the scene (its fingerprint) in the key.
+    std::function<bool()> checkpoint_due;
+    std::function<void(const RenderCheckpoint&)> checkpoint;
+    const RenderCheckpoint* resume = nullptr;
+    std::string scene_key;
 };
 
 class Renderer {

@@ -1,0 +1,119 @@
+// Checkpoints end to end through the binary: a render killed with SIGKILL between two
+// checkpoints, or stopped by its time budget in the middle of a batch, and then resumed,
+// ends with the image of the uninterrupted render bit for bit (every value of the EXR,
+// variance included); a checkpoint of another render, or a damaged one, is a one-line
+// error.
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "image/image_io.h"
+#include "support/tool_run.h"
+
+extern char** environ;
+
+namespace pathcl {
+namespace {
+
+using test::ToolRun;
+
+const std::string kScene = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box-glass-mirror.gltf";
+const std::string kSmall = " --width 32 --height 32 --quiet";
+
+void expect_bitwise_equal(const Image& a, const Image& b)
+{
+    ASSERT_EQ(a.rgb.size(), b.rgb.size());
+    EXPECT_EQ(a.spp, b.spp);
+    EXPECT_EQ(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0) << "radiance differs";
+    EXPECT_EQ(std::memcmp(a.variance.data(), b.variance.data(), a.variance.size() * sizeof(float)), 0)
+        << "variance differs";
+}
+
+// Guards the device films in the checkpoint: restarting the batch in progress from a
+// cleared film gives another image (and a resumed render short of samples).
+TEST_F(ToolRun, RenderKilledBetweenCheckpointsResumesToTheSameImage)
+{
+    const std::string options = " --spp 4096" + kSmall;
+    ASSERT_EQ(run("render '" + kScene + "' -o full.exr" + options), 0) << text("stderr.txt");
+
+    std::vector<std::string> args = {PATHCL_BINARY,
+                                     "render",
+                                     kScene,
+                                     "-o",
+                                     (dir_ / "killed.exr").string(),
+                                     "--spp",
+                                     "4096",
+                                     "--width",
+                                     "32",
+                                     "--height",
+                                     "32",
+                                     "--quiet",
+                                     "--checkpoint",
+                                     (dir_ / "cp.bin").string(),
+                                     "--checkpoint-every",
+                                     "0.2"};
+    std::vector<char*> argv;
+    for (std::string& a : args)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, PATHCL_BINARY, nullptr, nullptr, argv.data(), environ), 0);
+    for (int i = 0; i < 200 && !std::filesystem::exists(dir_ / "cp.bin"); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300)); // between two checkpoints
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the render ended before it was killed: make it longer";
+    ASSERT_TRUE(std::filesystem::exists(dir_ / "cp.bin"));
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "killed.exr"));
+
+    ASSERT_EQ(run("render '" + kScene + "' -o resumed.exr --resume cp.bin" + options), 0) << text("stderr.txt");
+    expect_bitwise_equal(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()));
+}
+
+// Guards the accumulator state in the checkpoint: a render of several batches stopped in
+// the middle of one resumes with the whole batches' sums and spread as they were.
+TEST_F(ToolRun, RenderStoppedByItsTimeBudgetResumesToTheSameImage)
+{
+    const std::string options = " --max-spp 512 --batch-spp 16" + kSmall;
+    ASSERT_EQ(run("render '" + kScene + "' -o full.exr --time 600" + options), 0) << text("stderr.txt");
+    ASSERT_EQ(run("render '" + kScene + "' -o part.exr --time 0.1 --checkpoint cp.bin" + options), 0)
+        << text("stderr.txt");
+    Image part = read_image((dir_ / "part.exr").string());
+    ASSERT_LT(part.spp, 512u) << "the budget did not stop the render: make it shorter";
+    ASSERT_EQ(run("render '" + kScene + "' -o resumed.exr --time 600 --resume cp.bin" + options), 0)
+        << text("stderr.txt");
+    Image full = read_image((dir_ / "full.exr").string()), resumed = read_image((dir_ / "resumed.exr").string());
+    expect_bitwise_equal(full, resumed);
+    EXPECT_EQ(full.metadata["relmse_estimate"], resumed.metadata["relmse_estimate"]);
+}
+
+TEST_F(ToolRun, CheckpointOfAnotherRenderOrDamagedIsAOneLineError)
+{
+    const std::string options = " --max-spp 256 --batch-spp 16" + kSmall;
+    ASSERT_EQ(run("render '" + kScene + "' -o part.exr --time 0.05 --checkpoint cp.bin" + options), 0)
+        << text("stderr.txt");
+    EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --seed 7 --resume cp.bin" + options), 2);
+    std::string err = text("stderr.txt");
+    EXPECT_EQ(err.rfind("pathcl: error: --resume: the checkpoint is of another render", 0), 0u) << err;
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << err;
+
+    std::filesystem::resize_file(dir_ / "cp.bin", std::filesystem::file_size(dir_ / "cp.bin") / 2);
+    EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --resume cp.bin" + options), 2);
+    err = text("stderr.txt");
+    EXPECT_NE(err.find("cp.bin: checkpoint is truncated or corrupt"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "x.exr"));
+}
+
+} // namespace
+} // namespace pathcl
