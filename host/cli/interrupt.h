@@ -1,6 +1,7 @@
 // Ctrl-C (SIGINT) and SIGTERM while rendering: the first asks the render to stop after
-// the passes in flight, so the samples taken are kept and written; a second SIGINT ends
-// the process at once (the default action), leaving existing outputs untouched.
+// the passes in flight, so the samples taken are kept and written; a second signal ends
+// the process at once (the default action) after removing the staged temporary outputs,
+// leaving existing outputs untouched.
 #pragma once
 
 namespace pathcl::cli {
