@@ -42,7 +42,7 @@ void expect_bitwise_equal(const Image& a, const Image& b)
 // cleared film gives another image (and a resumed render short of samples).
 TEST_F(ToolRun, RenderKilledBetweenCheckpointsResumesToTheSameImage)
 {
-    const std::string options = " --spp 4096" + kSmall;
+    const std::string options = " --spp 8192" + kSmall;
     ASSERT_EQ(run("render '" + kScene + "' -o full.exr" + options), 0) << text("stderr.txt");
 
     std::vector<std::string> args = {PATHCL_BINARY,
@@ -51,7 +51,7 @@ TEST_F(ToolRun, RenderKilledBetweenCheckpointsResumesToTheSameImage)
                                      "-o",
                                      (dir_ / "killed.exr").string(),
                                      "--spp",
-                                     "4096",
+                                     "8192",
                                      "--width",
                                      "32",
                                      "--height",
