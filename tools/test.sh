@@ -13,5 +13,5 @@ ctest --test-dir build --output-on-failure
 
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPATHCL_SANITIZE=ON
 cmake --build build-sanitize --target unit_tests pathcl
-LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp" UBSAN_OPTIONS=print_stacktrace=1 \
+LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0" UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize -L unit --output-on-failure
