@@ -10,27 +10,14 @@
 #include <iterator>
 #include <unistd.h>
 
+#include "common/fnv1a.h"
+
 namespace pathcl {
 namespace {
 
-constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ull;
 constexpr char kMagic[8] = {'P', 'A', 'T', 'H', 'C', 'L', 'K', 'C'};
 // Bump when the entry layout changes: older entries then read as misses.
 constexpr std::uint32_t kFormatVersion = 1;
-
-std::uint64_t fnv1a64(const unsigned char* p, std::size_t n, std::uint64_t h = kFnvBasis)
-{
-    for (std::size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
-std::uint64_t fnv1a64(const std::string& s, std::uint64_t h = kFnvBasis)
-{
-    return fnv1a64(reinterpret_cast<const unsigned char*>(s.data()), s.size(), h);
-}
 
 void put_le(std::vector<unsigned char>& out, std::uint64_t v, int bytes)
 {
@@ -93,8 +80,8 @@ std::string program_cache_key(const std::string& device_identity, const std::str
     // Two independent 64-bit hashes: an accidental collision is not a practical concern.
     std::string all = device_identity + '\x1f' + options + '\x1f' + source;
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(fnv1a64(all)),
-                  static_cast<unsigned long long>(fnv1a64(all, 0x84222325cbf29ce4ull)));
+    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(fnv1a64(all.data(), all.size())),
+                  static_cast<unsigned long long>(fnv1a64(all.data(), all.size(), 0x84222325cbf29ce4ull)));
     return buf;
 }
 

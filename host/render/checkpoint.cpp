@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "common/error.h"
+#include "common/fnv1a.h"
 #include "common/staged_files.h"
 #include "scene/confined_files.h"
 
@@ -14,16 +15,6 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'A', 'T', 'H', 'C', 'L', 'C', 'P'};
 constexpr std::uint32_t kVersion = 1;
-
-std::uint64_t fnv1a(const unsigned char* p, std::size_t n)
-{
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (std::size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
 
 class Writer {
 public:
@@ -105,7 +96,7 @@ void write_checkpoint(const std::string& path, const RenderCheckpoint& cp)
         w.array(cp.device_bad[d]);
     }
     w.array(cp.active);
-    w.value(fnv1a(w.bytes.data(), w.bytes.size()));
+    w.value(fnv1a64(w.bytes.data(), w.bytes.size()));
 
     StagedFiles staged;
     const std::string tmp = staged.stage(path);
@@ -140,7 +131,7 @@ RenderCheckpoint read_checkpoint(const std::string& path)
         throw Error(path + ": is not a pathcl checkpoint");
     std::uint64_t stored;
     std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
-    if (stored != fnv1a(bytes.data(), bytes.size() - 8))
+    if (stored != fnv1a64(bytes.data(), bytes.size() - 8))
         throw Error(path + ": checkpoint is truncated or corrupt (checksum)");
     bytes.resize(bytes.size() - 8);
     Reader r(bytes, path);

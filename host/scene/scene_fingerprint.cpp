@@ -3,22 +3,17 @@
 #include <cstdio>
 #include <type_traits>
 
+#include "common/fnv1a.h"
+
 namespace pathcl {
 namespace {
 
 // FNV-1a over the bytes of values without padding (floats, doubles, integers and glm
 // vectors of them), each fed field by field.
 struct Fnv {
-    std::uint64_t h = 0xcbf29ce484222325ull;
+    std::uint64_t h = kFnv1aBasis;
 
-    void bytes(const void* p, std::size_t n)
-    {
-        const auto* b = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) {
-            h ^= b[i];
-            h *= 0x100000001b3ull;
-        }
-    }
+    void bytes(const void* p, std::size_t n) { h = fnv1a64(p, n, h); }
     template <class T>
     void add(const T& v)
     {
