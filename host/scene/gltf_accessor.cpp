@@ -94,6 +94,11 @@ void AccessorReader::require_float_or_normalized() const
         fail("integer components must be normalized");
 }
 
+bool AccessorReader::is_float() const
+{
+    return component_type_ == TINYGLTF_COMPONENT_TYPE_FLOAT;
+}
+
 bool AccessorReader::is_index_type() const
 {
     return components_ == 1 && !normalized_ &&

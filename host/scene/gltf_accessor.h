@@ -30,6 +30,9 @@ public:
     // must be normalized.
     void require_float_or_normalized() const;
 
+    // Stored as 32-bit floats.
+    bool is_float() const;
+
     // Unsigned, not normalized scalars: what glTF allows for indices.
     bool is_index_type() const;
 

@@ -22,7 +22,7 @@ bool is_glb(const unsigned char* bytes, std::size_t size)
     return size >= 4 && std::memcmp(bytes, "glTF", 4) == 0;
 }
 
-void check_glb(const unsigned char* bytes, std::size_t size, const std::string& what)
+std::string_view check_glb(const unsigned char* bytes, std::size_t size, const std::string& what)
 {
     if (size < 20 || !is_glb(bytes, size))
         throw Error(what + ": not a GLB file (shorter than its 20-byte headers or no \"glTF\" magic)");
@@ -46,6 +46,7 @@ void check_glb(const unsigned char* bytes, std::size_t size, const std::string& 
             check_json_nesting(bytes + at + 8, length, what);
         at += 8 + length;
     }
+    return {reinterpret_cast<const char*>(bytes) + 20, le32(bytes + 12)};
 }
 
 void check_json_nesting(const unsigned char* text, std::size_t size, const std::string& what)

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace pathcl {
 
@@ -17,8 +18,9 @@ bool is_glb(const unsigned char* bytes, std::size_t size);
 
 // Throws pathcl::Error "WHAT: ..." unless bytes are a well-formed GLB container: magic,
 // version 2, a total length equal to the size, a first chunk of type JSON and every
-// chunk's header and data inside the file. Also checks the JSON chunk's nesting.
-void check_glb(const unsigned char* bytes, std::size_t size, const std::string& what);
+// chunk's header and data inside the file. Also checks the JSON chunk's nesting. Returns
+// the JSON chunk.
+std::string_view check_glb(const unsigned char* bytes, std::size_t size, const std::string& what);
 
 // Throws pathcl::Error "WHAT: ..." when the JSON text nests arrays and objects deeper than
 // kMaxJsonDepth (counted outside strings; the text need not be valid JSON).

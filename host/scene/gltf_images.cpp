@@ -147,11 +147,19 @@ void check_image_uri(const std::string& uri, const std::string& what)
         throw Error(what + ": the image path '" + uri + "' is absolute (image URIs are relative to the glTF file)");
 }
 
-bool keep_encoded_image(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
-                        int size, void*)
+bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*)
 {
     if (image->bufferView >= 0)
         return true; // decoded by the importer, which checks the view against its buffer first
+    // The glTF library sets the media type of a data: URI (it accepts image/gif and
+    // image/bmp too); glTF allows PNG and JPEG.
+    if (!image->mimeType.empty() && image->mimeType != "image/png" && image->mimeType != "image/jpeg") {
+        if (err != nullptr)
+            *err += "image " + std::to_string(index) + ": a data: URI of type " + image->mimeType +
+                    " (glTF images are image/png or image/jpeg)";
+        return false;
+    }
     image->image.assign(bytes, bytes + std::max(size, 0));
     image->bits = 0; // encoded bytes, not pixels
     image->component = 0;

@@ -15,9 +15,12 @@ namespace pathcl {
 SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& index_value, const glm::dmat4& world,
                         const std::string& what, const std::string& source)
 {
-    int index = index_value.IsNumber() ? static_cast<int>(index_value.GetNumberAsInt()) : -1;
-    if (index < 0 || index >= static_cast<int>(model.lights.size()))
-        throw Error(source + ": " + what + ": KHR_lights_punctual light " + std::to_string(index) + " does not exist");
+    // Compared as a double: converting an index beyond int first is undefined behaviour.
+    double number = index_value.IsNumber() ? index_value.GetNumberAsDouble() : -1.0;
+    if (!(number >= 0.0 && number < static_cast<double>(model.lights.size()) && number == std::floor(number)))
+        throw Error(source + ": " + what + ": the KHR_lights_punctual light index names none of the " +
+                    std::to_string(model.lights.size()) + " lights");
+    int index = static_cast<int>(number);
     const tinygltf::Light& l = model.lights[static_cast<std::size_t>(index)];
     std::string name = what + ": light " + std::to_string(index);
     SceneLight out;
@@ -49,6 +52,8 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
                 throw Error(source + ": " + name + ": extras.radius must be a positive number");
             // The emitted radiance is intensity / (pi r^2), in single precision on the device.
             glm::dvec3 radiance = glm::dvec3(out.intensity) / (std::numbers::pi * radius * scale * radius * scale);
+            if (!std::isfinite(static_cast<float>(radius * scale)))
+                throw Error(source + ": " + name + ": extras.radius overflows single precision");
             if (!(static_cast<float>(radius * scale) > 0.0f) || !std::isfinite(static_cast<float>(radiance.x)) ||
                 !std::isfinite(static_cast<float>(radiance.y)) || !std::isfinite(static_cast<float>(radiance.z)))
                 throw Error(source + ": " + name + ": extras.radius is so small that the sphere's radiance overflows");
@@ -56,8 +61,9 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
             out.radius = radius * scale;
         }
     } else if (l.type == "spot") {
+        bool rectangular = l.extras.IsObject() && (l.extras.Has("hfov") || l.extras.Has("vfov"));
         double h = number_or(l.extras, "hfov", -1.0), v = number_or(l.extras, "vfov", -1.0);
-        if (h >= 0.0 || v >= 0.0) {
+        if (rectangular) {
             if (!(h > 0.0 && h < 180.0 && v > 0.0 && v < 180.0))
                 throw Error(source + ": " + name + ": extras hfov and vfov must both be in (0, 180) degrees");
             out.type = SceneLight::Type::RectSpot;

@@ -22,6 +22,7 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_primitives.h"
+#include "scene/gltf_schema.h"
 #include "scene/gltf_textures.h"
 #include "scene/pending_geometry.h"
 #include "scene/render_space.h"
@@ -205,13 +206,15 @@ Scene load_gltf(const std::string& path, int camera)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(path + (std::filesystem::exists(path, ec) ? ": is not a regular file" : ": no such file"));
-    // Read here, not by tinygltf: the container and the JSON nesting are checked first.
+    // Read here, not by tinygltf: the container, the JSON nesting and the schema are checked first.
     std::vector<unsigned char> bytes = read_regular_file(path, kMaxGltfFileBytes);
     bool binary = is_glb(bytes.data(), bytes.size());
+    std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (binary)
-        check_glb(bytes.data(), bytes.size(), path);
+        json = check_glb(bytes.data(), bytes.size(), path);
     else
         check_json_nesting(bytes.data(), bytes.size(), path);
+    check_gltf_schema(json, path);
     std::string base_dir = std::filesystem::path(path).parent_path().string();
     ConfinedFiles files(base_dir);
     tinygltf::TinyGLTF loader;

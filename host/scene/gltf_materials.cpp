@@ -99,8 +99,12 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
-    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end())
-        out.thin_walled = !(number_or(e->second, "thicknessFactor", 0.0) > 0.0);
+    if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end()) {
+        double thickness = number_or(e->second, "thicknessFactor", 0.0);
+        if (!(thickness >= 0.0) || !std::isfinite(thickness))
+            throw Error(source + ": " + where + ": KHR_materials_volume thicknessFactor must be finite and >= 0");
+        out.thin_walled = thickness == 0.0;
+    }
 
     // The texture of every slot (occlusionTexture is not read: a path tracer computes
     // occlusion).

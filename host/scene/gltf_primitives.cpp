@@ -3,6 +3,7 @@
 // and gathered per triangle corner.
 #include "scene/gltf_primitives.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -41,7 +42,9 @@ void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometr
 
 PrimitiveImporter::PrimitiveImporter(const tinygltf::Model& model, const std::string& source,
                                      std::vector<SceneMaterial>& materials, PendingGeometry& geometry)
-    : model_(model), source_(source), materials_(materials), geometry_(geometry)
+    : model_(model), source_(source), materials_(materials), geometry_(geometry),
+      quantized_(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization") !=
+                 model.extensionsUsed.end())
 {}
 
 // A primitive's optional vertex attributes, for the vertices of `tris`.
@@ -69,6 +72,8 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
     AccessorReader pos(model_, pos_it->second, what + " POSITION", source_);
     if (pos.components() != 3)
         pos.fail("POSITION must be VEC3");
+    if (!pos.is_float() && !quantized_)
+        pos.fail("POSITION must be FLOAT (integer positions need KHR_mesh_quantization)");
     std::vector<glm::dvec3> p(pos.count());
     for (std::size_t i = 0; i < pos.count(); ++i) {
         glm::dvec4 w = world * glm::dvec4(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2), 1.0);
@@ -85,6 +90,8 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
         AccessorReader nr(model_, nrm_it->second, what + " NORMAL", source_);
         if (nr.components() != 3 || nr.count() != pos.count())
             nr.fail("NORMAL must be VEC3 with one normal per vertex");
+        if (!nr.is_float() && !quantized_)
+            nr.fail("NORMAL must be FLOAT (integer normals need KHR_mesh_quantization)");
         n.resize(nr.count());
         for (std::size_t i = 0; i < nr.count(); ++i)
             n[i] = normal_matrix * glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
@@ -259,6 +266,8 @@ std::vector<glm::dvec4> PrimitiveImporter::object_tangents(const tinygltf::Primi
         AccessorReader r(model_, tan_it->second, what + " TANGENT", source_);
         if (r.components() != 4 || r.count() != pos.count())
             r.fail("TANGENT must be VEC4 with one tangent per vertex");
+        if (!r.is_float() && !quantized_)
+            r.fail("TANGENT must be FLOAT (integer tangents need KHR_mesh_quantization)");
         std::vector<glm::dvec4> t(r.count());
         for (std::size_t i = 0; i < r.count(); ++i) {
             t[i] = glm::dvec4(r.get(i, 0), r.get(i, 1), r.get(i, 2), r.get(i, 3) < 0.0 ? -1.0 : 1.0);

@@ -1,5 +1,5 @@
-// number_or and vec3_or. A malformed vector is not quietly replaced by its default: its
-// NaN components make the caller's range check name the field instead.
+// number_or and vec3_or. A malformed value is not quietly replaced by its default: NaN
+// makes the caller's range check name the field instead.
 #include "scene/gltf_values.h"
 
 #include <limits>
@@ -13,7 +13,7 @@ double number_or(const tinygltf::Value& obj, const char* key, double fallback)
     if (!obj.IsObject() || !obj.Has(key))
         return fallback;
     const tinygltf::Value& v = obj.Get(key);
-    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+    return v.IsNumber() ? v.GetNumberAsDouble() : std::numeric_limits<double>::quiet_NaN();
 }
 
 glm::vec3 vec3_or(const tinygltf::Value& obj, const char* key, glm::vec3 fallback)

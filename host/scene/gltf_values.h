@@ -11,8 +11,9 @@ class Value;
 
 namespace pathcl {
 
-// obj[key] as a number; `fallback` when obj is not an object, lacks the key, or holds
-// something else there.
+// obj[key] as a number; `fallback` when obj is not an object or lacks the key. Anything
+// but a number there gives NaN, which the caller's range check rejects: a value of the
+// wrong type is an error, not the default.
 double number_or(const tinygltf::Value& obj, const char* key, double fallback);
 
 // obj[key] as three numbers; `fallback` when absent. A value that is not an array of

@@ -1,0 +1,21 @@
+// The glTF schema checks the glTF library does not make, on the JSON text before it is
+// parsed into typed structs. That library reads an index into an int (4294967296 becomes
+// mesh 0), skips a member of the wrong JSON type as if it were absent (a texCoord of 1e300
+// becomes set 0, a two-component baseColorFactor becomes white) and keeps arrays of any
+// length, so a damaged file renders as a different scene instead of failing. Checked here:
+// every index pathcl or the library follows (a JSON integer naming an existing element),
+// the types of the members pathcl reads, the lengths of the fixed-size number arrays and
+// their finiteness, and a rotation that is not the zero quaternion.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace pathcl {
+
+// Throws pathcl::Error "WHAT: PATH: ..." (PATH like nodes[3].mesh) at the first violation.
+// Text that is not valid JSON is left to the glTF library, which reports it. The nesting
+// must already be bounded (check_json_nesting).
+void check_gltf_schema(std::string_view json, const std::string& what);
+
+} // namespace pathcl
