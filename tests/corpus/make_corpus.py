@@ -1,0 +1,1023 @@
+#!/usr/bin/env python3
+"""Writes the hostile-input corpus (issue 14) into tests/corpus/files/ and its manifest
+tests/corpus/expected.tsv. Standard library only; deterministic (run it again and git
+shows no change). tests/corpus_test.sh runs pathcl on every case of the manifest.
+
+Every file is small (the largest, the 100,000-deep JSON nestings, are 200 to 600 KB; the
+32 KB PNG that inflates to a 1 GiB texture is built with zlib here). The 100,000-deep node
+chain (about 2 MB of JSON) and every FIFO are made by the runner at test time instead.
+
+The valid parts of every case come from one minimal renderable scene: a camera at
+(0, 0, 3) looking down -Z at an emissive, exactly Lambertian triangle (the Cornell box's
+kernel variant: area lights only), with TEXCOORD_0 so that any case can add a texture.
+
+Manifest columns (tab-separated; '-' is empty):
+  name     the case
+  file     the scene, relative to files/ (the runner renders a copy of files/)
+  args     extra render arguments; {CWD} is the run's working directory, {FILES} the
+           copied files/ directory, {SCENE} the scene's path, {RO} a directory nobody can
+           write into. Without -o the runner adds -o out.png (in {CWD}); without --width,
+           --height or --spp it adds --width 16, --height 16 or --spp 1.
+  expect   error: exit 2, exactly one stderr line "pathcl: error: ..." naming the file
+           (or `names`), nothing written; renders: exit 0 and the output written;
+           any: either (a valid but absurd input, where a limit is as right as a render)
+  setup    comma-separated actions of the runner before the run:
+             mkfifo:REL          a FIFO at files/REL
+             cwd:SRC=DEST        copy files/SRC to {CWD}/DEST
+             mkdir:REL           a directory {CWD}/REL
+             existing-output     {CWD}/out.png exists; it must stay byte-identical
+             chain:N:REL         files/REL: an N-deep node chain ending at the triangle
+  names    what the error line must contain ('-': the scene file's name; A|B: A or B)
+  what     a short description
+"""
+
+import base64
+import json
+import os
+import shutil
+import struct
+import sys
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FILES = os.path.join(HERE, "files")
+
+CASES = []  # (name, file, args, expect, setup, names, description)
+CLI_CASES = 0
+
+
+def case(name, file, expect, what, args="-", setup="-", names="-"):
+    assert "\t" not in what and "\t" not in args
+    assert not any(c[0] == name for c in CASES), name
+    CASES.append((name, file, args, expect, setup, names, what))
+
+
+def write(rel, data):
+    path = os.path.join(FILES, rel)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    with open(path, "wb") as f:
+        f.write(data)
+    return rel
+
+
+# ---------------------------------------------------------------------------------------
+# The minimal scene
+# ---------------------------------------------------------------------------------------
+
+POSITIONS = [(-1.0, -1.0, 0.0), (1.0, -1.0, 0.0), (0.0, 1.0, 0.0)]
+TEXCOORDS = [(0.0, 1.0), (1.0, 1.0), (0.5, 0.0)]
+
+
+def geometry():
+    """68 bytes: POSITION (36), TEXCOORD_0 (24), u16 indices (6) and 2 bytes of padding."""
+    data = b"".join(struct.pack("<3f", *p) for p in POSITIONS)
+    data += b"".join(struct.pack("<2f", *t) for t in TEXCOORDS)
+    data += struct.pack("<3H", 0, 1, 2) + b"\0\0"
+    assert len(data) == 68
+    return data
+
+
+GEOMETRY = geometry()
+DATA_URI = "data:application/octet-stream;base64," + base64.b64encode(GEOMETRY).decode("ascii")
+
+
+def base(buffer_uri=DATA_URI):
+    """The minimal renderable scene as a dict; buffer_uri None: a GLB's BIN chunk."""
+    buffer = {"byteLength": len(GEOMETRY)}
+    if buffer_uri is not None:
+        buffer["uri"] = buffer_uri
+    return {
+        "asset": {"version": "2.0", "generator": "pathcl tests/corpus/make_corpus.py"},
+        "extensionsUsed": ["KHR_materials_specular"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [
+            {"name": "triangle", "mesh": 0},
+            {"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.0]},
+        ],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.9, "aspectRatio": 1.0, "znear": 0.01}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2,
+                                    "material": 0, "mode": 4}]}],
+        "materials": [{
+            "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1.0], "metallicFactor": 0.0,
+                                     "roughnessFactor": 1.0},
+            "emissiveFactor": [1.0, 1.0, 1.0],
+            "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}},
+        }],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+             "min": [-1.0, -1.0, 0.0], "max": [1.0, 1.0, 0.0]},
+            {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"},
+            {"bufferView": 2, "componentType": 5123, "count": 3, "type": "SCALAR"},
+        ],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 36},
+            {"buffer": 0, "byteOffset": 36, "byteLength": 24},
+            {"buffer": 0, "byteOffset": 60, "byteLength": 6},
+        ],
+        "buffers": [buffer],
+    }
+
+
+def dump(model):
+    return json.dumps(model, indent=1, allow_nan=False) + "\n"
+
+
+def gltf(rel, model):
+    return write(rel, dump(model))
+
+
+def with_light(light, node_extra=None):
+    m = base()
+    m["extensionsUsed"].append("KHR_lights_punctual")
+    m["extensions"] = {"KHR_lights_punctual": {"lights": [light]}}
+    node = {"name": "light", "translation": [0.0, 0.0, 1.0], "extensions": {"KHR_lights_punctual": {"light": 0}}}
+    node.update(node_extra or {})
+    m["nodes"].append(node)
+    m["scenes"][0]["nodes"].append(2)
+    return m
+
+
+def with_texture(image):
+    m = base()
+    m["images"] = [image]
+    m["textures"] = [{"source": 0}]
+    m["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    return m
+
+
+def with_environment(env):
+    m = base()
+    m["scenes"][0]["extras"] = {"environment": env}
+    return m
+
+
+def replace_number(text, old, new):
+    """Puts a token JSON cannot hold (NaN, 1e999, a 20-digit integer) in place of a
+    unique placeholder number."""
+    assert text.count(old) == 1, old
+    return text.replace(old, new)
+
+
+# ---------------------------------------------------------------------------------------
+# Binary formats
+# ---------------------------------------------------------------------------------------
+
+
+def glb(json_bytes, bin_bytes, magic=b"glTF", version=2, total=None, json_len=None, json_type=b"JSON",
+        bin_len=None, bin_type=b"BIN\0", cut=None):
+    """A GLB container; every header field can be overridden, and `cut` truncates."""
+    json_bytes += b" " * (-len(json_bytes) % 4)
+    body = struct.pack("<I", len(json_bytes) if json_len is None else json_len) + json_type + json_bytes
+    if bin_bytes is not None:
+        bin_bytes += b"\0" * (-len(bin_bytes) % 4)
+        body += struct.pack("<I", len(bin_bytes) if bin_len is None else bin_len) + bin_type + bin_bytes
+    length = 12 + len(body) if total is None else total
+    data = magic + struct.pack("<II", version, length) + body
+    return data if cut is None else data[:cut]
+
+
+def glb_json(model):
+    return json.dumps(model, separators=(",", ":"), allow_nan=False).encode("utf-8")
+
+
+def png_chunk(kind, payload, crc=None):
+    c = zlib.crc32(kind + payload) & 0xFFFFFFFF if crc is None else crc
+    return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", c)
+
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def png(width, height, rows, bit_depth=8, colour_type=2, ihdr_crc=None, idat_crc=None, idat=None, iend=True):
+    ihdr = struct.pack(">IIBBBBB", width, height, bit_depth, colour_type, 0, 0, 0)
+    compressed = zlib.compress(rows, 9) if idat is None else idat
+    data = PNG_SIGNATURE + png_chunk(b"IHDR", ihdr, ihdr_crc) + png_chunk(b"IDAT", compressed, idat_crc)
+    return data + (png_chunk(b"IEND", b"") if iend else b"")
+
+
+def rgb_rows(width, height, texel=(200, 120, 40)):
+    row = b"\0" + bytes(texel) * width
+    return row * height
+
+
+VALID_PNG = png(2, 2, rgb_rows(2, 2))
+
+
+def hdr(width, height, pixels=None, header_extra=b""):
+    """Radiance RGBE, flat (uncompressed) scanlines."""
+    head = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n" + header_extra + b"\n"
+    head += b"-Y %d +X %d\n" % (height, width)
+    if pixels is None:
+        pixels = bytes((128, 128, 128, 129)) * (width * height)  # (1, 1, 1)
+    return head + pixels
+
+
+def exr(width, height, x_min=0, y_min=0, x_max=None, y_max=None, cut=None, offsets=None):
+    """A scanline OpenEXR file: channels B, G, R as FLOAT, no compression, one line per block."""
+    x_max = x_min + width - 1 if x_max is None else x_max
+    y_max = y_min + height - 1 if y_max is None else y_max
+
+    def attribute(name, kind, value):
+        return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value)) + value
+
+    chlist = b"".join(c + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    header = struct.pack("<Ii", 20000630, 2)
+    header += attribute(b"channels", b"chlist", chlist)
+    header += attribute(b"compression", b"compression", b"\0")
+    header += attribute(b"dataWindow", b"box2i", struct.pack("<4i", x_min, y_min, x_max, y_max))
+    header += attribute(b"displayWindow", b"box2i", struct.pack("<4i", x_min, y_min, x_max, y_max))
+    header += attribute(b"lineOrder", b"lineOrder", b"\0")
+    header += attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0))
+    header += attribute(b"screenWindowCenter", b"v2f", struct.pack("<2f", 0.0, 0.0))
+    header += attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0))
+    header += b"\0"
+    lines = height if offsets is None else offsets
+    table_end = len(header) + 8 * lines
+    line_bytes = 8 + 3 * 4 * width
+    table = b"".join(struct.pack("<Q", table_end + y * line_bytes) for y in range(lines))
+    blocks = b""
+    if offsets is None:
+        for y in range(height):
+            blocks += struct.pack("<ii", y_min + y, 3 * 4 * width)
+            for channel in (0.25, 0.5, 1.0):  # B, G, R
+                blocks += struct.pack("<f", channel) * width
+    data = header + table + blocks
+    return data if cut is None else data[:cut]
+
+
+# ---------------------------------------------------------------------------------------
+# The cases
+# ---------------------------------------------------------------------------------------
+
+
+def valid_scenes():
+    gltf("valid.gltf", base())
+    case("valid-gltf", "valid.gltf", "renders", "the minimal scene itself (a data: URI buffer)")
+    write("valid.glb", glb(glb_json(base(None)), GEOMETRY))
+    case("valid-glb", "valid.glb", "renders", "the minimal scene as a GLB")
+    write("shared/triangle.bin", GEOMETRY)
+    gltf("valid-external-bin.gltf", base("shared/triangle.bin"))
+    case("valid-external-bin", "valid-external-bin.gltf", "renders", "the buffer in a .bin file in a subdirectory")
+    write("shared/texture.png", VALID_PNG)
+    gltf("valid-texture.gltf", with_texture({"uri": "shared/texture.png"}))
+    case("valid-texture", "valid-texture.gltf", "renders", "a 2x2 PNG base-colour texture")
+    write("env/valid.hdr", hdr(8, 4))
+    gltf("valid-env-hdr.gltf", with_environment({"uri": "env/valid.hdr", "strength": 0.5}))
+    case("valid-env-hdr", "valid-env-hdr.gltf", "renders", "an 8x4 Radiance HDR environment map in scene extras")
+    write("env/valid.exr", exr(8, 4))
+    gltf("valid-env-exr.gltf", with_environment({"uri": "env/valid.exr"}))
+    case("valid-env-exr", "valid-env-exr.gltf", "renders", "an 8x4 OpenEXR environment map in scene extras")
+    m = base()
+    m["nodes"][0]["scale"] = [0.0, 0.0, 0.0]
+    gltf("valid-zero-scale.gltf", m)
+    case("valid-zero-scale", "valid-zero-scale.gltf", "renders",
+         "a singular (zero-scale) mesh node: its triangle is degenerate and dropped, a black image")
+    # A 1,000-deep chain is committed; the 100,000-deep one is made at test time.
+    gltf("valid-chain-1000.gltf", chain_model(1000))
+    case("valid-chain-1000", "valid-chain-1000.gltf", "renders", "a 1,000-deep node chain ending at the triangle")
+    # The runner's template: compact JSON, one line, with "@NODES@" for the node objects
+    # and "@CAMERA@" for the camera node's index.
+    m = base()
+    m["nodes"] = "@NODES@"
+    m["scenes"][0]["nodes"] = [0, "@CAMERA@"]
+    write("generated/chain-template.json", json.dumps(m, separators=(",", ":")) + "\n")
+    case("valid-chain-100000", "generated/chain-100000.gltf", "renders",
+         "a 100,000-deep node chain ending at the triangle (about 2 MB, made by the runner)",
+         setup="chain:100000:generated/chain-100000.gltf")
+
+
+def chain_model(depth):
+    """Node 0 -> 1 -> ... -> depth-1, which holds the mesh; the camera is the last node.
+    (The runner writes the same structure with awk for the 100,000-deep case.)"""
+    m = base()
+    nodes = [{"children": [i + 1]} for i in range(depth - 1)] + [{"mesh": 0}]
+    nodes.append({"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.0]})
+    m["nodes"] = nodes
+    m["scenes"][0]["nodes"] = [0, depth]
+    return m
+
+
+def json_cases():
+    text = dump(base())
+    write("json/truncated.gltf", text[: len(text) // 2])
+    case("json-truncated", "json/truncated.gltf", "error", "the minimal scene cut in half")
+    write("json/empty.gltf", b"")
+    case("json-empty", "json/empty.gltf", "error", "an empty file")
+    write("json/binary-garbage.gltf", bytes((i * 37 + 11) % 256 for i in range(512)))
+    case("json-binary-garbage", "json/binary-garbage.gltf", "error", "512 bytes of binary garbage")
+    write("json/array-root.gltf", "[]\n")
+    case("json-array-root", "json/array-root.gltf", "error", "valid JSON whose root is an array")
+    write("json/no-asset.gltf", '{"scenes": [{"nodes": []}], "scene": 0}\n')
+    case("json-no-asset", "json/no-asset.gltf", "error", "no asset object (required)")
+    write("json/nan-literal.gltf", replace_number(text, "0.9", "NaN"))
+    case("json-nan-literal", "json/nan-literal.gltf", "error", "yfov written as the non-JSON token NaN")
+    write("json/glb-named-gltf.gltf", glb(glb_json(base(None)), GEOMETRY))
+    case("json-glb-named-gltf", "json/glb-named-gltf.gltf", "any",
+         "a valid GLB in a .gltf file (refused as JSON, or recognised by its magic)")
+    depth = 100000
+    nested = "[" * depth + "]" * depth
+    write("json/deep-array-extras.gltf", replace_number(dump(with_extras_placeholder()), "424242", nested))
+    case("json-deep-array-extras", "json/deep-array-extras.gltf", "error",
+         "100,000 nested arrays in scene extras (a recursive parser overflows its stack)")
+    nested = '{"a":' * depth + "1" + "}" * depth
+    write("json/deep-object-extras.gltf", replace_number(dump(with_extras_placeholder()), "424242", nested))
+    case("json-deep-object-extras", "json/deep-object-extras.gltf", "error",
+         "100,000 nested objects in scene extras")
+    m = base()
+    m["unknownProperty"] = 424242
+    nested = "[" * depth + "]" * depth
+    write("json/deep-unknown-property.gltf", replace_number(dump(m), "424242", nested))
+    case("json-deep-unknown-property", "json/deep-unknown-property.gltf", "any",
+         "100,000 nested arrays in an unknown top-level property (ignored, or refused by a nesting limit)")
+    m = base(None)
+    m["scenes"][0]["extras"] = 424242
+    write("json/deep-extras.glb", glb(replace_number(glb_json(m).decode(), "424242", "[" * depth + "]" * depth)
+                                       .encode(), GEOMETRY))
+    case("glb-deep-json", "json/deep-extras.glb", "error", "a GLB whose JSON chunk nests 100,000 arrays")
+
+
+def with_extras_placeholder():
+    m = base()
+    m["scenes"][0]["extras"] = 424242
+    return m
+
+
+def glb_cases():
+    j, b = glb_json(base(None)), GEOMETRY
+    full = glb(j, b)
+    write("glb/truncated-header.glb", full[:6])
+    case("glb-truncated-header", "glb/truncated-header.glb", "error", "6 bytes: half a GLB header")
+    write("glb/truncated-half.glb", full[: len(full) // 2])
+    case("glb-truncated-half", "glb/truncated-half.glb", "error", "a valid GLB cut in half (inside the JSON chunk)")
+    write("glb/truncated-bin.glb", full[:-20])
+    case("glb-truncated-bin", "glb/truncated-bin.glb", "error", "a valid GLB missing the last 20 bytes of its BIN chunk")
+    write("glb/bad-magic.glb", glb(j, b, magic=b"glTX"))
+    case("glb-bad-magic", "glb/bad-magic.glb", "error", "magic 'glTX'")
+    write("glb/version-1.glb", glb(j, b, version=1))
+    case("glb-version-1", "glb/version-1.glb", "error", "GLB container version 1")
+    write("glb/length-past-end.glb", glb(j, b, total=len(full) + 4096))
+    case("glb-length-past-end", "glb/length-past-end.glb", "error", "header length 4 KB past the end of the file")
+    write("glb/length-too-small.glb", glb(j, b, total=20))
+    case("glb-length-too-small", "glb/length-too-small.glb", "error", "header length 20, shorter than its chunks")
+    write("glb/json-length-past-end.glb", glb(j, b, json_len=len(j) + 4096))
+    case("glb-json-length-past-end", "glb/json-length-past-end.glb", "error",
+         "JSON chunk length 4 KB past the end of the file")
+    write("glb/json-length-huge.glb", glb(j, b, json_len=0xFFFFFFF0))
+    case("glb-json-length-huge", "glb/json-length-huge.glb", "error", "JSON chunk length 0xFFFFFFF0")
+    write("glb/json-length-zero.glb", glb(j, b, json_len=0))
+    case("glb-json-length-zero", "glb/json-length-zero.glb", "error", "JSON chunk length 0")
+    write("glb/json-chunk-type-bin.glb", glb(j, b, json_type=b"BIN\0"))
+    case("glb-json-chunk-type-bin", "glb/json-chunk-type-bin.glb", "error", "first chunk typed BIN, not JSON")
+    # BIN chunk 8 bytes longer than what is left; the header's total length matches the file.
+    bin_padded = len(b) + (-len(b) % 4)
+    write("glb/bin-length-8-past-end.glb", glb(j, b, bin_len=bin_padded + 8))
+    case("glb-bin-length-8-past-end", "glb/bin-length-8-past-end.glb", "error",
+         "BIN chunk length runs 8 bytes past the end of the file (header length consistent)")
+    data = glb(j, b, bin_len=bin_padded + 8)
+    data = data[:8] + struct.pack("<I", len(data) + 8) + data[12:]
+    write("glb/bin-length-and-total-8-past-end.glb", data)
+    case("glb-bin-length-and-total-8-past-end", "glb/bin-length-and-total-8-past-end.glb", "error",
+         "BIN chunk length and header length both 8 bytes past the end")
+    write("glb/bin-length-huge.glb", glb(j, b, bin_len=0xFFFFFFFF))
+    case("glb-bin-length-huge", "glb/bin-length-huge.glb", "error", "BIN chunk length 0xFFFFFFFF")
+    write("glb/bin-shorter-than-buffer.glb", glb(j, b[:40]))
+    case("glb-bin-shorter-than-buffer", "glb/bin-shorter-than-buffer.glb", "error",
+         "buffer byteLength 68 but a 40-byte BIN chunk")
+    write("glb/no-bin-chunk.glb", glb(j, None))
+    case("glb-no-bin-chunk", "glb/no-bin-chunk.glb", "error", "buffer 0 has no uri and there is no BIN chunk")
+    m = base(None)
+    m["images"] = [{"bufferView": 3, "mimeType": "image/png"}]
+    m["textures"] = [{"source": 0}]
+    m["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    m["bufferViews"].append({"buffer": 0, "byteOffset": 64, "byteLength": 4096})
+    write("glb/image-view-past-buffer.glb", glb(glb_json(m), b))
+    case("glb-image-view-past-buffer", "glb/image-view-past-buffer.glb", "error",
+         "an image bufferView of 4096 bytes in a 68-byte buffer")
+    m = base(None)
+    corrupt = corrupt_pngs()["idat-crc"]
+    m["buffers"][0]["byteLength"] = 68 + len(corrupt)
+    m["bufferViews"].append({"buffer": 0, "byteOffset": 68, "byteLength": len(corrupt)})
+    m["images"] = [{"bufferView": 3, "mimeType": "image/png"}]
+    m["textures"] = [{"source": 0}]
+    m["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    write("glb/corrupt-embedded-png.glb", glb(glb_json(m), b + corrupt))
+    case("glb-corrupt-embedded-png", "glb/corrupt-embedded-png.glb", "error",
+         "an embedded PNG (bufferView) with a bad IDAT CRC")
+
+
+def accessor_cases():
+    def variant(rel, name, what, edit, raw=None):
+        m = base()
+        edit(m)
+        text = dump(m)
+        if raw:
+            text = replace_number(text, *raw)
+        write(rel, text)
+        case(name, rel, "error", what)
+
+    def set_(path, value):
+        def edit(m):
+            target = m
+            for key in path[:-1]:
+                target = target[key]
+            target[path[-1]] = value
+        return edit
+
+    variant("accessor/count-stride-overflow.gltf", "accessor-count-stride-overflow",
+            "POSITION count 2^60+1 with byteStride 16: count x stride wraps to 0 mod 2^64",
+            lambda m: (m["bufferViews"][0].update(byteStride=16), m["accessors"][0].update(count=424242)),
+            ("424242", "1152921504606846977"))
+    variant("accessor/count-huge.gltf", "accessor-count-huge", "POSITION count 10^18",
+            set_(["accessors", 0, "count"], 424242), ("424242", "1000000000000000000"))
+    variant("accessor/count-2p64.gltf", "accessor-count-2p64", "indices count 2^64 (not even an unsigned 64-bit value)",
+            set_(["accessors", 2, "count"], 424242), ("424242", "18446744073709551616"))
+    variant("accessor/count-negative.gltf", "accessor-count-negative", "POSITION count -1",
+            set_(["accessors", 0, "count"], -1))
+    variant("accessor/byte-offset-near-2p64.gltf", "accessor-byte-offset-near-2p64",
+            "accessor byteOffset 2^64-4", set_(["accessors", 0, "byteOffset"], 424242),
+            ("424242", "18446744073709551612"))
+    variant("accessor/view-offset-near-2p64.gltf", "bufferview-byte-offset-near-2p64",
+            "bufferView byteOffset 2^64-1 (offset + length wraps to a small number)",
+            set_(["bufferViews", 0, "byteOffset"], 424242), ("424242", "18446744073709551615"))
+    variant("accessor/view-length-huge.gltf", "bufferview-byte-length-huge", "bufferView byteLength 2^63",
+            set_(["bufferViews", 0, "byteLength"], 424242), ("424242", "9223372036854775808"))
+    variant("accessor/view-stride-huge.gltf", "bufferview-byte-stride-huge", "bufferView byteStride 2^32+12",
+            set_(["bufferViews", 0, "byteStride"], 4294967308))
+    variant("accessor/indices-out-of-range.gltf", "indices-out-of-range", "index 3 of a 3-vertex mesh",
+            lambda m: m["buffers"][0].update(uri="data:application/octet-stream;base64," + base64.b64encode(
+                GEOMETRY[:60] + struct.pack("<3H", 0, 1, 3) + b"\0\0").decode()))
+    variant("accessor/indices-u32-max.gltf", "indices-u32-max", "a u32 index 0xFFFFFFFF",
+            lambda m: (m["buffers"][0].update(byteLength=72, uri="data:application/octet-stream;base64," +
+                                              base64.b64encode(GEOMETRY[:60] + struct.pack("<3I", 0, 1, 0xFFFFFFFF))
+                                              .decode()),
+                       m["bufferViews"][2].update(byteLength=12), m["accessors"][2].update(componentType=5125)))
+    variant("accessor/position-doubles.gltf", "accessor-component-type-5130", "POSITION componentType 5130 (double)",
+            set_(["accessors", 0, "componentType"], 5130))
+    variant("accessor/component-type-negative.gltf", "accessor-component-type-negative",
+            "POSITION componentType -1", set_(["accessors", 0, "componentType"], -1))
+    variant("accessor/indices-float.gltf", "accessor-indices-float", "indices with componentType 5126 (float)",
+            lambda m: (m["accessors"][2].update(componentType=5126, count=1)))
+    variant("accessor/position-u8.gltf", "accessor-position-u8", "POSITION of unnormalized unsigned bytes",
+            set_(["accessors", 0, "componentType"], 5121))
+    variant("accessor/type-vec7.gltf", "accessor-type-vec7", "POSITION type 'VEC7'",
+            set_(["accessors", 0, "type"], "VEC7"))
+    variant("accessor/position-scalar.gltf", "accessor-position-scalar", "POSITION of type SCALAR",
+            lambda m: m["accessors"][0].update(type="SCALAR", count=9))
+    variant("accessor/sparse-index-out-of-range.gltf", "sparse-index-out-of-range",
+            "a sparse accessor that replaces element 1000 of 3",
+            lambda m: m["accessors"][0].update(sparse={
+                "count": 1, "indices": {"bufferView": 2, "componentType": 5123, "byteOffset": 0},
+                "values": {"bufferView": 0}}) or m["buffers"][0].update(
+                uri="data:application/octet-stream;base64," +
+                base64.b64encode(GEOMETRY[:60] + struct.pack("<3H", 1000, 1, 2) + b"\0\0").decode()))
+    variant("accessor/sparse-count-huge.gltf", "sparse-count-huge", "sparse count 2^40 over a 3-element accessor",
+            lambda m: m["accessors"][0].update(sparse={
+                "count": 1099511627776, "indices": {"bufferView": 2, "componentType": 5123},
+                "values": {"bufferView": 0}}))
+    variant("accessor/buffer-length-huge.gltf", "buffer-byte-length-huge",
+            "buffer byteLength 2^62 for 68 bytes of data", set_(["buffers", 0, "byteLength"], 4611686018427387904))
+    variant("accessor/buffer-shorter-than-length.gltf", "buffer-data-shorter-than-length",
+            "data: URI of 68 bytes for a buffer of byteLength 4096", set_(["buffers", 0, "byteLength"], 4096))
+    variant("accessor/missing-position.gltf", "primitive-without-position", "a primitive without POSITION",
+            lambda m: m["meshes"][0]["primitives"][0]["attributes"].pop("POSITION"))
+    variant("accessor/mode-99.gltf", "primitive-mode-99", "primitive mode 99",
+            set_(["meshes", 0, "primitives", 0, "mode"], 99))
+    variant("accessor/mesh-index-2p32.gltf", "node-mesh-index-2p32", "node mesh index 2^32 (wraps to 0 as an int)",
+            set_(["nodes", 0, "mesh"], 4294967296))
+    variant("accessor/material-out-of-range.gltf", "material-index-out-of-range", "primitive material 7 of 1",
+            set_(["meshes", 0, "primitives", 0, "material"], 7))
+    variant("accessor/texture-source-out-of-range.gltf", "texture-source-out-of-range",
+            "a baseColorTexture whose image 5 does not exist",
+            lambda m: (m.update(textures=[{"source": 5}]),
+                       m["materials"][0]["pbrMetallicRoughness"].update(baseColorTexture={"index": 0})))
+    variant("accessor/primitives-object.gltf", "mesh-primitives-object",
+            "mesh primitives an object, not an array (rendered zero triangles)",
+            lambda m: m["meshes"][0].update(primitives=m["meshes"][0]["primitives"][0]))
+    variant("accessor/attribute-index-float.gltf", "attribute-index-float", "POSITION accessor 0.5",
+            set_(["meshes", 0, "primitives", 0, "attributes", "POSITION"], 0.5))
+    variant("accessor/count-float.gltf", "accessor-count-float", "accessor count 2.5",
+            set_(["accessors", 0, "count"], 2.5))
+    variant("accessor/buffer-view-index-2p32-plus-1.gltf", "accessor-buffer-view-2p32-plus-1",
+            "accessor bufferView 2^32 + 1 (wraps to 1 as an int)", set_(["accessors", 0, "bufferView"], 4294967297))
+    variant("accessor/texcoord-huge.gltf", "texture-texcoord-1e300", "baseColorTexture texCoord 1e300",
+            lambda m: (m.update(images=[{"uri": "data:image/png;base64," + base64.b64encode(VALID_PNG).decode()}],
+                                textures=[{"source": 0}]),
+                       m["materials"][0]["pbrMetallicRoughness"].update(
+                           baseColorTexture={"index": 0, "texCoord": 424242})),
+            ("424242", "1e300"))
+
+
+def node_cases():
+    def nodes(rel, name, what, expect, node_list, roots, raw=None):
+        m = base()
+        m["nodes"] = node_list + [{"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.0]}]
+        m["scenes"][0]["nodes"] = roots + [len(node_list)]
+        text = dump(m)
+        if raw:
+            text = replace_number(text, *raw)
+        write(rel, text)
+        case(name, rel, expect, what)
+
+    nodes("node/cycle-self.gltf", "node-cycle-self", "node 0 is its own child", "error",
+          [{"mesh": 0, "children": [0]}], [0])
+    nodes("node/cycle-two.gltf", "node-cycle-two", "nodes 0 and 1 are each other's child", "error",
+          [{"mesh": 0, "children": [1]}, {"children": [0]}], [0])
+    nodes("node/cycle-below-root.gltf", "node-cycle-below-root", "a 3-cycle below a root node", "error",
+          [{"children": [1]}, {"mesh": 0, "children": [2]}, {"children": [3]}, {"children": [1]}], [0])
+    nodes("node/two-parents.gltf", "node-two-parents", "node 2 is a child of nodes 0 and 1 (glTF forbids)", "error",
+          [{"children": [2]}, {"children": [2]}, {"mesh": 0}], [0, 1])
+    nodes("node/root-and-child.gltf", "node-root-also-child", "node 1 is a root and the child of root 0", "error",
+          [{"children": [1]}, {"mesh": 0}], [0, 1])
+    dag = [{"children": [i + 1, i + 1]} for i in range(40)] + [{"mesh": 0}]
+    nodes("node/dag-40-levels.gltf", "node-dag-2p40-instances",
+          "40 levels, each node listing the next twice: 2^40 instances of one triangle", "error", dag, [0])
+    nodes("node/child-out-of-range.gltf", "node-child-out-of-range", "children [99] of 2 nodes", "error",
+          [{"mesh": 0, "children": [99]}], [0])
+    nodes("node/child-negative.gltf", "node-child-negative", "children [-1]", "error",
+          [{"mesh": 0, "children": [-1]}], [0])
+    nodes("node/scene-root-out-of-range.gltf", "scene-root-out-of-range", "scene nodes [1000000]", "error",
+          [{"mesh": 0}], [1000000])
+    nodes("node/matrix-inf.gltf", "node-matrix-inf", "a matrix element 1e999 (inf)", "error",
+          [{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 424242, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}], [0], ("424242", "1e999"))
+    nodes("node/translation-1e308-twice.gltf", "node-translation-overflow",
+          "two nested translations of 1e308: the world position overflows to inf", "error",
+          [{"translation": [1e308, 0, 0], "children": [1]}, {"translation": [1e308, 0, 0], "mesh": 0}], [0])
+    nodes("node/scale-overflow.gltf", "node-scale-overflow",
+          "nested scales 1e200 x 1e200: inf, then inf x 0 = NaN in the composed matrix", "error",
+          [{"scale": [1e200, 1e200, 1e200], "children": [1]}, {"scale": [1e200, 1e200, 1e200], "mesh": 0}], [0])
+    nodes("node/rotation-zero.gltf", "node-rotation-zero-quaternion",
+          "rotation (0, 0, 0, 0): no unit quaternion (glm quietly normalizes it to the identity)", "error", [{"rotation": [0, 0, 0, 0], "mesh": 0}], [0])
+    nodes("node/rotation-three.gltf", "node-rotation-three-components", "rotation with 3 components", "error",
+          [{"rotation": [0, 0, 1], "mesh": 0}], [0])
+    nodes("node/children-object.gltf", "node-children-object", "children {\"0\": 1}, not an array", "error",
+          [{"mesh": 0, "children": {"0": 1}}, {}], [0])
+    nodes("node/rotation-inf.gltf", "node-rotation-inf", "rotation (1e999, 0, 0, 1)", "error",
+          [{"rotation": [424242, 0, 0, 1], "mesh": 0}], [0], ("424242", "1e999"))
+    m = base()
+    m["nodes"][1]["matrix"] = [0.0] * 16
+    gltf("node/camera-matrix-zero.gltf", m)
+    case("camera-matrix-singular", "node/camera-matrix-zero.gltf", "error", "the camera node's matrix is all zeros")
+    m = base()
+    m["nodes"][1]["scale"] = [1.0, 0.0, 1.0]
+    gltf("node/camera-scale-y-zero.gltf", m)
+    case("camera-scale-singular", "node/camera-scale-y-zero.gltf", "error",
+         "the camera node's scale (1, 0, 1) collapses its up axis")
+    m = base()
+    m["scene"] = 3
+    gltf("node/default-scene-out-of-range.gltf", m)
+    case("default-scene-out-of-range", "node/default-scene-out-of-range.gltf", "error", "scene 3 of 1")
+
+
+def camera_cases():
+    def camera(rel, name, what, perspective=None, raw=None, cam=None, extras=None):
+        m = base()
+        if perspective is not None:
+            m["cameras"][0]["perspective"].update(perspective)
+        if cam is not None:
+            m["cameras"][0] = cam
+        if extras is not None:
+            m["nodes"][1]["extras"] = extras
+        text = dump(m)
+        if raw:
+            text = replace_number(text, *raw)
+        write(rel, text)
+        case(name, rel, "error", what)
+
+    camera("camera/yfov-zero.gltf", "camera-yfov-0", "yfov 0", {"yfov": 0.0})
+    camera("camera/yfov-negative.gltf", "camera-yfov-negative", "yfov -0.5", {"yfov": -0.5})
+    camera("camera/yfov-inf.gltf", "camera-yfov-inf", "yfov 1e999 (inf; JSON has no NaN)", {"yfov": 424242},
+           ("424242", "1e999"))
+    camera("camera/yfov-4.gltf", "camera-yfov-past-pi", "yfov 4 (more than pi)", {"yfov": 4.0})
+    camera("camera/ortho-ymag-zero.gltf", "camera-ortho-ymag-0", "orthographic ymag 0",
+           cam={"type": "orthographic", "orthographic": {"xmag": 1.0, "ymag": 0.0, "znear": 0.01, "zfar": 10.0}})
+    camera("camera/type-unknown.gltf", "camera-type-unknown", "camera type 'fisheye'",
+           cam={"type": "fisheye", "perspective": {"yfov": 0.9, "znear": 0.01}})
+    camera("camera/aperture-negative.gltf", "camera-aperture-negative", "thin lens aperture -1",
+           extras={"aperture": -1.0, "focusDistance": 2.0})
+    camera("camera/focus-inf.gltf", "camera-focus-distance-inf", "thin lens focusDistance 1e999",
+           extras={"aperture": 0.1, "focusDistance": 424242}, raw=("424242", "1e999"))
+    m = base()
+    m["nodes"][1]["camera"] = 7
+    gltf("camera/index-out-of-range.gltf", m)
+    case("camera-index-out-of-range", "camera/index-out-of-range.gltf", "error", "node camera 7 of 1")
+
+
+def light_cases():
+    def light(rel, name, what, lt, raw=None, node_extra=None):
+        text = dump(with_light(lt, node_extra))
+        if raw:
+            text = replace_number(text, *raw)
+        write(rel, text)
+        case(name, rel, "error", what)
+
+    point = {"type": "point", "color": [1.0, 1.0, 1.0], "intensity": 1.0}
+    light("light/intensity-negative.gltf", "light-intensity-negative", "point light intensity -1",
+          dict(point, intensity=-1.0))
+    light("light/intensity-nan.gltf", "light-intensity-nan", "point light intensity NaN (a non-JSON token)",
+          dict(point, intensity=424242), ("424242", "NaN"))
+    light("light/intensity-1e39.gltf", "light-intensity-1e39", "intensity 1e39: finite as a double, inf as a float",
+          dict(point, intensity=1e39))
+    light("light/intensity-1e999.gltf", "light-intensity-inf", "intensity 1e999 (inf)", dict(point, intensity=424242),
+          ("424242", "1e999"))
+    light("light/color-1e39.gltf", "light-color-1e39", "colour (1e39, 1, 1): inf as a float",
+          dict(point, color=[1e39, 1.0, 1.0]))
+    light("light/color-intensity-product.gltf", "light-color-times-intensity-overflow",
+          "colour 1e20 x intensity 1e20: each a finite float, the product inf", dict(point, color=[1e20, 1e20, 1e20],
+                                                                                     intensity=1e20))
+    light("light/color-negative.gltf", "light-color-negative", "colour (-1, 1, 1)",
+          dict(point, color=[-1.0, 1.0, 1.0]))
+    light("light/type-unknown.gltf", "light-type-unknown", "light type 'area'", dict(point, type="area"))
+    light("light/spot-cone-inverted.gltf", "spot-cone-inverted", "innerConeAngle 0.8 > outerConeAngle 0.2",
+          {"type": "spot", "intensity": 1.0, "spot": {"innerConeAngle": 0.8, "outerConeAngle": 0.2}})
+    light("light/rect-spot-hfov-180.gltf", "rect-spot-hfov-180", "rectangular spot extras hfov 180",
+          {"type": "spot", "intensity": 1.0, "extras": {"hfov": 180.0, "vfov": 30.0}})
+    light("light/sphere-radius-1e-40.gltf", "sphere-radius-1e-40",
+          "sphere light radius 1e-40: 0 or denormal as a float, radiance I/(pi r^2) overflows",
+          dict(point, extras={"radius": 1e-40}))
+    light("light/sphere-radius-negative.gltf", "sphere-radius-negative", "sphere light radius -0.1",
+          dict(point, extras={"radius": -0.1}))
+    light("light/sphere-radius-1e39.gltf", "sphere-radius-1e39", "sphere light radius 1e39 (inf as a float)",
+          dict(point, extras={"radius": 1e39}))
+    light("light/sphere-radius-string.gltf", "sphere-radius-string", "sphere light radius \"big\"",
+          dict(point, extras={"radius": "big"}))
+    light("light/index-1e20.gltf", "light-index-1e20", "node light index 1e20 (no int holds it)", point,
+          node_extra={"extensions": {"KHR_lights_punctual": {"light": 1e20}}})
+    light("light/rect-spot-hfov-string.gltf", "rect-spot-hfov-string",
+          "rectangular spot extras hfov \"wide\" (was read as a round spot)",
+          {"type": "spot", "intensity": 1.0, "extras": {"hfov": "wide", "vfov": 30.0}})
+    light("light/index-out-of-range.gltf", "light-index-out-of-range", "node light index 3 of 1", point,
+          node_extra={"extensions": {"KHR_lights_punctual": {"light": 3}}})
+    light("light/node-scale-zero.gltf", "light-node-singular", "a spot light on a node of scale 0",
+          {"type": "spot", "intensity": 1.0}, node_extra={"scale": [0.0, 0.0, 0.0]})
+
+
+def material_cases():
+    def material(rel, name, what, edit, raw=None):
+        m = base()
+        edit(m["materials"][0])
+        for ext in m["materials"][0].get("extensions", {}):
+            if ext not in m["extensionsUsed"]:
+                m["extensionsUsed"].append(ext)
+        text = dump(m)
+        if raw:
+            text = replace_number(text, *raw)
+        write(rel, text)
+        case(name, rel, "error", what)
+
+    def ext(name, values):
+        return lambda mat: mat.setdefault("extensions", {}).update({name: values})
+
+    material("material/ior-negative.gltf", "material-ior-negative", "KHR_materials_ior ior -1",
+             ext("KHR_materials_ior", {"ior": -1.0}))
+    material("material/ior-inf.gltf", "material-ior-inf", "KHR_materials_ior ior 1e999 (inf)",
+             ext("KHR_materials_ior", {"ior": 424242}), ("424242", "1e999"))
+    material("material/ior-nan.gltf", "material-ior-nan", "KHR_materials_ior ior NaN (a non-JSON token)",
+             ext("KHR_materials_ior", {"ior": 424242}), ("424242", "NaN"))
+    material("material/ior-1e39.gltf", "material-ior-1e39", "KHR_materials_ior ior 1e39 (inf as a float)",
+             ext("KHR_materials_ior", {"ior": 1e39}))
+    material("material/emissive-strength-negative.gltf", "material-emissive-strength-negative",
+             "emissiveStrength -5", ext("KHR_materials_emissive_strength", {"emissiveStrength": -5.0}))
+    material("material/emissive-strength-1e39.gltf", "material-emissive-strength-1e39",
+             "emissiveStrength 1e39 (inf as a float)", ext("KHR_materials_emissive_strength",
+                                                           {"emissiveStrength": 1e39}))
+    material("material/base-color-1e39.gltf", "material-base-color-1e39", "baseColorFactor (1e39, 0.8, 0.8, 1)",
+             lambda mat: mat["pbrMetallicRoughness"].update(baseColorFactor=[1e39, 0.8, 0.8, 1.0]))
+    material("material/base-color-short.gltf", "material-base-color-two-components",
+             "baseColorFactor with 2 components", lambda mat: mat["pbrMetallicRoughness"].update(
+                 baseColorFactor=[0.5, 0.5]))
+    material("material/roughness-negative.gltf", "material-roughness-negative", "roughnessFactor -1",
+             lambda mat: mat["pbrMetallicRoughness"].update(roughnessFactor=-1.0))
+    material("material/transmission-inf.gltf", "material-transmission-inf", "transmissionFactor 1e999",
+             ext("KHR_materials_transmission", {"transmissionFactor": 424242}), ("424242", "1e999"))
+    material("material/emissive-four-components.gltf", "material-emissive-four-components",
+             "emissiveFactor with 4 components", lambda mat: mat.update(emissiveFactor=[1.0, 1.0, 1.0, 1.0]))
+    material("material/roughness-string.gltf", "material-roughness-string",
+             "roughnessFactor \"0.5\" (the glTF library skips it: roughness 1)",
+             lambda mat: mat["pbrMetallicRoughness"].update(roughnessFactor="0.5"))
+    material("material/thickness-string.gltf", "material-thickness-string",
+             "KHR_materials_volume thicknessFactor \"thick\" (read as thin-walled)",
+             ext("KHR_materials_volume", {"thicknessFactor": "thick"}))
+    material("material/texture-info-number.gltf", "material-texture-info-number",
+             "baseColorTexture 0 instead of {\"index\": 0}",
+             lambda mat: mat["pbrMetallicRoughness"].update(baseColorTexture=0))
+
+
+def uri_cases():
+    def buffer_uri(rel, name, what, uri, setup="-", names="-"):
+        gltf(rel, base(uri))
+        case(name, rel, "error", what, setup=setup, names=names)
+
+    # Scenes one directory down, so that "../shared/..." names a real, valid file.
+    buffer_uri("uri/buffer-etc-passwd-4-up.gltf", "buffer-uri-etc-passwd-4-up", "buffer uri ../../../../etc/passwd",
+               "../../../../etc/passwd")
+    buffer_uri("uri/buffer-etc-passwd-16-up.gltf", "buffer-uri-etc-passwd-16-up",
+               "buffer uri (../ x 16)etc/passwd: / whatever the depth", "../" * 16 + "etc/passwd")
+    buffer_uri("uri/buffer-dev-zero-up.gltf", "buffer-uri-dev-zero-up", "buffer uri (../ x 16)dev/zero, endless",
+               "../" * 16 + "dev/zero")
+    buffer_uri("uri/buffer-absolute.gltf", "buffer-uri-absolute", "buffer uri /etc/passwd", "/etc/passwd")
+    buffer_uri("uri/buffer-absolute-dev-zero.gltf", "buffer-uri-absolute-dev-zero", "buffer uri /dev/zero",
+               "/dev/zero")
+    buffer_uri("uri/buffer-parent-existing.gltf", "buffer-uri-parent-directory",
+               "buffer uri ../shared/triangle.bin: a valid buffer, but outside the scene's directory",
+               "../shared/triangle.bin")
+    buffer_uri("uri/buffer-dot-dot-inside.gltf", "buffer-uri-up-and-down",
+               "buffer uri ../uri/../shared/triangle.bin", "../uri/../shared/triangle.bin")
+    buffer_uri("uri/buffer-percent-dot-dot.gltf", "buffer-uri-percent-encoded-parent",
+               "buffer uri %2e%2e/shared/triangle.bin", "%2e%2e/shared/triangle.bin")
+    buffer_uri("uri/buffer-backslash.gltf", "buffer-uri-backslash-parent", "buffer uri ..\\shared\\triangle.bin",
+               "..\\shared\\triangle.bin")
+    buffer_uri("uri/buffer-file-scheme.gltf", "buffer-uri-file-scheme", "buffer uri file:///etc/passwd",
+               "file:///etc/passwd")
+    buffer_uri("uri/buffer-http.gltf", "buffer-uri-http", "buffer uri http://127.0.0.1:9/triangle.bin",
+               "http://127.0.0.1:9/triangle.bin")
+    buffer_uri("uri/buffer-shell.gltf", "buffer-uri-shell-expansion",
+               "buffer uri $(touch pwned)`touch pwned2`~/x.bin: no shell expansion (no file 'pwned' appears)",
+               "$(touch pwned)`touch pwned2`~/x.bin")
+    buffer_uri("uri/buffer-directory.gltf", "buffer-uri-directory", "buffer uri '.': a directory", ".")
+    buffer_uri("uri/buffer-subdirectory.gltf", "buffer-uri-subdirectory", "buffer uri 'sub': a directory", "sub")
+    write("uri/sub/.keep", b"")
+    buffer_uri("uri/buffer-empty.gltf", "buffer-uri-empty-string", "buffer uri ''", "")
+    buffer_uri("uri/buffer-fifo.gltf", "buffer-uri-fifo", "buffer uri naming a FIFO (opening it blocks forever)",
+               "fifo.bin", setup="mkfifo:uri/fifo.bin")
+    buffer_uri("uri/buffer-in-cwd-only.gltf", "buffer-uri-only-in-cwd",
+               "buffer uri cwd-only.bin: missing beside the scene, present in the working directory",
+               "cwd-only.bin", setup="cwd:shared/triangle.bin=cwd-only.bin")
+    buffer_uri("uri/buffer-data-bad-base64.gltf", "buffer-data-uri-bad-base64", "buffer data: URI with '@' in base64",
+               "data:application/octet-stream;base64,@@@@" + DATA_URI.split(",")[1][4:])
+    buffer_uri("uri/buffer-data-not-base64.gltf", "buffer-data-uri-not-base64",
+               "buffer data: URI without ;base64", "data:application/octet-stream," + "A" * 68)
+    buffer_uri("uri/buffer-data-empty.gltf", "buffer-data-uri-empty", "buffer data: URI with no data",
+               "data:application/octet-stream;base64,")
+    buffer_uri("uri/buffer-data-wrong-mime.gltf", "buffer-data-uri-wrong-mime", "buffer data: URI of type text/html",
+               "data:text/html;base64," + DATA_URI.split(",")[1])
+
+    def image_uri(rel, name, what, image, setup="-"):
+        gltf(rel, with_texture(image))
+        case(name, rel, "error", what, setup=setup)
+
+    image_uri("uri/image-parent.gltf", "image-uri-parent-directory",
+              "image uri ../shared/texture.png: a valid PNG outside the scene's directory",
+              {"uri": "../shared/texture.png"})
+    image_uri("uri/image-etc-passwd.gltf", "image-uri-etc-passwd-up", "image uri (../ x 16)etc/passwd",
+              {"uri": "../" * 16 + "etc/passwd"})
+    image_uri("uri/image-absolute.gltf", "image-uri-absolute", "image uri /etc/passwd", {"uri": "/etc/passwd"})
+    image_uri("uri/image-dev-zero.gltf", "image-uri-absolute-dev-zero", "image uri /dev/zero", {"uri": "/dev/zero"})
+    image_uri("uri/image-file-scheme.gltf", "image-uri-file-scheme", "image uri file:///etc/passwd",
+              {"uri": "file:///etc/passwd"})
+    image_uri("uri/image-https.gltf", "image-uri-https", "image uri https://127.0.0.1:9/t.png",
+              {"uri": "https://127.0.0.1:9/t.png"})
+    image_uri("uri/image-directory.gltf", "image-uri-directory", "image uri 'sub': a directory", {"uri": "sub"})
+    image_uri("uri/image-fifo.gltf", "image-uri-fifo", "image uri naming a FIFO", {"uri": "fifo.png"},
+              setup="mkfifo:uri/fifo.png")
+    image_uri("uri/image-in-cwd-only.gltf", "image-uri-only-in-cwd",
+              "image uri cwd-only.png: missing beside the scene, present in the working directory",
+              {"uri": "cwd-only.png"}, setup="cwd:shared/texture.png=cwd-only.png")
+    image_uri("uri/image-data-bad-base64.gltf", "image-data-uri-bad-base64", "image data: URI with '!' in base64",
+              {"uri": "data:image/png;base64,!!!!" + base64.b64encode(VALID_PNG).decode()[4:]})
+    image_uri("uri/image-data-gif.gltf", "image-data-uri-gif", "image data: URI of type image/gif (a PNG inside)",
+              {"uri": "data:image/gif;base64," + base64.b64encode(VALID_PNG).decode()})
+    image_uri("uri/image-data-corrupt-png.gltf", "image-data-uri-corrupt-png", "image data: URI of a corrupt PNG",
+              {"uri": "data:image/png;base64," + base64.b64encode(corrupt_pngs()["idat-crc"]).decode()})
+    image_uri("uri/image-data-truncated.gltf", "image-data-uri-truncated", "image data: URI cut inside its base64",
+              {"uri": "data:image/png;base64," + base64.b64encode(VALID_PNG).decode()[:30]})
+
+
+def corrupt_pngs():
+    rows = rgb_rows(2, 2)
+    good_idat = zlib.compress(rows, 9)
+    bad_stream = bytearray(good_idat)
+    bad_stream[2] ^= 0xFF  # the first deflate block header: an invalid block type or lengths
+    return {
+        "ihdr-crc": png(2, 2, rows, ihdr_crc=0xDEADBEEF),
+        "idat-crc": png(2, 2, rows, idat_crc=0xDEADBEEF),
+        "bad-deflate": png(2, 2, rows, idat=bytes(bad_stream)),
+        "truncated": VALID_PNG[: len(VALID_PNG) - 20],
+        "header-only": PNG_SIGNATURE,
+        "zero-size": png(0, 0, b"", idat=zlib.compress(b"")),
+        "bit-depth-3": png(2, 2, rows, bit_depth=3),
+        "colour-type-5": png(2, 2, rows, colour_type=5),
+        "short-rows": png(64, 64, rgb_rows(64, 2)),
+        "huge-header": png(100000, 100000, rgb_rows(1, 1)),
+        "width-2p31": png(0x7FFFFFFF, 1, rgb_rows(1, 1)),
+        "bad-signature": b"\x89PNX\r\n\x1a\n" + VALID_PNG[8:],
+    }
+
+
+def image_cases():
+    for key, data in corrupt_pngs().items():
+        write("images/%s.png" % key, data)
+        gltf("images/png-%s.gltf" % key, with_texture({"uri": "%s.png" % key}))
+    described = {
+        "ihdr-crc": "a PNG whose IHDR CRC is wrong",
+        "idat-crc": "a PNG whose IDAT CRC is wrong (libpng must not add its own stderr line)",
+        "bad-deflate": "a PNG whose IDAT holds a broken deflate stream",
+        "truncated": "a valid PNG missing its last 20 bytes",
+        "header-only": "the 8-byte PNG signature alone",
+        "zero-size": "a 0x0 PNG",
+        "bit-depth-3": "a PNG of bit depth 3",
+        "colour-type-5": "a PNG of colour type 5",
+        "short-rows": "a 64x64 PNG holding 2 rows of pixel data",
+        "huge-header": "a PNG claiming 100000x100000 (a few bytes of data)",
+        "width-2p31": "a PNG claiming width 2^31-1",
+        "bad-signature": "a PNG whose signature is damaged",
+    }
+    for key in corrupt_pngs():
+        case("png-" + key, "images/png-%s.gltf" % key, "error", described[key])
+    # 16384 x 16384 1-bit grey: 32 MB of scanlines that deflate to about 33 KB and expand
+    # to 2^28 texels, 1 GiB as RGBA8.
+    width = height = 16384
+    rows = (b"\0" + b"\0" * (width // 8)) * height
+    write("images/bomb-16384.png", png(width, height, rows, bit_depth=1, colour_type=0))
+    gltf("images/png-bomb.gltf", with_texture({"uri": "bomb-16384.png"}))
+    case("png-decompression-bomb", "images/png-bomb.gltf", "error",
+         "a 33 KB 1-bit PNG of 16384x16384 that decodes to a 1 GiB RGBA8 texture")
+    jpeg = b"\xff\xd8\xff\xe0" + struct.pack(">H", 16) + b"JFIF\0\x01\x01\0\0\x01\0\x01\0\0"
+    jpeg += b"\xff\xc0" + struct.pack(">HBHHB", 17, 8, 65500, 65500, 3) + b"\x01\x11\0\x02\x11\0\x03\x11\0"
+    write("images/header-only.jpg", jpeg)
+    gltf("images/jpeg-header-only.gltf", with_texture({"uri": "header-only.jpg"}))
+    case("jpeg-header-only", "images/jpeg-header-only.gltf", "error",
+         "a JPEG of SOI, JFIF and a 65500x65500 SOF0, then nothing")
+    write("images/text.png", "this is not a PNG\n")
+    gltf("images/png-text.gltf", with_texture({"uri": "text.png"}))
+    case("png-text-file", "images/png-text.gltf", "error", "a text file named .png")
+
+
+def environment_cases():
+    def env(rel, name, what, env_file=None, data=None, extra=None, names=None):
+        if data is not None:
+            write("env/" + env_file, data)
+        e = {"uri": env_file}
+        e.update(extra or {})
+        gltf(rel, with_environment(e))
+        if names is None:
+            names = os.path.basename(rel) + "|" + env_file  # the scene, or the map it names
+        case(name, rel, "error", what, names=names)
+
+    env("env-hdr-huge.gltf", "env-hdr-100000x100000", "an HDR environment claiming 100000x100000 (16 bytes of data)",
+        "env/huge.hdr", None)
+    write("env/huge.hdr", hdr(100000, 100000, pixels=bytes((128, 128, 128, 129)) * 4))
+    env("env-hdr-truncated.gltf", "env-hdr-truncated", "an 8x4 HDR holding 5 texels", "env/truncated.hdr", None)
+    write("env/truncated.hdr", hdr(8, 4)[:-108])
+    env("env-hdr-zero.gltf", "env-hdr-0x0", "an HDR of 0x0 texels", "env/zero.hdr", None)
+    write("env/zero.hdr", hdr(0, 0, pixels=b""))
+    env("env-hdr-garbage.gltf", "env-hdr-garbage", "#?RADIANCE and then garbage", "env/garbage.hdr", None)
+    write("env/garbage.hdr", b"#?RADIANCE\n" + bytes((i * 91 + 7) % 256 for i in range(300)))
+    env("env-hdr-negative.gltf", "env-hdr-negative-size", "an HDR header '-Y -5 +X 8'", "env/negative.hdr", None)
+    write("env/negative.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y -5 +X 8\n" + b"\x80\x80\x80\x81" * 8)
+    write("env/huge.exr", exr(100000, 100000, offsets=4))
+    env("env-exr-huge.gltf", "env-exr-100000x100000", "an EXR whose dataWindow is 100000x100000 (4 offsets)",
+        "env/huge.exr")
+    write("env/truncated.exr", exr(8, 4)[:-150])
+    env("env-exr-truncated.gltf", "env-exr-truncated", "a valid 8x4 EXR missing its last 150 bytes",
+        "env/truncated.exr")
+    write("env/window-overflow.exr", exr(1, 1, x_min=-0x80000000, x_max=0x7FFFFFFF, y_min=0, y_max=0, offsets=1))
+    env("env-exr-window-overflow.gltf", "env-exr-window-overflow",
+        "an EXR dataWindow from x -2^31 to 2^31-1: its width overflows an int", "env/window-overflow.exr")
+    write("env/window-inverted.exr", exr(8, 4, x_min=7, x_max=0, offsets=4))
+    env("env-exr-window-inverted.gltf", "env-exr-window-inverted", "an EXR dataWindow with xMax < xMin",
+        "env/window-inverted.exr")
+    write("env/header-only.exr", exr(8, 4)[:8])
+    env("env-exr-header-only.gltf", "env-exr-magic-only", "the 8 bytes of an EXR's magic and version",
+        "env/header-only.exr")
+    env("uri/env-parent.gltf", "env-uri-parent-directory",
+        "environment uri ../env/valid.hdr: a valid map outside the scene's directory", "../env/valid.hdr")
+    env("env-uri-absolute.gltf", "env-uri-absolute", "environment uri /etc/passwd", "/etc/passwd")
+    env("env-uri-dev-zero.gltf", "env-uri-absolute-dev-zero", "environment uri /dev/zero", "/dev/zero")
+    env("env-uri-directory.gltf", "env-uri-directory", "environment uri 'env': a directory", "env",
+        names="env-uri-directory.gltf|files/env:")
+    gltf("env-uri-fifo.gltf", with_environment({"uri": "env/fifo.hdr"}))
+    case("env-uri-fifo", "env-uri-fifo.gltf", "error", "environment uri naming a FIFO", setup="mkfifo:env/fifo.hdr",
+         names="env-uri-fifo.gltf|env/fifo.hdr")
+    gltf("env-uri-in-cwd-only.gltf", with_environment({"uri": "cwd-only.hdr"}))
+    case("env-uri-only-in-cwd", "env-uri-in-cwd-only.gltf", "error",
+         "environment uri cwd-only.hdr: missing beside the scene, present in the working directory",
+         setup="cwd:env/valid.hdr=cwd-only.hdr", names="env-uri-in-cwd-only.gltf|cwd-only.hdr")
+    env("env-uri-file-scheme.gltf", "env-uri-file-scheme", "environment uri file:///etc/passwd",
+        "file:///etc/passwd")
+    env("env-strength-negative.gltf", "env-strength-negative", "environment strength -1", "env/valid.hdr",
+        extra={"strength": -1.0}, names="-")
+    env("env-strength-1e39.gltf", "env-strength-1e39", "environment strength 1e39 (inf as a float)", "env/valid.hdr",
+        extra={"strength": 1e39}, names="-")
+    env("env-strength-string.gltf", "env-strength-string", "environment strength \"bright\"", "env/valid.hdr",
+        extra={"strength": "bright"}, names="-")
+    gltf("env-uri-number.gltf", with_environment({"uri": 7}))
+    case("env-uri-not-string", "env-uri-number.gltf", "error", "environment uri 7 (a number)")
+
+
+def cli_cases():
+    """Bad values of the render command's flags, on the valid scene."""
+    global CLI_CASES
+    before = len(CASES)
+
+    def cli(name, args, what, expect="error", names="-", setup="-", file="valid.gltf"):
+        if names == "-" and expect == "error":
+            names = args.split()[0]
+        case("cli-" + name, file, expect, what, args=args, setup=setup, names=names)
+
+    cli("width-0", "--width 0", "--width 0")
+    cli("width-negative", "--width -16", "--width -16")
+    cli("width-2p32", "--width 4294967312", "--width 2^32+16 (16 after a 32-bit wrap)")
+    cli("width-overflow", "--width 99999999999999999999999", "--width beyond any integer")
+    cli("width-past-limit", "--width 65536", "--width 65536 (past the 32768 limit)")
+    cli("height-0", "--height 0", "--height 0")
+    cli("height-negative", "--height -1", "--height -1")
+    cli("height-float", "--height 16.5", "--height 16.5")
+    cli("spp-0", "--spp 0", "--spp 0")
+    cli("spp-negative", "--spp -1", "--spp -1")
+    cli("spp-2p32", "--spp 4294967297", "--spp 2^32+1 (1 after a 32-bit wrap)")
+    cli("spp-overflow", "--spp 1e30", "--spp 1e30")
+    cli("max-bounces-negative", "--max-bounces -1", "--max-bounces -1")
+    cli("env-strength-negative", "--env-strength -1", "--env-strength -1")
+    cli("env-strength-nan", "--env-strength nan", "--env-strength nan")
+    cli("env-strength-inf", "--env-strength inf", "--env-strength inf")
+    cli("env-rotation-nan", "--env-rotation nan", "--env-rotation nan")
+    cli("env-rotation-inf", "--env-rotation inf", "--env-rotation inf")
+    cli("background-inf", "--background inf,0,0", "--background inf,0,0")
+    cli("background-nan", "--background 0,nan,0", "--background 0,nan,0")
+    cli("background-negative", "--background 0,0,-1", "--background 0,0,-1")
+    cli("background-1e39", "--background 1e39,0,0", "--background 1e39,0,0 (inf as a float)")
+    cli("fov-zero", "--fov 0", "--fov 0")
+    cli("fov-nan", "--fov nan", "--fov nan")
+    cli("fov-180", "--fov 180", "--fov 180")
+    cli("aperture-negative", "--aperture -1 --focus-distance 2", "--aperture -1")
+    cli("aperture-nan", "--aperture nan --focus-distance 2", "--aperture nan")
+    cli("focus-distance-inf", "--aperture 0.1 --focus-distance inf", "--focus-distance inf",
+        names="--focus-distance")
+    cli("look-from-nan", "--look-from nan,0,3 --look-at 0,0,0", "--look-from nan,0,3")
+    cli("camera-negative", "--camera -2", "--camera -2")
+    cli("camera-overflow", "--camera 99999999999", "--camera 99999999999")
+    cli("time-nan", "--time nan", "--time nan")
+    cli("device-99", "--device 99", "--device 99 (no such device)")
+    cli("env-missing", "--env {CWD}/no-such.hdr", "--env naming a missing file", names="no-such.hdr")
+    cli("env-directory", "--env {FILES}/env", "--env naming a directory", names="env")
+    cli("env-dev-zero", "--env /dev/zero", "--env /dev/zero (an endless character device)", names="/dev/zero")
+    cli("env-fifo", "--env {FILES}/env/cli-fifo.hdr", "--env naming a FIFO", names="cli-fifo.hdr",
+        setup="mkfifo:env/cli-fifo.hdr")
+    cli("env-truncated", "--env {FILES}/env/truncated.exr", "--env naming a truncated EXR", names="truncated.exr")
+    cli("env-huge", "--env {FILES}/env/huge.hdr", "--env naming an HDR claiming 100000x100000", names="huge.hdr")
+    cli("output-equals-env", "--env {FILES}/env/valid.exr -o {FILES}/env/valid.exr",
+        "the output is the --env input (it must not be replaced)", names="valid.exr")
+    write("cli/scene-named.exr", dump(base()))
+    cli("output-equals-scene", "-o {SCENE}", "a glTF named scene-named.exr rendered onto itself",
+        names="scene-named.exr", file="cli/scene-named.exr")
+    cli("output-is-scene-gltf", "-o {SCENE}", "-o naming the .gltf input", names="valid.gltf")
+    cli("output-missing-dir", "-o {CWD}/missing/out.png", "an output in a missing directory",
+        names="missing/out.png")
+    cli("output-read-only-dir", "-o {RO}/out.png", "an output in a read-only directory", names="out.png")
+    cli("output-is-directory", "-o {CWD}/dir.png", "an output naming an existing directory", names="dir.png",
+        setup="mkdir:dir.png")
+    cli("output-no-extension", "-o {CWD}/out", "an output without an extension", names="out")
+    cli("ray-log-missing-dir", "--ray-log {CWD}/missing/rays.ply", "--ray-log in a missing directory",
+        names="rays.ply")
+    cli("existing-output-kept", "--spp 0", "an existing output stays byte-identical after an error",
+        setup="existing-output", names="--spp")
+    gltf("cli/missing-buffer.gltf", base("no-such.bin"))
+    cli("existing-output-kept-bad-scene", "-", "an existing output stays byte-identical after a scene error",
+        setup="existing-output", names="no-such.bin", file="cli/missing-buffer.gltf")
+    cli("scene-missing", "-", "a scene path that does not exist", names="no-such-scene.gltf",
+        file="cli/no-such-scene.gltf")
+    cli("scene-directory", "-", "a scene path naming a directory (named .gltf)", names="dir.gltf",
+        file="cli/dir.gltf")
+    write("cli/dir.gltf/.keep", b"")
+    cli("scene-fifo", "-", "a scene path naming a FIFO", names="fifo.gltf", file="cli/fifo.gltf",
+        setup="mkfifo:cli/fifo.gltf")
+    cli("scene-dev-zero", "-", "the scene /dev/zero", names="/dev/zero", file="/dev/zero")
+    # Valid flag values around the bad ones still render.
+    cli("valid-env-rotation", "--env {FILES}/env/valid.hdr --env-rotation -720 --env-strength 0",
+        "--env-rotation -720 and --env-strength 0 are valid", expect="renders")
+    cli("valid-two-outputs", "-o {CWD}/a.png -o {CWD}/b.exr", "two outputs, both written", expect="renders")
+    CLI_CASES = len(CASES) - before
+
+
+def main():
+    if os.path.isdir(FILES):
+        shutil.rmtree(FILES)
+    os.makedirs(FILES)
+    valid_scenes()
+    json_cases()
+    glb_cases()
+    accessor_cases()
+    node_cases()
+    camera_cases()
+    light_cases()
+    material_cases()
+    uri_cases()
+    image_cases()
+    environment_cases()
+    cli_cases()
+    largest = max((os.path.getsize(os.path.join(d, f)), os.path.join(d, f))
+                  for d, _, fs in os.walk(FILES) for f in fs)
+    assert largest[0] < 1 << 20, largest
+    with open(os.path.join(HERE, "expected.tsv"), "w") as f:
+        f.write("# name\tfile\targs\texpect\tsetup\tnames\twhat (written by make_corpus.py)\n")
+        for c in CASES:
+            f.write("\t".join(c) + "\n")
+    print("make_corpus: %d cases (%d file cases, %d CLI cases); largest file %d bytes (%s)" %
+          (len(CASES), len(CASES) - CLI_CASES, CLI_CASES, largest[0], os.path.relpath(largest[1], HERE)))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
