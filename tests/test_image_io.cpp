@@ -1,5 +1,6 @@
 // Image files: EXR keeps radiance, variance and sample count exactly; PNG is sRGB-encoded
-// and clamped; a failed write leaves an existing file untouched.
+// and clamped; a failed write leaves an existing file untouched; a file that changed is
+// read anew.
 #include <filesystem>
 #include <fstream>
 
@@ -46,6 +47,21 @@ TEST(ImageIo, ExrRoundTripKeepsRadianceVarianceAndSpp)
     EXPECT_EQ(b.spp, 17u);
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.variance, b.variance);
+}
+
+// OpenImageIO's shared image cache keeps a header per file name; a reader going through it
+// decoded the second image into a buffer sized by the first one's header.
+TEST(ImageIo, ReadsAFileAgainAfterItChanged)
+{
+    fs::path p = temp_dir() / "changes.exr";
+    write_image(p.string(), gradient(3, 2));
+    EXPECT_EQ(read_image(p.string()).width, 3u);
+    Image big = gradient(40, 30);
+    write_image(p.string(), big);
+    Image b = read_image(p.string());
+    EXPECT_EQ(b.width, 40u);
+    EXPECT_EQ(b.height, 30u);
+    EXPECT_EQ(b.rgb, big.rgb);
 }
 
 TEST(ImageIo, PngIsSrgbEncodedAndClamped)

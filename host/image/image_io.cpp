@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <filesystem>
+#include <memory>
 #include <unistd.h>
 
 #include <OpenImageIO/imagebuf.h>
@@ -44,9 +45,12 @@ bool written_completely(const std::string& file, int width, int height)
     return ok;
 }
 
-// The header of an image to be read whole: a regular file (a FIFO would block), of at most
-// kMaxImagePixels; checked before any pixel is decoded.
-void check_image_header(const std::string& path)
+// Opens an image to be read whole: a regular file (a FIFO would block) of at most
+// kMaxImagePixels, checked from its header before any pixel is decoded. Read through
+// ImageInput, not ImageBuf: ImageBuf goes through OIIO's shared image cache, which keeps
+// the header of a file by name, so a file that changed since was decoded into a buffer
+// sized by the stale header (a heap overflow found by tools/fuzz.sh images).
+std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path)
 {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
@@ -59,6 +63,7 @@ void check_image_header(const std::string& path)
         static_cast<std::size_t>(spec.width) > kMaxImagePixels / static_cast<std::size_t>(spec.height))
         throw Error(path + ": unsupported image size " + std::to_string(spec.width) + "x" +
                     std::to_string(spec.height) + " (at most " + std::to_string(kMaxImagePixels) + " pixels)");
+    return in;
 }
 
 } // namespace
@@ -135,11 +140,8 @@ void write_image(const std::string& path, const Image& img)
 Image read_image(const std::string& path)
 {
     MutedStderr muted; // image libraries' own lines; their errors reach us by geterror()
-    check_image_header(path);
-    ImageBuf in(path);
-    if (!in.read(0, 0, true, TypeDesc::FLOAT))
-        throw Error(path + ": cannot read image: " + one_line(in.geterror()));
-    const ImageSpec& spec = in.spec();
+    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
+    const ImageSpec spec = in->spec();
     auto channel = [&](const char* name) { return spec.channelindex(name); };
     int r = channel("R"), g = channel("G"), b = channel("B");
     if (r < 0 || g < 0 || b < 0)
@@ -157,7 +159,8 @@ Image read_image(const std::string& path)
     }
     std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
     std::vector<float> px(n * static_cast<std::size_t>(spec.nchannels));
-    in.get_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, px.data());
+    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, px.data()))
+        throw Error(path + ": cannot read image: " + one_line(in->geterror()));
     img.rgb.resize(n * 3);
     img.variance.assign(n * 3, 0.0f);
     if (counts >= 0)
