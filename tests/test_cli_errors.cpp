@@ -261,6 +261,18 @@ TEST_F(Cli, OutputEqualToAnInputIsRefused)
     EXPECT_EQ(read_file(work_ / "env.exr"), env);
 }
 
+// An image that does not fit the device is refused before anything is allocated, naming
+// what it needs and the device's limit (it was OpenCL error -61 from clCreateBuffer, or a
+// crash inside the driver).
+TEST_F(Cli, ImageLargerThanTheDeviceIsOneLineError)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --spp 1 --width 32768 --height 32768");
+    expect_clean_failure(r, "device 0");
+    EXPECT_NE(r.err.find("the film of 1073741824 pixels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
 TEST_F(Cli, UnknownSamplerIsOneLineError)
 {
     RunResult r = run("render " + quoted(kCornell) + " -o out.exr --sampler bogus" + kTiny);

@@ -54,6 +54,7 @@ std::vector<Enumerated> enumerate()
             info.driver = d.getInfo<CL_DRIVER_VERSION>();
             info.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
             info.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+            info.max_allocation = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
             info.fp64 = d.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
             out.push_back({info, d});
         }

@@ -17,6 +17,7 @@ struct DeviceInfo {
     std::string platform, name, type, version, driver;
     unsigned compute_units = 0;
     unsigned long long global_memory = 0;
+    unsigned long long max_allocation = 0; // the largest single buffer (CL_DEVICE_MAX_MEM_ALLOC_SIZE)
     bool fp64 = false;
 };
 

@@ -1,6 +1,9 @@
 #include "render/device_arrays.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "common/error.h"
 
 namespace pathcl {
 namespace {
@@ -23,10 +26,49 @@ cl::Buffer allocate(const ClDevice& dev, std::size_t count)
     return cl::Buffer(dev.context, CL_MEM_READ_WRITE, std::max<std::size_t>(1, count) * sizeof(T));
 }
 
+std::string gib(double bytes)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
 } // namespace
+
+void check_device_memory(const ClDevice& dev, const SceneArrays& scene, std::size_t pixels)
+{
+    // In double: pixels x bytes per pixel may not fit 64 bits for an absurd size.
+    double scene_bytes = 0.0, film_bytes = 0.0, largest = 0.0;
+    const char* largest_name = "";
+    auto add = [&](double& total, double bytes, const char* name) {
+        total += bytes;
+        if (bytes > largest) {
+            largest = bytes;
+            largest_name = name;
+        }
+    };
+#define PATHCL_SCENE_BYTES(type, name)                                                                                 \
+    add(scene_bytes, static_cast<double>(std::max<std::size_t>(1, scene.name.size())) * sizeof(type), #name);
+    PATHCL_SCENE_ARRAYS(PATHCL_SCENE_BYTES)
+#undef PATHCL_SCENE_BYTES
+#define PATHCL_FILM_BYTES(type, name) add(film_bytes, static_cast<double>(pixels) * sizeof(type), #name);
+    PATHCL_FILM_ARRAYS(PATHCL_FILM_BYTES)
+#undef PATHCL_FILM_BYTES
+    const DeviceInfo& d = dev.info;
+    std::string device = "device " + std::to_string(d.index) + " (" + d.name + ")";
+    std::string needs = "the render needs " + gib(scene_bytes + film_bytes) + " (the film of " +
+                        std::to_string(pixels) + " pixels " + gib(film_bytes) + ", the scene " + gib(scene_bytes) + ")";
+    if (scene_bytes + film_bytes > static_cast<double>(d.global_memory))
+        throw Error(device + ": " + needs + ", more than its " + gib(static_cast<double>(d.global_memory)) +
+                    " of memory");
+    if (largest > static_cast<double>(d.max_allocation))
+        throw Error(device + ": " + needs + "; its largest array, " + largest_name + ", needs " + gib(largest) +
+                    ", more than the " + gib(static_cast<double>(d.max_allocation)) + " the device allocates at once");
+}
 
 DeviceArrays upload_arrays(const ClDevice& dev, const SceneArrays& scene, std::size_t pixels)
 {
+    check_device_memory(dev, scene, pixels);
     DeviceArrays a;
 #define PATHCL_UPLOAD(type, name) a.name = upload(dev, scene.name);
     PATHCL_SCENE_ARRAYS(PATHCL_UPLOAD)

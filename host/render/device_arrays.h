@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <CL/opencl.hpp>
@@ -31,7 +32,14 @@ struct DeviceArrays {
 #undef PATHCL_DEVICE_BUFFER
 };
 
-// Uploads the scene arrays and allocates film arrays for `pixels` pixels (blocking).
+// Throws pathcl::Error naming the bytes needed and the device's limits when the arrays
+// (the scene's and the film's for `pixels` pixels) exceed the device's memory or one of
+// them its largest buffer: a clean refusal before allocating, instead of an OpenCL error
+// or a crash inside the driver.
+void check_device_memory(const ClDevice& dev, const SceneArrays& scene, std::size_t pixels);
+
+// Uploads the scene arrays and allocates film arrays for `pixels` pixels (blocking), after
+// check_device_memory.
 DeviceArrays upload_arrays(const ClDevice& dev, const SceneArrays& scene, std::size_t pixels);
 
 // Sets the arguments of a kernel that takes the generated parameter list

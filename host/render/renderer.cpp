@@ -126,6 +126,7 @@ struct Renderer::Impl {
     {
         auto dr = std::make_unique<DeviceRender>();
         dr->dev = open_device(index);
+        check_device_memory(dr->dev, compiled.arrays, pixels()); // before the program is built
         ProgramSource source;
         source.patches = options.kernel_patches;
         ProgramBuild pb = build_program(dr->dev, program_build_options(compiled.features, options), source);
