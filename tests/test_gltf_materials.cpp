@@ -2,9 +2,11 @@
 // emission times KHR_materials_emissive_strength (float or integer), doubleSided, and the
 // glTF default material for a primitive without one. Each test checks one property; the
 // tolerance it allows is stated next to it.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -126,6 +128,32 @@ TEST(GltfMaterials, PrimitiveWithoutMaterialGetsTheGltfDefaultMaterial)
         ++checked;
     }
     EXPECT_EQ(checked, 2);
+}
+
+// What a file uses and pathcl does not render is said, one line each: an extension it does
+// not read (listed twice, said once), KHR_materials_volume attenuation, alphaMode MASK or
+// BLEND. A file without them loads silently.
+TEST(GltfWarnings, EachIgnoredFeatureIsOneWarningLine)
+{
+    GltfBuilder b = one_triangle(kTilted);
+    b.model.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_specular", "KHR_materials_clearcoat"};
+    b.model.materials[0].alphaMode = "MASK";
+    tinygltf::Value::Object volume;
+    volume["attenuationDistance"] = tinygltf::Value(2.0);
+    b.model.materials[0].extensions["KHR_materials_volume"] = tinygltf::Value(volume);
+    ::testing::internal::CaptureStderr();
+    import(b);
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 3) << err;
+    EXPECT_NE(err.find("pathcl: warning: test.gltf: ignores the extension KHR_materials_clearcoat"), std::string::npos)
+        << err;
+    EXPECT_EQ(err.find("KHR_materials_specular"), std::string::npos) << err;
+    EXPECT_NE(err.find("alphaMode MASK or BLEND as opaque"), std::string::npos) << err;
+    EXPECT_NE(err.find("KHR_materials_volume attenuation"), std::string::npos) << err;
+
+    ::testing::internal::CaptureStderr();
+    import(one_triangle(kTilted));
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 } // namespace

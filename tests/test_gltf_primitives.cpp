@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.h"
 #include "scene/scene.h"
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
@@ -311,6 +312,56 @@ TEST(GltfDegenerate, ZeroAreaTrianglesAreCounted)
 {
     // Exact count.
     EXPECT_EQ(import(with_degenerates()).dropped_degenerate, 2u);
+}
+
+// ---------------------------------------------------------------------------------------
+// KHR_mesh_quantization
+
+// A triangle with float positions and normals, or the same values stored as integers the
+// way the extension allows: positions unnormalized i16 (8-byte stride: the 4-byte vertex
+// alignment), normals normalized i8 (4-byte stride).
+GltfBuilder quantized_triangle(bool integers, bool declare_extension)
+{
+    GltfBuilder b;
+    int pos, nrm;
+    if (!integers) {
+        pos = b.add_positions({{0, 0, 0}, {3, 0, 0}, {0, 2, 0}});
+        nrm = b.add_normals({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    } else {
+        const std::int16_t p[12] = {0, 0, 0, 0, 3, 0, 0, 0, 0, 2, 0, 0};
+        int view = b.add_view(p, sizeof p);
+        b.model.bufferViews[static_cast<std::size_t>(view)].byteStride = 8;
+        pos = b.add_accessor(view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, 3);
+        const std::int8_t n[12] = {0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0};
+        view = b.add_view(n, sizeof n);
+        b.model.bufferViews[static_cast<std::size_t>(view)].byteStride = 4;
+        nrm = b.add_accessor(view, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, 3);
+        b.model.accessors[static_cast<std::size_t>(nrm)].normalized = true;
+    }
+    if (declare_extension) {
+        b.model.extensionsUsed.push_back("KHR_mesh_quantization");
+        b.model.extensionsRequired.push_back("KHR_mesh_quantization");
+    }
+    b.add_root(b.add_node(b.add_mesh(pos, -1, b.add_material(glm::vec3(0.5f)), 4, nrm), {}, {1, 2, 3}));
+    return b;
+}
+
+TEST(GltfQuantization, IntegerAttributesGiveTheSameTrianglesAsFloats)
+{
+    // Exact: the integers and 127/127 decode to exactly the float values.
+    Scene floats = import(quantized_triangle(false, false));
+    Scene integers = import(quantized_triangle(true, true));
+    ASSERT_EQ(floats.triangles.size(), 1u);
+    ASSERT_EQ(integers.triangles.size(), 1u);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(integers.triangles[0].v[k], floats.triangles[0].v[k]) << "vertex " << k;
+        EXPECT_EQ(integers.triangles[0].n[k], floats.triangles[0].n[k]) << "normal " << k;
+    }
+}
+
+TEST(GltfQuantization, IntegerPositionsWithoutTheExtensionAreRefused)
+{
+    EXPECT_THROW(import(quantized_triangle(true, false)), Error);
 }
 
 } // namespace

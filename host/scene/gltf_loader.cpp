@@ -71,10 +71,16 @@ struct Importer {
                                                         "KHR_materials_ior",
                                                         "KHR_materials_volume",
                                                         "KHR_lights_punctual",
-                                                        "KHR_texture_transform"};
+                                                        "KHR_texture_transform",
+                                                        "KHR_mesh_quantization"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
+        // One line per extension the file uses and pathcl does not read: the image may
+        // differ from what its author meant (an alpha cut-out, a clear coat, a variant).
+        for (const std::string& ext : std::set<std::string>(model.extensionsUsed.begin(), model.extensionsUsed.end()))
+            if (!supported.count(ext))
+                warn(source + ": ignores the extension " + ext + " (what it adds is not rendered)");
 
         scene.materials = import_materials(model, textures, source);
         plan_attributes(scene.materials, geometry);

@@ -135,11 +135,24 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
                                             const std::string& source)
 {
     std::vector<SceneMaterial> materials;
+    std::size_t attenuated = 0, alpha = 0;
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
         materials.push_back(import_material(model.materials[i], textures, source, where));
         check_material(materials.back(), source + ": " + where);
+        auto volume = model.materials[i].extensions.find("KHR_materials_volume");
+        if (volume != model.materials[i].extensions.end() && volume->second.IsObject() &&
+            (volume->second.Has("attenuationDistance") || volume->second.Has("attenuationColor")))
+            ++attenuated;
+        if (model.materials[i].alphaMode == "MASK" || model.materials[i].alphaMode == "BLEND")
+            ++alpha;
     }
+    if (alpha > 0)
+        warn(source + ": renders " + std::to_string(alpha) +
+             " material(s) of alphaMode MASK or BLEND as opaque (alpha is not read)");
+    if (attenuated > 0)
+        warn(source + ": ignores the KHR_materials_volume attenuation of " + std::to_string(attenuated) +
+             " material(s): their volumes render clear");
     return materials;
 }
 

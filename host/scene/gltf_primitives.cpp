@@ -223,7 +223,8 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(co
         AccessorReader r(model_, it->second, what + " TEXCOORD_" + std::to_string(set), source_);
         if (r.components() != 2 || r.count() != pos.count())
             r.fail("TEXCOORD_n must be VEC2 with one coordinate per vertex");
-        r.require_float_or_normalized();
+        if (!quantized_) // KHR_mesh_quantization allows unnormalized integers (scaled by a texture transform)
+            r.require_float_or_normalized();
         attr.texcoords[set].resize(r.count());
         for (std::size_t i = 0; i < r.count(); ++i) {
             glm::dvec2 uv(r.get(i, 0), r.get(i, 1));

@@ -57,7 +57,8 @@ private:
     std::string source_;
     std::vector<SceneMaterial>& materials_;
     PendingGeometry& geometry_;
-    // KHR_mesh_quantization is used: positions, normals and tangents may be integers.
+    // KHR_mesh_quantization is used: positions, normals, tangents and texture coordinates
+    // may be integers (texture coordinates unnormalized too).
     bool quantized_ = false;
     int default_material_ = -1;
     std::size_t skipped_points_lines_ = 0;
