@@ -364,5 +364,55 @@ TEST(GltfQuantization, IntegerPositionsWithoutTheExtensionAreRefused)
     EXPECT_THROW(import(quantized_triangle(true, false)), Error);
 }
 
+// ---------------------------------------------------------------------------------------
+// Sparse accessors and accessors without a bufferView
+
+// Positions of the triangle (0,0,0), (3,0,0), (0,2,0) as a sparse accessor: on a dense
+// base whose vertices 1 and 2 are wrong (base_view true), or on no bufferView at all
+// (zeros); the sparse part replaces vertices 1 and 2. `indices` are the sparse indices.
+GltfBuilder sparse_triangle(bool base_view, const std::vector<std::uint16_t>& indices)
+{
+    GltfBuilder b;
+    int pos;
+    if (base_view)
+        pos = b.add_positions({{0, 0, 0}, {9, 9, 9}, {7, 7, 7}});
+    else
+        pos = b.add_accessor(-1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 3);
+    const float values[6] = {3, 0, 0, 0, 2, 0};
+    tinygltf::Accessor& acc = b.model.accessors[static_cast<std::size_t>(pos)];
+    acc.sparse.isSparse = true;
+    acc.sparse.count = static_cast<int>(indices.size());
+    acc.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    acc.sparse.indices.byteOffset = 0;
+    acc.sparse.values.byteOffset = 0;
+    int index_view = b.add_view(indices.data(), indices.size() * 2);
+    int value_view = b.add_view(values, sizeof values);
+    acc.sparse.indices.bufferView = index_view; // add_view leaves the accessors where they are
+    acc.sparse.values.bufferView = value_view;
+    b.add_root(b.add_node(b.add_mesh(pos, -1, b.add_material(glm::vec3(0.5f)))));
+    return b;
+}
+
+TEST(GltfSparse, SparseValuesReplaceTheDenseOnesAndTheZerosOfAnAccessorWithoutBufferView)
+{
+    // Exact: the replaced positions are the float values themselves.
+    Scene dense = import(one_triangle({{0, 0, 0}, {3, 0, 0}, {0, 2, 0}}));
+    for (bool base_view : {true, false}) {
+        Scene sparse = import(sparse_triangle(base_view, {1, 2}));
+        ASSERT_EQ(sparse.triangles.size(), 1u) << "base view " << base_view;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(sparse.triangles[0].v[k], dense.triangles[0].v[k])
+                << "base view " << base_view << " vertex " << k;
+    }
+}
+
+TEST(GltfSparse, IndicesOutOfRangeOrNotIncreasingAreErrors)
+{
+    EXPECT_THROW(import(sparse_triangle(true, {1, 3})), Error); // past the 3 elements
+    EXPECT_THROW(import(sparse_triangle(true, {2, 1})), Error); // decreasing
+    EXPECT_THROW(import(sparse_triangle(true, {1, 1})), Error); // repeated
+    EXPECT_NO_THROW(import(sparse_triangle(true, {1, 2})));
+}
+
 } // namespace
 } // namespace pathcl

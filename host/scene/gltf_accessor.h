@@ -1,14 +1,17 @@
 // Reading glTF accessors: the one place where buffer bytes become numbers. Offsets,
 // strides and counts all come from the file, so every accessor is checked against its
-// bufferView and buffer here, before any of its elements is read.
+// bufferView and buffer here, before any of its elements is read; sparse accessors and
+// accessors without a bufferView (zeros) are read too.
 #pragma once
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace tinygltf {
 class Model;
-}
+struct Accessor;
+} // namespace tinygltf
 
 namespace pathcl {
 
@@ -40,8 +43,14 @@ public:
     [[noreturn]] void fail(const std::string& msg) const;
 
 private:
+    void apply_sparse(const tinygltf::Model& model, const tinygltf::Accessor& acc, std::size_t element);
+
     std::string what_, source_;
+    // The elements: in the buffer (data_), or made here (owned_, data_ null) when the
+    // accessor has no bufferView (zeros) or is sparse (the dense ones with the listed
+    // ones replaced).
     const unsigned char* data_ = nullptr;
+    std::vector<unsigned char> owned_;
     std::size_t count_ = 0, stride_ = 0;
     int components_ = 0, component_size_ = 0, component_type_ = 0;
     bool normalized_ = false;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -156,14 +157,18 @@ private:
             index_value(v, at + "." + name, bound, target);
     }
 
-    // A non-negative JSON integer when present (counts, offsets, enums).
-    void integer(const Json& obj, const char* key, const std::string& at) const
+    // A non-negative JSON integer of at most `max` when present (counts, offsets, enums;
+    // the glTF library reads some of them into an int).
+    void integer(const Json& obj, const char* key, const std::string& at,
+                 std::uint64_t max = std::numeric_limits<std::uint64_t>::max()) const
     {
         if (!obj.contains(key))
             return;
         const Json& v = obj[key];
         if (!v.is_number_unsigned())
             fail(at + "." + key, "is " + v.dump() + ", not a non-negative integer");
+        if (v.get<std::uint64_t>() > max)
+            fail(at + "." + key, "is " + v.dump() + ", more than " + std::to_string(max));
     }
 
     // A finite number when present.
@@ -254,15 +259,17 @@ private:
         const Json* sparse = member_object(a, "sparse", at + ".sparse");
         if (sparse == nullptr)
             return;
-        integer(*sparse, "count", at + ".sparse");
+        // The glTF library reads these as int: 2^32 + 1 would become 1.
+        constexpr std::uint64_t kIntMax = std::numeric_limits<std::int32_t>::max();
+        integer(*sparse, "count", at + ".sparse", kIntMax);
         for (const char* part : {"indices", "values"}) {
             std::string part_at = at + ".sparse." + part;
             const Json* p = member_object(*sparse, part, part_at);
             if (p == nullptr)
                 fail(at + ".sparse", std::string("has no \"") + part + "\"");
             index(*p, "bufferView", part_at + ".bufferView", "bufferViews");
-            integer(*p, "byteOffset", part_at);
-            integer(*p, "componentType", part_at);
+            integer(*p, "byteOffset", part_at, kIntMax);
+            integer(*p, "componentType", part_at, kIntMax);
         }
     }
 
