@@ -3,8 +3,10 @@
 // read anew.
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "common/error.h"
@@ -109,6 +111,49 @@ TEST(ImageIo, RejectsUnknownExtensionAndMissingDirectory)
     EXPECT_THROW(check_output_path("/tmp/x.jpg"), Error);
     EXPECT_THROW(check_output_path("/nonexistent-dir-pathcl/x.exr"), Error);
     EXPECT_NO_THROW(check_output_path((temp_dir() / "ok.png").string()));
+}
+
+// The 8-bit values of a one-row PNG of the given radiances written through `display`.
+std::vector<unsigned char> png_bytes(const std::vector<float>& radiance, const DisplayTransform& display)
+{
+    Image img;
+    img.width = static_cast<std::uint32_t>(radiance.size());
+    img.height = 1;
+    for (float r : radiance)
+        for (int c = 0; c < 3; ++c) {
+            img.rgb.push_back(r);
+            img.variance.push_back(0.0f);
+        }
+    fs::path p = temp_dir() / "display.png";
+    write_image(p.string(), img, display);
+    // Read through ImageInput: ImageBuf's cache would return the previous file's pixels.
+    auto in = OIIO::ImageInput::open(p.string());
+    std::vector<unsigned char> px(radiance.size() * 3);
+    EXPECT_TRUE(in && in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+    return px;
+}
+
+TEST(ImageIo, PngExposureScalesRadianceByPowersOfTwo)
+{
+    // +1 stop shows 0.25 as 0.5 and 0.1 as 0.2, byte for byte; -2 stops shows 2 as 0.5.
+    EXPECT_EQ(png_bytes({0.25f, 0.1f}, {1.0, ToneCurve::Clip}), png_bytes({0.5f, 0.2f}, {}));
+    EXPECT_EQ(png_bytes({2.0f}, {-2.0, ToneCurve::Clip}), png_bytes({0.5f}, {}));
+    EXPECT_NE(png_bytes({0.25f}, {1.0, ToneCurve::Clip}), png_bytes({0.25f}, {}));
+}
+
+TEST(ImageIo, FilmicToneCurveRollsHighlightsOffWhereClipSaturates)
+{
+    // Clip: 1 and 4 are both white. Filmic: below white, distinct, increasing, and the
+    // curve's own values (f(1) = 2.54 / 3.16, f(4) = 40.28 / 41.38).
+    std::vector<unsigned char> clip = png_bytes({1.0f, 4.0f}, {});
+    EXPECT_EQ(clip[0], 255);
+    EXPECT_EQ(clip[3], 255);
+    std::vector<unsigned char> filmic = png_bytes({1.0f, 4.0f}, {0.0, ToneCurve::Filmic});
+    EXPECT_LT(filmic[0], filmic[3]);
+    EXPECT_LT(filmic[3], 255);
+    EXPECT_EQ(png_bytes({2.54f / 3.16f, 40.28f / 41.38f}, {}), filmic);
+    EXPECT_FLOAT_EQ(display_value(1.0f, {0.0, ToneCurve::Filmic}), 2.54f / 3.16f);
+    EXPECT_EQ(display_value(0.0f, {0.0, ToneCurve::Filmic}), 0.0f);
 }
 
 } // namespace

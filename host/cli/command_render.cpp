@@ -113,6 +113,8 @@ struct RenderRequest {
     std::string ray_log;            // --ray-log FILE.ply
     std::string checkpoint, resume; // --checkpoint FILE, --resume FILE
     double checkpoint_every = 60.0;
+    DisplayTransform display; // PNG outputs: --exposure EV, --tone
+    std::string tone = "clip";
 };
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
@@ -146,6 +148,9 @@ void print_summary(const RenderRequest& rq, const RenderResult& r)
 
 int run_render(RenderRequest rq)
 {
+    if (!std::isfinite(rq.display.exposure_ev) || std::fabs(rq.display.exposure_ev) > 64.0)
+        throw Error("--exposure: must be a finite number of stops between -64 and 64");
+    rq.display.tone = tone_curve_from_name(rq.tone);
     for (const std::string& output : rq.outputs)
         check_output_path(output); // fail before spending time on the render
     if (!rq.ray_log.empty())
@@ -215,7 +220,7 @@ int run_render(RenderRequest rq)
     // Every output complete before any replaces what the user has.
     StagedFiles staged;
     for (const std::string& output : rq.outputs)
-        write_image_file(staged.stage(output), output, r.image);
+        write_image_file(staged.stage(output), output, r.image, rq.display);
     if (!rq.ray_log.empty())
         write_ray_log_file(staged.stage(rq.ray_log), rq.ray_log, r.camera_rays);
     staged.commit();
@@ -293,8 +298,9 @@ Command add_render_command(CLI::App& app)
     CLI::App* render = app.add_subcommand("render", "Render a glTF scene to an EXR or PNG image");
     render->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
     render
-        ->add_option("-o,--output", rq->outputs,
-                     "output image, repeatable (.exr: linear float + variance; .png: sRGB, clamped)")
+        ->add_option(
+            "-o,--output", rq->outputs,
+            "output image, repeatable (.exr: linear float + variance; .png: sRGB, after --exposure and --tone)")
         ->required()
         ->allow_extra_args(false);
     add_render_options(render, rq->options, rq->device);
@@ -303,6 +309,12 @@ Command add_render_command(CLI::App& app)
         ->capture_default_str();
     add_environment_flags(render, rq->environment);
     add_camera_flags(render, rq->camera);
+    render->add_option("--exposure", rq->display.exposure_ev,
+                       "PNG outputs: scale radiance by 2^EV before the tone curve (EXR stays linear)");
+    render
+        ->add_option("--tone", rq->tone,
+                     "PNG outputs: tone curve, clip (clamp to [0, 1]) or filmic (ACES fit: rolls highlights off)")
+        ->capture_default_str();
     render->add_option("--ray-log", rq->ray_log,
                        "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
                        "directions as normals");

@@ -76,7 +76,8 @@ void check_output_path(const std::string& path)
     check_output_location(path);
 }
 
-void write_image_file(const std::string& file, const std::string& path, const Image& img)
+void write_image_file(const std::string& file, const std::string& path, const Image& img,
+                      const DisplayTransform& display)
 {
     check_output_path(path);
     const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
@@ -113,8 +114,11 @@ void write_image_file(const std::string& file, const std::string& path, const Im
         }
         out.set_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, px.data());
     } else {
+        std::vector<float> shown(img.rgb.size());
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            shown[i] = display_value(img.rgb[i], display);
         ImageBuf linear(ImageSpec(w, h, 3, TypeDesc::FLOAT));
-        linear.set_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, img.rgb.data());
+        linear.set_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, shown.data());
         ImageBuf srgb = OIIO::ImageBufAlgo::colorconvert(linear, "linear", "sRGB");
         out = OIIO::ImageBufAlgo::clamp(srgb, 0.0f, 1.0f);
         out.set_write_format(TypeDesc::UINT8);
@@ -130,10 +134,10 @@ void write_image_file(const std::string& file, const std::string& path, const Im
     }
 }
 
-void write_image(const std::string& path, const Image& img)
+void write_image(const std::string& path, const Image& img, const DisplayTransform& display)
 {
     StagedFiles staged;
-    write_image_file(staged.stage(path), path, img);
+    write_image_file(staged.stage(path), path, img, display);
     staged.commit();
 }
 

@@ -1,8 +1,8 @@
 // Image files through OpenImageIO. EXR: linear float RGB plus the per-sample variance as
 // channels variance.R/G/B, the sample count as attribute "pathcl:spp" (and, where pixels
 // differ, per pixel as channel "samples"), and Image::metadata as string attributes
-// "pathcl:<key>". PNG: the same
-// radiance sRGB-encoded and clamped to 8 bits. Files are written under a temporary name in
+// "pathcl:<key>". PNG: the same radiance through a DisplayTransform (exposure and tone
+// curve; by default clamped to [0, 1]), sRGB-encoded to 8 bits. Files are written under a temporary name in
 // the target directory and renamed, so a failed write never leaves a partial file and
 // never destroys an existing one.
 #pragma once
@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <string>
 
+#include "image/display.h"
 #include "image/image.h"
 
 namespace pathcl {
@@ -17,11 +18,12 @@ namespace pathcl {
 // Throws pathcl::Error unless `path` ends in .exr or .png and its directory exists.
 void check_output_path(const std::string& path);
 
-void write_image(const std::string& path, const Image& image);
+void write_image(const std::string& path, const Image& image, const DisplayTransform& display = {});
 
 // The image for `path` written to `file` (a temporary name from StagedFiles: the caller
-// renames it), in the format path's extension names.
-void write_image_file(const std::string& file, const std::string& path, const Image& image);
+// renames it), in the format path's extension names; `display` applies to PNG only.
+void write_image_file(const std::string& file, const std::string& path, const Image& image,
+                      const DisplayTransform& display = {});
 
 // Images read whole (an environment map, a render to compare) may have at most 2^27
 // pixels (16384 x 8192, 1.5 GiB as float RGB); the size is checked from the header.

@@ -935,6 +935,9 @@ def cli_cases():
     cli("env-strength-inf", "--env-strength inf", "--env-strength inf")
     cli("env-rotation-nan", "--env-rotation nan", "--env-rotation nan")
     cli("env-rotation-inf", "--env-rotation inf", "--env-rotation inf")
+    cli("exposure-nan", "--exposure nan", "--exposure nan")
+    cli("exposure-huge", "--exposure 1e6", "--exposure 1e6 (2^1e6 overflows)")
+    cli("tone-unknown", "--tone aces", "--tone aces (clip or filmic)")
     cli("background-inf", "--background inf,0,0", "--background inf,0,0")
     cli("background-nan", "--background 0,nan,0", "--background 0,nan,0")
     cli("background-negative", "--background 0,0,-1", "--background 0,0,-1")
@@ -986,6 +989,8 @@ def cli_cases():
         setup="mkfifo:cli/fifo.gltf")
     cli("scene-dev-zero", "-", "the scene /dev/zero", names="/dev/zero", file="/dev/zero")
     # Valid flag values around the bad ones still render.
+    cli("valid-exposure-filmic", "--exposure -3.5 --tone filmic", "--exposure -3.5 --tone filmic are valid",
+        expect="renders")
     cli("valid-env-rotation", "--env {FILES}/env/valid.hdr --env-rotation -720 --env-strength 0",
         "--env-rotation -720 and --env-strength 0 are valid", expect="renders")
     cli("valid-two-outputs", "-o {CWD}/a.png -o {CWD}/b.exr", "two outputs, both written", expect="renders")
