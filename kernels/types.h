@@ -273,7 +273,8 @@ typedef struct {
     pcl_uint stratified_dims; /* decisions at dimensions below this use the sampler; above,
                                  independent numbers (sample/sampler.cl) */
     pcl_uint adaptive;        /* 1: pixels whose film array `active` entry is 0 take no sample */
-    pcl_uint pad0, pad1, pad2;
+    pcl_uint first_row;       /* image row of work-item row 0: the device's band (render/device_bands.h) */
+    pcl_uint pad0, pad1;
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

@@ -15,16 +15,16 @@ namespace {
 struct BenchRequest {
     std::string scene_path;
     RenderOptions options;
-    int device = 0;
+    std::string device = "0"; // --device: an index, a list or all
     int runs = 5;
     bool kernels = false;
 };
 
 int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
 {
-    std::printf("scene %s, %ux%u, %u bounces, sampler %s, device %d; %d runs (min / median / max)\n",
+    std::printf("scene %s, %ux%u, %u bounces, sampler %s, device %s; %d runs (min / median / max)\n",
                 rq.scene_path.c_str(), rq.options.width, rq.options.height, rq.options.max_bounces,
-                sampler_name(rq.options.sampler).c_str(), rq.device, rq.runs);
+                sampler_name(rq.options.sampler).c_str(), rq.device.c_str(), rq.runs);
     for (const KernelFigure& f : bench_kernels(scene, rq.options, rq.runs))
         std::printf("  %-36s %9.4g / %9.4g / %9.4g %s\n", f.stage.c_str(), f.min, f.median, f.max, f.unit.c_str());
     return 0;
@@ -33,7 +33,7 @@ int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
 int run_bench(BenchRequest rq)
 {
     Scene scene = load_gltf(rq.scene_path);
-    rq.options.devices = {rq.device};
+    rq.options.devices = parse_devices(rq.device);
     if (rq.kernels)
         return run_kernel_bench(scene, rq);
     Renderer renderer(scene, rq.options);

@@ -37,7 +37,7 @@ struct ConvergeRequest {
     std::uint32_t reference_spp = 4096;
     std::vector<double> targets;
     RenderOptions options;
-    int device = 0;
+    std::string device = "0"; // --device: an index, a list or all
     bool quiet = false;
     std::string command; // as typed, for summary.md
 };
@@ -103,7 +103,7 @@ int run_converge(ConvergeRequest rq)
         knobs.push_back(parse_knob(v));
     ConvergenceStudy study;
     study.base = rq.options;
-    study.base.devices = {rq.device};
+    study.base.devices = parse_devices(rq.device);
     study.settings = settings_product(study.base, knobs);
     study.ladder = rq.ladder;
     study.seeds = rq.seeds;

@@ -107,7 +107,8 @@ struct RenderRequest {
     RenderOptions options;
     BudgetFlags budget;
     bool progress = false, quiet = false;
-    int device = 0;
+    std::string device = "0";          // --device: an index, a list or all
+    std::vector<double> device_shares; // --device-shares: initial rows per device
     EnvironmentFlags environment;
     CameraFlags camera;
     std::string ray_log;            // --ray-log FILE.ply
@@ -178,7 +179,19 @@ int run_render(RenderRequest rq)
     }
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
-    opt.devices = {rq.device};
+    opt.devices = parse_devices(rq.device);
+    if (!rq.device_shares.empty()) {
+        double total = 0.0;
+        for (double w : rq.device_shares) {
+            if (!(w >= 0.0) || !std::isfinite(w))
+                throw Error("--device-shares: shares must be finite and non-negative");
+            total += w;
+        }
+        if (rq.device_shares.size() != opt.devices.size() || !(total > 0.0))
+            throw Error("--device-shares: needs one share per device (" + std::to_string(opt.devices.size()) +
+                        "), not all zero");
+        opt.device_weights = rq.device_shares;
+    }
     if (!rq.ray_log.empty())
         opt.ray_log_samples = 16; // 16 samples of each of up to 16 x 16 pixels
     std::optional<RenderCheckpoint> resume;
@@ -309,6 +322,11 @@ Command add_render_command(CLI::App& app)
         ->capture_default_str();
     add_environment_flags(render, rq->environment);
     add_camera_flags(render, rq->camera);
+    render
+        ->add_option("--device-shares", rq->device_shares,
+                     "with several devices: each one's initial share of the rows (default: equal; the render "
+                     "re-deals them by measured speed after its second pass)")
+        ->delimiter(',');
     render->add_option("--exposure", rq->display.exposure_ev,
                        "PNG outputs: scale radiance by 2^EV before the tone curve (EXR stays linear)");
     render

@@ -1,7 +1,11 @@
 #include "cli/options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
+
+#include "cl/cl_runtime.h"
+#include "common/error.h"
 
 namespace pathcl::cli {
 namespace {
@@ -42,7 +46,34 @@ void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::stri
         ->default_str(default_name);
 }
 
-void add_render_options(CLI::App* command, RenderOptions& options, int& device, bool with_spp)
+std::vector<int> parse_devices(const std::string& text)
+{
+    std::vector<int> out;
+    if (text == "all") {
+        for (const DeviceInfo& d : list_devices())
+            out.push_back(d.index);
+        if (out.empty())
+            throw Error("--device: no OpenCL device found");
+        return out;
+    }
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const std::string item = text.substr(at, comma - at);
+        const bool digits = !item.empty() && item.size() <= 6 &&
+                            std::all_of(item.begin(), item.end(), [](unsigned char c) { return std::isdigit(c); });
+        if (!digits)
+            throw Error("--device: '" + text + "' is not a device index, a comma-separated list of them or all");
+        const int index = std::stoi(item);
+        if (std::find(out.begin(), out.end(), index) != out.end())
+            throw Error("--device: device " + item + " is listed twice");
+        out.push_back(index);
+        at = comma + 1;
+    }
+    return out;
+}
+
+void add_render_options(CLI::App* command, RenderOptions& options, std::string& devices, bool with_spp)
 {
     if (with_spp)
         command->add_option("--spp", options.spp, "samples per pixel")
@@ -68,7 +99,11 @@ void add_render_options(CLI::App* command, RenderOptions& options, int& device, 
                      "the camera's decisions and those of the first N bounces take the sampler's stratified sets, "
                      "deeper ones independent numbers (any N >= --max-bounces: all)")
         ->capture_default_str();
-    command->add_option("--device", device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
+    command
+        ->add_option("--device", devices,
+                     "OpenCL device index, a comma-separated list of them or all (see 'pathcl devices'): several "
+                     "devices share the rows, and the image is the one-device image")
+        ->capture_default_str();
 }
 
 void add_program_options(CLI::App* command, RenderOptions& options)

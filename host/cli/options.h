@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -12,8 +13,12 @@ namespace pathcl::cli {
 
 // --spp (unless with_spp is false), --width, --height, --max-bounces, --strategy,
 // --sampler, --stratified-bounces and --device, with the values in `options` (and
-// `device`) as their defaults: the group `render`, `bench` and `converge` share.
-void add_render_options(CLI::App* command, RenderOptions& options, int& device, bool with_spp = true);
+// `devices`) as their defaults: the group `render`, `bench` and `converge` share.
+void add_render_options(CLI::App* command, RenderOptions& options, std::string& devices, bool with_spp = true);
+
+// The devices --device names: "N", "N,M,..." (each once) or "all" (every device `pathcl
+// devices` lists); throws pathcl::Error "--device: ..." otherwise.
+std::vector<int> parse_devices(const std::string& text);
 
 // --specialization, --fast-math and --single-scattering: the options that choose the
 // kernel variant (render, bench, info).

@@ -70,7 +70,12 @@ struct RenderOptions {
     // on an evenly spaced grid of at most ray_log_grid x ray_log_grid pixels.
     std::uint32_t ray_log_samples = 0;
     std::uint32_t ray_log_grid = 16;
+    // The devices a render runs on, each taking a band of rows (render/device_bands.h):
+    // the image is the same bit for bit on one or several devices of one kind.
     std::vector<int> devices{0};
+    // Their initial shares of the rows (empty: equal); the render measures each device's
+    // speed on its second pass and deals the rows again in proportion to it.
+    std::vector<double> device_weights;
 
     // Batches and budgets (host/render/batches.h). A render is a run of batches, each a
     // whole point set of batch_spp samples per pixel scrambled by its own seed; the spread

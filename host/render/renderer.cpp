@@ -1,14 +1,17 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <deque>
+#include <thread>
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
 #include "render/compile_scene.h"
 #include "render/device_arrays.h"
+#include "render/device_bands.h"
 #include "render/film.h"
 #include "render/kernel_features.h"
 #include "sample/dimensions.h"
@@ -43,6 +46,15 @@ std::string cl_error_text(const cl::Error& e)
     return std::string(e.what()) + " (OpenCL error " + std::to_string(e.err()) + ")";
 }
 
+// When a device finished a timed pass: set by an event callback, which the driver calls
+// when the device finishes (a driver that runs commands on the host thread, as PoCL's
+// "basic" does, calls it as it runs them), so a device that finishes first is timed then,
+// not when the host gets round to it.
+struct PassFinish {
+    std::atomic<std::int64_t> ns{-1}; // since the pass was enqueued; -1 until the callback ran
+    std::chrono::steady_clock::time_point start;
+};
+
 // Everything one device holds for a render.
 struct DeviceRender {
     ClDevice dev;
@@ -51,6 +63,7 @@ struct DeviceRender {
     DeviceArrays arrays;
     Tile tile{8, 8};
     std::uint32_t clear_items = 64;
+    std::uint32_t y0 = 0, y1 = 0; // its band of rows (render/device_bands.h)
 };
 
 // Adaptive sampling stops no pixel before this many whole batches: the spread of fewer
@@ -161,32 +174,137 @@ struct Renderer::Impl {
         }
     }
 
-    // Enqueues the camera and path passes of sample index s of the current batch on its
-    // device; `done` signals the path pass's end. Logs the camera rays of batch 0's
-    // first sample indices.
-    void enqueue_pass(std::uint32_t batch, std::uint32_t s, cl::Event* done, std::vector<CameraRayRecord>& camera_rays)
+    // Deals the rows to the devices in proportion to `weights` (render/device_bands.h). With
+    // move_films, the film rows (sums and bad-sample counts) of the batch in progress move:
+    // read from the old owner, written to the new one and zeroed at the old one, so every
+    // pixel's compensated sums continue exactly where they were.
+    void set_bands(const std::vector<double>& weights, bool move_films)
     {
-        DeviceRender& dr = *devices[s % devices.size()];
-        frame.sample_index = s; // with the seed, the only parameters that change from pass to pass
-        const cl::NDRange global(round_up(options.width, dr.tile.x), round_up(options.height, dr.tile.y));
-        const cl::NDRange local(dr.tile.x, dr.tile.y);
-        bind_kernel(dr.camera_kernel, dr.arrays, frame);
-        dr.dev.queue.enqueueNDRangeKernel(dr.camera_kernel, cl::NullRange, global, local);
-        if (batch == 0 && s < options.ray_log_samples)
-            log_camera_rays(dr, s, camera_rays);
-        bind_kernel(dr.path_kernel, dr.arrays, frame);
-        dr.dev.queue.enqueueNDRangeKernel(dr.path_kernel, cl::NullRange, global, local, nullptr, done);
-        dr.dev.queue.flush(); // the device starts at once; the host waits on `done` later
+        const std::vector<std::uint32_t> b = band_bounds(options.height, weights);
+        const std::size_t w = options.width;
+        auto owner = [&](std::uint32_t y, bool old_bands) {
+            for (std::size_t d = 0; d < devices.size(); ++d) {
+                const std::uint32_t lo = old_bands ? devices[d]->y0 : b[d], hi = old_bands ? devices[d]->y1 : b[d + 1];
+                if (y >= lo && y < hi)
+                    return d;
+            }
+            return devices.size();
+        };
+        for (std::uint32_t y = 0; move_films && y < options.height;) {
+            const std::size_t from = owner(y, true), to = owner(y, false);
+            std::uint32_t end = y + 1;
+            while (end < options.height && owner(end, true) == from && owner(end, false) == to)
+                ++end;
+            if (from != to && from < devices.size() && to < devices.size()) {
+                const std::size_t first_pixel = y * w, count = (end - y) * w;
+                std::vector<FilmPixel> film(count);
+                std::vector<pcl_uint> bad(count);
+                DeviceArrays& src = devices[from]->arrays;
+                DeviceArrays& dst = devices[to]->arrays;
+                cl::CommandQueue& qs = devices[from]->dev.queue;
+                cl::CommandQueue& qd = devices[to]->dev.queue;
+                qs.enqueueReadBuffer(src.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
+                                     film.data());
+                qs.enqueueReadBuffer(src.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint), count * sizeof(pcl_uint),
+                                     bad.data());
+                qd.enqueueWriteBuffer(dst.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
+                                      film.data());
+                qd.enqueueWriteBuffer(dst.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint),
+                                      count * sizeof(pcl_uint), bad.data());
+                const std::vector<FilmPixel> zero_film(count, FilmPixel{});
+                const std::vector<pcl_uint> zero_bad(count, 0u);
+                qs.enqueueWriteBuffer(src.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
+                                      zero_film.data());
+                qs.enqueueWriteBuffer(src.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint),
+                                      count * sizeof(pcl_uint), zero_bad.data());
+            }
+            y = end;
+        }
+        for (std::size_t d = 0; d < devices.size(); ++d) {
+            devices[d]->y0 = b[d];
+            devices[d]->y1 = b[d + 1];
+        }
     }
 
-    // A blocking read: renders that log rays are not for timing.
-    void log_camera_rays(DeviceRender& dr, std::uint32_t s, std::vector<CameraRayRecord>& camera_rays)
+    // Enqueues the camera and path passes of sample index s of the current batch on every
+    // device, each over its band; `done` receives one event per device that has rows, each
+    // signalling its path pass's end. Logs the camera rays of batch 0's first sample
+    // indices.
+    void enqueue_pass(std::uint32_t batch, std::uint32_t s, std::vector<cl::Event>& done,
+                      std::vector<CameraRayRecord>& camera_rays, std::vector<PassFinish>* finish = nullptr)
     {
-        std::vector<Ray> rays(pixels());
-        dr.dev.queue.enqueueReadBuffer(dr.arrays.rays, CL_TRUE, 0, pixels() * sizeof(Ray), rays.data());
+        const auto start = Clock::now();
+        frame.sample_index = s; // with the seed, the only parameters that change from pass to pass
+        // Work-item row 0 is the band's first row (kernels/film/pixel.cl).
+        auto launch = [&](DeviceRender& dr, cl::Kernel& kernel, cl::Event* event) {
+            frame.first_row = dr.y0;
+            const cl::NDRange global(round_up(options.width, dr.tile.x), round_up(dr.y1 - dr.y0, dr.tile.y));
+            bind_kernel(kernel, dr.arrays, frame);
+            dr.dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NDRange(dr.tile.x, dr.tile.y), nullptr,
+                                              event);
+        };
+        for (auto& dr : devices)
+            if (dr->y1 > dr->y0)
+                launch(*dr, dr->camera_kernel, nullptr);
+        if (batch == 0 && s < options.ray_log_samples)
+            log_camera_rays(s, camera_rays);
+        for (auto& dr : devices) {
+            if (dr->y1 <= dr->y0)
+                continue;
+            done.emplace_back();
+            launch(*dr, dr->path_kernel, &done.back());
+            if (finish) { // timed: the callback is set before the flush, which may run the pass
+                PassFinish& f = (*finish)[done.size() - 1];
+                f.start = start;
+                done.back().setCallback(
+                    CL_COMPLETE,
+                    [](cl_event, cl_int, void* data) {
+                        auto* pf = static_cast<PassFinish*>(data);
+                        pf->ns.store(
+                            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - pf->start).count());
+                    },
+                    &f);
+            }
+            dr->dev.queue.flush(); // the device starts at once; the host waits on `done` later
+        }
+    }
+
+    // Each device's rows per second over the pass just enqueued with `finish` (an entry
+    // per device with rows, in device order, as `done` has its events).
+    std::vector<double> measure_pass(std::vector<cl::Event>& done, std::vector<PassFinish>& finish)
+    {
+        for (cl::Event& e : done)
+            e.wait(); // reports an error status as cl::Error
+        // The callbacks may still be running when the waits return (OpenCL leaves that open).
+        for (std::size_t e = 0; e < done.size(); ++e)
+            while (finish[e].ns.load() < 0)
+                std::this_thread::yield();
+        std::vector<double> rate(devices.size(), 0.0);
+        for (std::size_t d = 0, e = 0; d < devices.size(); ++d)
+            if (devices[d]->y1 > devices[d]->y0)
+                rate[d] =
+                    (devices[d]->y1 - devices[d]->y0) / std::max(1e-9 * static_cast<double>(finish[e++].ns), 1e-9);
+        return rate;
+    }
+
+    // A blocking read: renders that log rays are not for timing. Each pixel's ray is on the
+    // device whose band holds its row.
+    void log_camera_rays(std::uint32_t s, std::vector<CameraRayRecord>& camera_rays)
+    {
+        std::vector<std::vector<Ray>> rays(devices.size());
+        for (std::size_t d = 0; d < devices.size(); ++d) {
+            if (devices[d]->y1 <= devices[d]->y0)
+                continue;
+            rays[d].resize(pixels());
+            devices[d]->dev.queue.enqueueReadBuffer(devices[d]->arrays.rays, CL_TRUE, 0, pixels() * sizeof(Ray),
+                                                    rays[d].data());
+        }
         for (std::uint32_t y : ray_log_axis(options.ray_log_grid, options.height))
             for (std::uint32_t x : ray_log_axis(options.ray_log_grid, options.width)) {
-                const Ray& r = rays[static_cast<std::size_t>(y) * options.width + x];
+                std::size_t d = 0;
+                while (d + 1 < devices.size() && !(y >= devices[d]->y0 && y < devices[d]->y1))
+                    ++d;
+                const Ray& r = rays[d][static_cast<std::size_t>(y) * options.width + x];
                 camera_rays.push_back({render_to_world(render_origin, glm::dvec3(r.origin.x, r.origin.y, r.origin.z)),
                                        glm::vec3(r.direction.x, r.direction.y, r.direction.z), x, y, s});
             }
@@ -270,28 +388,39 @@ struct Renderer::Impl {
         cp.samples = samples;
         cp.film = acc.state();
         cp.active = active;
+        // One film, each row from the device whose band holds it: a checkpoint does not
+        // depend on how the rows were dealt.
+        cp.device_films.emplace_back(pixels());
+        cp.device_bad.emplace_back(pixels());
+        const std::size_t w = options.width;
         for (auto& dr : devices) {
-            cp.device_films.emplace_back(pixels());
-            cp.device_bad.emplace_back(pixels());
-            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel),
-                                            cp.device_films.back().data());
-            dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
-                                            cp.device_bad.back().data());
+            if (dr->y1 <= dr->y0)
+                continue;
+            const std::size_t first = dr->y0 * w, count = (dr->y1 - dr->y0) * w;
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, first * sizeof(FilmPixel),
+                                            count * sizeof(FilmPixel), cp.device_films[0].data() + first);
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
+                                            count * sizeof(pcl_uint), cp.device_bad[0].data() + first);
         }
         return cp;
     }
 
-    // The devices' films as the checkpoint holds them (the batch in progress).
+    // The film of the batch in progress as the checkpoint holds it, each device given the
+    // rows of its band (the others stay cleared).
     void upload_films(const RenderCheckpoint& cp)
     {
-        for (std::size_t d = 0; d < devices.size(); ++d) {
-            if (cp.device_films[d].size() != pixels() || cp.device_bad[d].size() != pixels())
-                throw Error("the checkpoint's films do not match the image size");
-            auto& q = devices[d]->dev.queue;
-            q.enqueueWriteBuffer(devices[d]->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel),
-                                 cp.device_films[d].data());
-            q.enqueueWriteBuffer(devices[d]->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
-                                 cp.device_bad[d].data());
+        if (cp.device_films.size() != 1 || cp.device_films[0].size() != pixels() || cp.device_bad[0].size() != pixels())
+            throw Error("the checkpoint's film does not match the image size");
+        clear_films();
+        const std::size_t w = options.width;
+        for (auto& dr : devices) {
+            if (dr->y1 <= dr->y0)
+                continue;
+            const std::size_t first = dr->y0 * w, count = (dr->y1 - dr->y0) * w;
+            dr->dev.queue.enqueueWriteBuffer(dr->arrays.film, CL_TRUE, first * sizeof(FilmPixel),
+                                             count * sizeof(FilmPixel), cp.device_films[0].data() + first);
+            dr->dev.queue.enqueueWriteBuffer(dr->arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
+                                             count * sizeof(pcl_uint), cp.device_bad[0].data() + first);
         }
     }
 
@@ -318,9 +447,9 @@ struct Renderer::Impl {
         std::uint32_t spp_done = 0; // sample indices per pixel finished
         double samples = 0.0;       // camera samples finished
         double estimate = -1.0;     // after the last whole batch
-        // Passes in flight per device: two under a time budget (it ends within one pass),
-        // else enough to keep every device busy while the host waits.
-        const std::size_t window = (opt.time_budget > 0.0 ? 2 : 8) * devices.size();
+        // Passes in flight (each on every device): two under a time budget (it ends within
+        // one pass), else enough to keep every device busy while the host waits.
+        const std::size_t window = opt.time_budget > 0.0 ? 2 : 8;
         const auto start = Clock::now();
         const bool checkpoints = static_cast<bool>(run.checkpoint);
         std::string key;
@@ -332,8 +461,8 @@ struct Renderer::Impl {
             if (cp.key != key)
                 throw ParameterError("resume", "the checkpoint is of another render (it has \"" + cp.key +
                                                    "\", this render is \"" + key + "\")");
-            if (cp.device_films.size() != devices.size() || (opt.adaptive && cp.active.size() != pixels()))
-                throw ParameterError("resume", "the checkpoint does not match this render's devices or image");
+            if (cp.device_films.size() != 1 || (opt.adaptive && cp.active.size() != pixels()))
+                throw ParameterError("resume", "the checkpoint does not match this render's image");
             acc.restore(cp.film);
             first_batch = cp.batch;
             first_pass = cp.pass;
@@ -387,18 +516,28 @@ struct Renderer::Impl {
                 }
                 upload_active(active);
             }
+            set_bands(opt.device_weights, /*move_films=*/false);
             if (first_pass > 0)
                 upload_films(*run.resume);
             else
                 clear_films();
-            std::deque<cl::Event> in_flight;
-            auto drain = [&]() {
-                while (!in_flight.empty()) {
-                    in_flight.front().wait();
-                    in_flight.pop_front();
-                    after_pass();
-                }
+            // Passes in flight, each one event per device with rows.
+            std::deque<std::vector<cl::Event>> in_flight;
+            auto finish_oldest = [&]() {
+                for (cl::Event& e : in_flight.front())
+                    e.wait();
+                in_flight.pop_front();
+                after_pass();
             };
+            auto drain = [&]() {
+                while (!in_flight.empty())
+                    finish_oldest();
+            };
+            // With several devices the render's second pass is timed alone (the first
+            // also builds PoCL's work-group functions) and the rows dealt again in
+            // proportion to each device's speed.
+            std::uint32_t passes_enqueued = 0;
+            const bool balance = devices.size() > 1;
             for (std::uint32_t b = first_batch; b < plan.batch_count() && !stop; ++b) {
                 frame.seed = batch_seed(seed, b);
                 const std::uint32_t passes = plan.batch_passes(b);
@@ -410,13 +549,22 @@ struct Renderer::Impl {
                         if (stop)
                             break;
                     }
-                    in_flight.emplace_back();
-                    enqueue_pass(b, s, &in_flight.back(), result.camera_rays);
-                    while (in_flight.size() > window) {
-                        in_flight.front().wait();
-                        in_flight.pop_front();
+                    if (balance && passes_enqueued == 1) {
+                        drain();
+                        std::vector<cl::Event> done;
+                        std::vector<PassFinish> finish(devices.size());
+                        enqueue_pass(b, s, done, result.camera_rays, &finish);
+                        const std::vector<double> rates = measure_pass(done, finish);
                         after_pass();
+                        set_bands(rates, /*move_films=*/true);
+                        ++passes_enqueued;
+                        continue;
                     }
+                    in_flight.emplace_back();
+                    enqueue_pass(b, s, in_flight.back(), result.camera_rays);
+                    ++passes_enqueued;
+                    while (in_flight.size() > window)
+                        finish_oldest();
                 }
                 drain();
                 FilmSum sum = read_films();

@@ -30,11 +30,12 @@ protected:
         std::error_code ec;
         std::filesystem::remove_all(dir_, ec);
     }
-    // Runs the binary with `args` in dir_; returns the exit status (-1: no normal exit).
-    int run(const std::string& args) const
+    // Runs the binary with `args` in dir_, after the shell assignments `env` (such as
+    // "POCL_DEVICES='pthread pthread'"); returns the exit status (-1: no normal exit).
+    int run(const std::string& args, const std::string& env = "") const
     {
-        std::string cmd =
-            "cd '" + dir_.string() + "' && '" + std::string(PATHCL_BINARY) + "' " + args + " >stdout.txt 2>stderr.txt";
+        std::string cmd = "cd '" + dir_.string() + "' && " + env + " '" + std::string(PATHCL_BINARY) + "' " + args +
+                          " >stdout.txt 2>stderr.txt";
         int rc = std::system(cmd.c_str());
         return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
     }
