@@ -29,7 +29,7 @@ static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) 
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
               offsetof(Camera, focus_distance) == 72);
 static_assert(sizeof(FrameParams) == 64 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40 &&
-              offsetof(FrameParams, adaptive) == 48);
+              offsetof(FrameParams, adaptive) == 48 && offsetof(FrameParams, first_row) == 52);
 static_assert(sizeof(FilmPixel) == 64);
 
 } // namespace pathcl
