@@ -28,6 +28,10 @@ void write_image_file(const std::string& file, const std::string& path, const Im
 // Images read whole (an environment map, a render to compare) may have at most 2^27
 // pixels (16384 x 8192, 1.5 GiB as float RGB); the size is checked from the header.
 constexpr std::size_t kMaxImagePixels = std::size_t(1) << 27;
+// And at most this much as float, all channels: a row (65536 pixels of 4 channels, or
+// 4096 of 64) and the whole image.
+constexpr std::size_t kMaxImageRowBytes = std::size_t(1) << 20;
+constexpr std::size_t kMaxImageBytes = std::size_t(1) << 31;
 
 // Reads an EXR written by write_image (variance channels optional: zero if absent), or
 // any image OpenImageIO reads, from a regular file of at most kMaxImagePixels pixels.

@@ -876,6 +876,16 @@ def environment_cases():
     write("env/window-overflow.exr", exr(1, 1, x_min=-0x80000000, x_max=0x7FFFFFFF, y_min=0, y_max=0, offsets=1))
     env("env-exr-window-overflow.gltf", "env-exr-window-overflow",
         "an EXR dataWindow from x -2^31 to 2^31-1: its width overflows an int", "env/window-overflow.exr")
+    # Found by tools/fuzz.sh images (the finding's bytes): OpenImageIO sized its read
+    # buffer for 256 rows, so one row 8.6 million pixels wide asked for 26 GB.
+    write("env/wide.exr", base64.b64decode(
+        "di8xAQIAAABjaGFubmVscwBjaGxpc3QANwAAAEIAAgAAAAAAAAABAAAAAQAAAEcAAgAAAAAAAAABAAAAAQAAAFIAAgAAAAAA"
+        "AAABAAAAAQAAAABjb21wLXJlc3Npb24AY29tcHJlc3Npb24AAQAAAABkYXRhV2luZG93AGJveDJpABALAAAAAAAAAAAAAAAA"
+        "hAAAAAAAAAcAAAAAAAAAABQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQU"
+        "FBQUFBQUAAAAPwAAgBUAAIA/AACAPwAAgD8AAIA/AACAPwAAgD8AAIBNTU1NAGAAAAAAAIA+AACBPgAAgD4AAIA+AACAPgAA"
+        "gD4AAIA+AACAPgAAAD8AAAA/AAAAPwAAAD8AAAA/AAAAAAA/AAAAPwAAgD8AAIA/AACAPwAAgD8AAIA/AACAPwAAgD8AAIA/"))
+    env("env-exr-wide.gltf", "env-exr-one-row-8m-wide",
+        "a 1-row EXR 8,650,753 pixels wide (OpenImageIO's read buffer for 256 rows: 26 GB)", "env/wide.exr")
     write("env/window-inverted.exr", exr(8, 4, x_min=7, x_max=0, offsets=4))
     env("env-exr-window-inverted.gltf", "env-exr-window-inverted", "an EXR dataWindow with xMax < xMin",
         "env/window-inverted.exr")
