@@ -69,8 +69,7 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path)
     // tools/fuzz.sh images). So a row is bounded, and so is the whole image at every
     // channel decoded as float.
     const std::size_t row_bytes = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels) * 4;
-    if (row_bytes > kMaxImageRowBytes ||
-        static_cast<std::size_t>(spec.height) > kMaxImageBytes / row_bytes)
+    if (row_bytes > kMaxImageRowBytes || static_cast<std::size_t>(spec.height) > kMaxImageBytes / row_bytes)
         throw Error(path + ": unsupported image size " + std::to_string(spec.width) + "x" +
                     std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) + " channels (at most " +
                     std::to_string(kMaxImageRowBytes) + " bytes a row and " + std::to_string(kMaxImageBytes) +
