@@ -275,15 +275,22 @@ struct Renderer::Impl {
     {
         for (cl::Event& e : done)
             e.wait(); // reports an error status as cl::Error
-        // The callbacks may still be running when the waits return (OpenCL leaves that open).
+        // The callbacks may still be running when the waits return (OpenCL leaves that
+        // open); one that never comes within a second leaves its device untimed (rate 0:
+        // an empty band, which costs speed, not correctness).
+        const auto deadline = Clock::now() + std::chrono::seconds(1);
         for (std::size_t e = 0; e < done.size(); ++e)
-            while (finish[e].ns.load() < 0)
+            while (finish[e].ns.load() < 0 && Clock::now() < deadline)
                 std::this_thread::yield();
         std::vector<double> rate(devices.size(), 0.0);
-        for (std::size_t d = 0, e = 0; d < devices.size(); ++d)
-            if (devices[d]->y1 > devices[d]->y0)
-                rate[d] =
-                    (devices[d]->y1 - devices[d]->y0) / std::max(1e-9 * static_cast<double>(finish[e++].ns), 1e-9);
+        std::size_t e = 0;
+        for (std::size_t d = 0; d < devices.size(); ++d) {
+            if (devices[d]->y1 <= devices[d]->y0)
+                continue;
+            const std::int64_t ns = finish[e++].ns.load();
+            if (ns >= 0)
+                rate[d] = (devices[d]->y1 - devices[d]->y0) / std::max(1e-9 * static_cast<double>(ns), 1e-9);
+        }
         return rate;
     }
 
