@@ -1,7 +1,8 @@
 // One render on several devices (render/device_bands.h) is the one-device render bit for
 // bit: every value of the EXR, variance and per-pixel sample counts included, for a
-// plain render, for one of batches with adaptive sampling, and with the rows first dealt
-// unevenly, so that they are dealt again (and their films moved) in the middle of a batch.
+// plain render, for one of batches with adaptive sampling, with the rows first dealt
+// unevenly, so that they are dealt again (and their films moved) in the middle of a batch,
+// and for a render stopped inside a batch and resumed from its checkpoint.
 // PoCL shows two devices when POCL_DEVICES names a CPU driver twice: its single-threaded
 // "basic" driver here, as two instances of its "pthread" driver stall for tens of seconds
 // at random, even at one thread each (they share one scheduler).
@@ -75,6 +76,23 @@ TEST_F(MultiDevice, BatchesAndAdaptiveSamplingAreTheSameOnTwoDevices)
                        "--width 40 --height 37 --max-spp 64 --batch-spp 8 --adaptive --target-error 0.004 "
                        "--max-bounces 4",
                        {"--device 0", "--device 0,1 --device-shares 3,1"});
+}
+
+TEST_F(MultiDevice, StoppedAndResumedOnTwoDevicesIsTheOneDeviceImage)
+{
+    // A time budget stops the two-device render inside a batch; its checkpoint holds one
+    // film composed from both devices' bands, which the resumed render deals out again.
+    const std::string o = " --width 48 --height 45 --batch-spp 64 --quiet";
+    ASSERT_EQ(run("render '" + kGlass + "' -o full.exr --spp 256 --device 0" + o, kTwoDevices), 0)
+        << text("stderr.txt");
+    ASSERT_EQ(run("render '" + kGlass + "' -o part.exr --max-spp 256 --time 0.3 --checkpoint cp.bin --device 0,1" + o,
+                  kTwoDevices),
+              0)
+        << text("stderr.txt");
+    ASSERT_EQ(run("render '" + kGlass + "' -o resumed.exr --spp 256 --resume cp.bin --device 0,1" + o, kTwoDevices), 0)
+        << text("stderr.txt");
+    expect_bitwise_equal(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()),
+                         "resumed on two devices");
 }
 
 } // namespace
