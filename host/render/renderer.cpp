@@ -174,6 +174,28 @@ struct Renderer::Impl {
         }
     }
 
+    // Rows [y0, y1) of a device's film (sums and bad-sample counts), blocking: `film` and
+    // `bad` point at the rows' first pixel. The one place film rows cross to the host and
+    // back: moved between devices (set_bands), saved and restored (checkpoints).
+    void read_film_rows(DeviceRender& dr, std::uint32_t y0, std::uint32_t y1, FilmPixel* film, pcl_uint* bad)
+    {
+        const std::size_t first = std::size_t(y0) * options.width, count = std::size_t(y1 - y0) * options.width;
+        dr.dev.queue.enqueueReadBuffer(dr.arrays.film, CL_TRUE, first * sizeof(FilmPixel), count * sizeof(FilmPixel),
+                                       film);
+        dr.dev.queue.enqueueReadBuffer(dr.arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
+                                       count * sizeof(pcl_uint), bad);
+    }
+
+    void write_film_rows(DeviceRender& dr, std::uint32_t y0, std::uint32_t y1, const FilmPixel* film,
+                         const pcl_uint* bad)
+    {
+        const std::size_t first = std::size_t(y0) * options.width, count = std::size_t(y1 - y0) * options.width;
+        dr.dev.queue.enqueueWriteBuffer(dr.arrays.film, CL_TRUE, first * sizeof(FilmPixel), count * sizeof(FilmPixel),
+                                        film);
+        dr.dev.queue.enqueueWriteBuffer(dr.arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
+                                        count * sizeof(pcl_uint), bad);
+    }
+
     // Deals the rows to the devices in proportion to `weights` (render/device_bands.h). With
     // move_films, the film rows (sums and bad-sample counts) of the batch in progress move:
     // read from the old owner, written to the new one and zeroed at the old one, so every
@@ -181,7 +203,6 @@ struct Renderer::Impl {
     void set_bands(const std::vector<double>& weights, bool move_films)
     {
         const std::vector<std::uint32_t> b = band_bounds(options.height, weights);
-        const std::size_t w = options.width;
         auto owner = [&](std::uint32_t y, bool old_bands) {
             for (std::size_t d = 0; d < devices.size(); ++d) {
                 const std::uint32_t lo = old_bands ? devices[d]->y0 : b[d], hi = old_bands ? devices[d]->y1 : b[d + 1];
@@ -196,27 +217,14 @@ struct Renderer::Impl {
             while (end < options.height && owner(end, true) == from && owner(end, false) == to)
                 ++end;
             if (from != to && from < devices.size() && to < devices.size()) {
-                const std::size_t first_pixel = y * w, count = (end - y) * w;
+                const std::size_t count = std::size_t(end - y) * options.width;
                 std::vector<FilmPixel> film(count);
                 std::vector<pcl_uint> bad(count);
-                DeviceArrays& src = devices[from]->arrays;
-                DeviceArrays& dst = devices[to]->arrays;
-                cl::CommandQueue& qs = devices[from]->dev.queue;
-                cl::CommandQueue& qd = devices[to]->dev.queue;
-                qs.enqueueReadBuffer(src.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
-                                     film.data());
-                qs.enqueueReadBuffer(src.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint), count * sizeof(pcl_uint),
-                                     bad.data());
-                qd.enqueueWriteBuffer(dst.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
-                                      film.data());
-                qd.enqueueWriteBuffer(dst.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint),
-                                      count * sizeof(pcl_uint), bad.data());
-                const std::vector<FilmPixel> zero_film(count, FilmPixel{});
-                const std::vector<pcl_uint> zero_bad(count, 0u);
-                qs.enqueueWriteBuffer(src.film, CL_TRUE, first_pixel * sizeof(FilmPixel), count * sizeof(FilmPixel),
-                                      zero_film.data());
-                qs.enqueueWriteBuffer(src.bad_samples, CL_TRUE, first_pixel * sizeof(pcl_uint),
-                                      count * sizeof(pcl_uint), zero_bad.data());
+                read_film_rows(*devices[from], y, end, film.data(), bad.data());
+                write_film_rows(*devices[to], y, end, film.data(), bad.data());
+                std::fill(film.begin(), film.end(), FilmPixel{});
+                std::fill(bad.begin(), bad.end(), 0u);
+                write_film_rows(*devices[from], y, end, film.data(), bad.data());
             }
             y = end;
         }
@@ -399,15 +407,10 @@ struct Renderer::Impl {
         // depend on how the rows were dealt.
         cp.device_films.emplace_back(pixels());
         cp.device_bad.emplace_back(pixels());
-        const std::size_t w = options.width;
         for (auto& dr : devices) {
-            if (dr->y1 <= dr->y0)
-                continue;
-            const std::size_t first = dr->y0 * w, count = (dr->y1 - dr->y0) * w;
-            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, first * sizeof(FilmPixel),
-                                            count * sizeof(FilmPixel), cp.device_films[0].data() + first);
-            dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
-                                            count * sizeof(pcl_uint), cp.device_bad[0].data() + first);
+            const std::size_t first = std::size_t(dr->y0) * options.width;
+            if (dr->y1 > dr->y0)
+                read_film_rows(*dr, dr->y0, dr->y1, cp.device_films[0].data() + first, cp.device_bad[0].data() + first);
         }
         return cp;
     }
@@ -419,15 +422,11 @@ struct Renderer::Impl {
         if (cp.device_films.size() != 1 || cp.device_films[0].size() != pixels() || cp.device_bad[0].size() != pixels())
             throw Error("the checkpoint's film does not match the image size");
         clear_films();
-        const std::size_t w = options.width;
         for (auto& dr : devices) {
-            if (dr->y1 <= dr->y0)
-                continue;
-            const std::size_t first = dr->y0 * w, count = (dr->y1 - dr->y0) * w;
-            dr->dev.queue.enqueueWriteBuffer(dr->arrays.film, CL_TRUE, first * sizeof(FilmPixel),
-                                             count * sizeof(FilmPixel), cp.device_films[0].data() + first);
-            dr->dev.queue.enqueueWriteBuffer(dr->arrays.bad_samples, CL_TRUE, first * sizeof(pcl_uint),
-                                             count * sizeof(pcl_uint), cp.device_bad[0].data() + first);
+            const std::size_t first = std::size_t(dr->y0) * options.width;
+            if (dr->y1 > dr->y0)
+                write_film_rows(*dr, dr->y0, dr->y1, cp.device_films[0].data() + first,
+                                cp.device_bad[0].data() + first);
         }
     }
 
