@@ -146,14 +146,11 @@ private:
             index_value(array[i], at + "[" + std::to_string(i) + "]", bound, target);
     }
 
-    // Every member of obj[key] (an object) is an index into `target`.
-    void index_map(const Json& obj, const char* key, const std::string& at, const char* target) const
+    // Every member of `map` (an object: attributes, a morph target) is an index into `target`.
+    void index_members(const Json& map, const std::string& at, const char* target) const
     {
-        const Json* map = member_object(obj, key, at);
-        if (map == nullptr)
-            return;
         std::size_t bound = count(target);
-        for (const auto& [name, v] : map->items())
+        for (const auto& [name, v] : map.items())
             index_value(v, at + "." + name, bound, target);
     }
 
@@ -228,22 +225,12 @@ private:
         each(m, "primitives", at + ".primitives", [&](const Json& p, const std::string& p_at) {
             if (!p.contains("attributes"))
                 fail(p_at, "has no \"attributes\"");
-            index_map(p, "attributes", p_at + ".attributes", "accessors");
+            index_members(*member_object(p, "attributes", p_at + ".attributes"), p_at + ".attributes", "accessors");
             index(p, "indices", p_at + ".indices", "accessors");
             index(p, "material", p_at + ".material", "materials");
             integer(p, "mode", p_at);
-            if (p.contains("targets")) {
-                const Json& targets = p["targets"];
-                if (!targets.is_array())
-                    fail(p_at + ".targets", "is not an array");
-                for (std::size_t t = 0; t < targets.size(); ++t) {
-                    std::string t_at = p_at + ".targets[" + std::to_string(t) + "]";
-                    if (!targets[t].is_object())
-                        fail(t_at, "is not an object");
-                    for (const auto& [name, v] : targets[t].items())
-                        index_value(v, t_at + "." + name, count("accessors"), "accessors");
-                }
-            }
+            each(p, "targets", p_at + ".targets",
+                 [&](const Json& t, const std::string& t_at) { index_members(t, t_at, "accessors"); });
         });
         numbers(m, "weights", at, 0);
     }
