@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <type_traits>
 #include <unistd.h>
 
 #include "common/error.h"
@@ -14,7 +15,10 @@ namespace pathcl {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'A', 'T', 'H', 'C', 'L', 'C', 'P'};
-constexpr std::uint32_t kVersion = 1;
+// 2: the film's totals are exact sums (render/exact_sum.h) instead of doubles.
+constexpr std::uint32_t kVersion = 2;
+
+static_assert(std::is_trivially_copyable_v<ExactSum> && sizeof(ExactSum) == 24, "checkpoints store ExactSum's bytes");
 
 class Writer {
 public:
@@ -87,6 +91,7 @@ void write_checkpoint(const std::string& path, const RenderCheckpoint& cp)
     w.array(cp.film.sum_sq);
     w.array(cp.film.batch_mean_sum);
     w.array(cp.film.batch_mean_sq);
+    w.array(cp.film.samples);
     w.array(cp.film.pixel_batches);
     w.value(cp.film.bad);
     w.value(cp.film.batches);
@@ -146,10 +151,11 @@ RenderCheckpoint read_checkpoint(const std::string& path)
     cp.pass = r.value<std::uint32_t>();
     cp.spp_done = r.value<std::uint32_t>();
     cp.samples = r.value<double>();
-    cp.film.sum = r.array<double>();
-    cp.film.sum_sq = r.array<double>();
-    cp.film.batch_mean_sum = r.array<double>();
-    cp.film.batch_mean_sq = r.array<double>();
+    cp.film.sum = r.array<ExactSum>();
+    cp.film.sum_sq = r.array<ExactSum>();
+    cp.film.batch_mean_sum = r.array<ExactSum>();
+    cp.film.batch_mean_sq = r.array<ExactSum>();
+    cp.film.samples = r.array<double>();
     cp.film.pixel_batches = r.array<std::uint32_t>();
     cp.film.bad = r.value<std::uint64_t>();
     cp.film.batches = r.value<std::uint32_t>();

@@ -25,19 +25,31 @@ void FilmSum::add(const std::vector<FilmPixel>& film, const std::vector<pcl_uint
     }
 }
 
-FilmSum::Moments FilmSum::moments(std::size_t i, int c) const
+FilmAccumulator::FilmAccumulator(std::size_t pixels, std::uint32_t batch_spp) : batch_spp_(batch_spp)
+{
+    state_.sum.resize(pixels * 3);
+    state_.sum_sq.resize(pixels * 3);
+    state_.batch_mean_sum.resize(pixels * 3);
+    state_.batch_mean_sq.resize(pixels * 3);
+    state_.samples.assign(pixels, 0.0);
+    state_.pixel_batches.assign(pixels, 0);
+}
+
+FilmAccumulator::Moments FilmAccumulator::moments(std::size_t i, int c) const
 {
     Moments m;
-    m.n = sum_[i * 4 + 3]; // samples actually accumulated (bad ones excluded)
-    const double s = sum_[i * 4 + c], q = sum_sq_[i * 4 + c];
+    m.n = state_.samples[i]; // samples actually accumulated (bad ones excluded)
+    const double s = state_.sum[i * 3 + c].value(), q = state_.sum_sq[i * 3 + c].value();
     m.mean = m.n > 0.0 ? s / m.n : 0.0;
     m.variance = m.n > 1.0 ? std::max(0.0, (q - s * m.mean) / (m.n - 1.0)) : 0.0;
     return m;
 }
 
-Image FilmSum::image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const
+Image FilmAccumulator::image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const
 {
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    if (pixels != state_.samples.size())
+        throw Error("internal error: the film does not match the image size");
     Image img;
     img.width = width;
     img.height = height;
@@ -53,35 +65,33 @@ Image FilmSum::image(std::uint32_t width, std::uint32_t height, std::uint32_t sp
     return img;
 }
 
-FilmAccumulator::FilmAccumulator(std::size_t pixels, std::uint32_t batch_spp)
-    : total_(pixels), batch_spp_(batch_spp), batch_mean_sum_(pixels * 3, 0.0), batch_mean_sq_(pixels * 3, 0.0),
-      pixel_batches_(pixels, 0)
-{}
-
 void FilmAccumulator::add_to_total(const FilmSum& batch)
 {
-    for (std::size_t i = 0; i < total_.sum_.size(); ++i) {
-        total_.sum_[i] += batch.sum_[i];
-        total_.sum_sq_[i] += batch.sum_sq_[i];
+    for (std::size_t i = 0; i < state_.samples.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            state_.sum[i * 3 + c].add(batch.sum_[i * 4 + c]);
+            state_.sum_sq[i * 3 + c].add(batch.sum_sq_[i * 4 + c]);
+        }
+        state_.samples[i] += batch.sum_[i * 4 + 3]; // whole numbers: exact in any order
     }
-    total_.bad_ += batch.bad_;
+    state_.bad += batch.bad_;
 }
 
 void FilmAccumulator::add_batch(const FilmSum& batch)
 {
     add_to_total(batch);
-    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
+    for (std::size_t i = 0; i < state_.pixel_batches.size(); ++i) {
         double n = batch.sum_[i * 4 + 3];
         if (!(n > 0.0))
             continue; // the pixel took no sample in this batch (adaptive sampling)
-        ++pixel_batches_[i];
+        ++state_.pixel_batches[i];
         for (int c = 0; c < 3; ++c) {
             double m = batch.sum_[i * 4 + c] / n;
-            batch_mean_sum_[i * 3 + c] += m;
-            batch_mean_sq_[i * 3 + c] += m * m;
+            state_.batch_mean_sum[i * 3 + c].add(m);
+            state_.batch_mean_sq[i * 3 + c].add(m * m);
         }
     }
-    ++batches_;
+    ++state_.batches;
 }
 
 void FilmAccumulator::add_partial_batch(const FilmSum& batch)
@@ -89,46 +99,57 @@ void FilmAccumulator::add_partial_batch(const FilmSum& batch)
     add_to_total(batch);
 }
 
-FilmAccumulator::State FilmAccumulator::state() const
+void FilmAccumulator::check_sizes(const State& s) const
 {
-    return State{total_.sum_, total_.sum_sq_, batch_mean_sum_, batch_mean_sq_, pixel_batches_, total_.bad_, batches_};
+    const std::size_t pixels = state_.samples.size();
+    if (s.sum.size() != pixels * 3 || s.sum_sq.size() != pixels * 3 || s.batch_mean_sum.size() != pixels * 3 ||
+        s.batch_mean_sq.size() != pixels * 3 || s.samples.size() != pixels || s.pixel_batches.size() != pixels)
+        throw Error("the film state does not match the image size");
 }
 
-void FilmAccumulator::restore(const State& s)
+void FilmAccumulator::restore(State s)
 {
-    if (s.sum.size() != total_.sum_.size() || s.sum_sq.size() != total_.sum_sq_.size() ||
-        s.batch_mean_sum.size() != batch_mean_sum_.size() || s.batch_mean_sq.size() != batch_mean_sq_.size() ||
-        s.pixel_batches.size() != pixel_batches_.size())
-        throw Error("the film state does not match the image size");
-    total_.sum_ = s.sum;
-    total_.sum_sq_ = s.sum_sq;
-    total_.bad_ = s.bad;
-    batch_mean_sum_ = s.batch_mean_sum;
-    batch_mean_sq_ = s.batch_mean_sq;
-    pixel_batches_ = s.pixel_batches;
-    batches_ = s.batches;
+    check_sizes(s);
+    state_ = std::move(s);
+}
+
+void FilmAccumulator::merge(const State& s)
+{
+    check_sizes(s);
+    for (std::size_t i = 0; i < state_.sum.size(); ++i) {
+        state_.sum[i].add(s.sum[i]);
+        state_.sum_sq[i].add(s.sum_sq[i]);
+        state_.batch_mean_sum[i].add(s.batch_mean_sum[i]);
+        state_.batch_mean_sq[i].add(s.batch_mean_sq[i]);
+    }
+    for (std::size_t i = 0; i < state_.samples.size(); ++i) {
+        state_.samples[i] += s.samples[i];
+        state_.pixel_batches[i] += s.pixel_batches[i];
+    }
+    state_.bad += s.bad;
+    state_.batches += s.batches;
 }
 
 std::vector<std::uint32_t> FilmAccumulator::pixel_samples() const
 {
-    std::vector<std::uint32_t> n(pixel_batches_.size());
+    std::vector<std::uint32_t> n(state_.samples.size());
     for (std::size_t i = 0; i < n.size(); ++i)
-        n[i] = static_cast<std::uint32_t>(total_.sum_[i * 4 + 3]);
+        n[i] = static_cast<std::uint32_t>(state_.samples[i]);
     return n;
 }
 
 double FilmAccumulator::pixel_channel_estimate(std::size_t i, int c) const
 {
-    double k = pixel_batches_[i];
-    double s = batch_mean_sum_[i * 3 + c], q = batch_mean_sq_[i * 3 + c];
+    double k = state_.pixel_batches[i];
+    double s = state_.batch_mean_sum[i * 3 + c].value(), q = state_.batch_mean_sq[i * 3 + c].value();
     double spread = std::max(0.0, (q - s * s / k) / (k - 1.0)); // variance of one batch mean
-    const FilmSum::Moments m = total_.moments(i, c);
+    const Moments m = moments(i, c);
     return spread * batch_spp_ / m.n / (m.mean * m.mean + kRelMseEpsilon);
 }
 
 double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
 {
-    if (pixel_batches_[i] < 2)
+    if (state_.pixel_batches[i] < 2)
         return -1.0;
     return std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
 }
@@ -137,25 +158,25 @@ double FilmAccumulator::relmse_estimate() const
 {
     double sum = 0.0;
     std::size_t terms = 0;
-    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
-        if (pixel_batches_[i] < 2)
+    for (std::size_t i = 0; i < state_.pixel_batches.size(); ++i) {
+        if (state_.pixel_batches[i] < 2)
             continue;
         for (int c = 0; c < 3; ++c)
             sum += pixel_channel_estimate(i, c);
         terms += 3;
     }
-    return terms > 0 && batches_ >= 2 ? sum / static_cast<double>(terms) : -1.0;
+    return terms > 0 && state_.batches >= 2 ? sum / static_cast<double>(terms) : -1.0;
 }
 
 double FilmAccumulator::per_sample_relmse_estimate() const
 {
     double sum = 0.0;
     std::size_t terms = 0;
-    for (std::size_t i = 0; i < pixel_batches_.size(); ++i) {
-        if (!(total_.sum_[i * 4 + 3] > 1.0))
+    for (std::size_t i = 0; i < state_.samples.size(); ++i) {
+        if (!(state_.samples[i] > 1.0))
             continue;
         for (int c = 0; c < 3; ++c) {
-            const FilmSum::Moments m = total_.moments(i, c);
+            const Moments m = moments(i, c);
             sum += m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
         }
         terms += 3;

@@ -1,7 +1,7 @@
 // The image from the devices' films. Each device keeps compensated float sums of L and L^2
 // per pixel (kernels/film/film.cl); a batch's films are added in double (FilmSum), and a
-// render's batches are added up (FilmAccumulator), which also keeps, per pixel and
-// channel, the spread of the batch means: with two or more independently scrambled
+// render's batches are added up exactly (FilmAccumulator, render/exact_sum.h), which also
+// keeps, per pixel and channel, the spread of the batch means: with two or more independently scrambled
 // batches (render/batches.h) that spread is an honest estimate of the image's error for
 // every sampler, the stratified and quasi-Monte Carlo ones included, whose per-sample
 // variance overstates it.
@@ -12,6 +12,7 @@
 
 #include "image/image.h"
 #include "image/image_error.h"
+#include "render/exact_sum.h"
 #include "types.h"
 
 namespace pathcl {
@@ -26,22 +27,15 @@ public:
 
     std::uint64_t bad_samples() const { return bad_; }
 
-    // Per-pixel means and per-sample variances; spp is recorded in the image (the sum's
-    // own per-pixel sample count, which excludes rejected samples, divides).
-    Image image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const;
-
 private:
     friend class FilmAccumulator;
-    struct Moments {
-        double n = 0.0, mean = 0.0, variance = 0.0; // samples, mean, per-sample variance (0 below 2)
-    };
-    Moments moments(std::size_t pixel, int channel) const;
-
     std::vector<double> sum_, sum_sq_; // four channels per pixel: rgb and the sample count
     std::uint64_t bad_ = 0;
 };
 
-// A render's batches.
+// A render's batches, or a sample range's (a range is made of whole batches): every total
+// is an ExactSum, so the state of a render is the same however its batches were split
+// over processes and merged back (merge()), and the image bit for bit.
 class FilmAccumulator {
 public:
     // batch_spp: the sample count of a whole batch (render/batches.h).
@@ -52,25 +46,30 @@ public:
     // A partial batch (a budget ended it): counts towards the image only.
     void add_partial_batch(const FilmSum& batch);
 
-    std::uint32_t batches() const { return batches_; } // whole ones
-    std::uint64_t bad_samples() const { return total_.bad_; }
-    Image image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const
-    {
-        return total_.image(width, height, spp);
-    }
+    std::uint32_t batches() const { return state_.batches; } // whole ones
+    std::uint64_t bad_samples() const { return state_.bad; }
+    // Per-pixel means and per-sample variances; spp is recorded in the image (the
+    // pixel's own sample count, which excludes rejected samples, divides).
+    Image image(std::uint32_t width, std::uint32_t height, std::uint32_t spp) const;
     // Samples each pixel has accumulated (rejected ones excluded).
     std::vector<std::uint32_t> pixel_samples() const;
 
-    // Everything it holds, for a checkpoint (render/checkpoint.h); restore() takes back a
-    // state of the same pixel count and batch size and continues bit for bit.
+    // Everything it holds: for a checkpoint (render/checkpoint.h) and for the film
+    // channels of a partial render (render/film_channels.h).
     struct State {
-        std::vector<double> sum, sum_sq, batch_mean_sum, batch_mean_sq;
-        std::vector<std::uint32_t> pixel_batches;
+        std::vector<ExactSum> sum, sum_sq;                   // rgb per pixel
+        std::vector<ExactSum> batch_mean_sum, batch_mean_sq; // rgb per pixel: whole batches' means
+        std::vector<double> samples;                         // per pixel: whole numbers, exact
+        std::vector<std::uint32_t> pixel_batches;            // per pixel: whole batches with samples
         std::uint64_t bad = 0;
         std::uint32_t batches = 0;
     };
-    State state() const;
-    void restore(const State& state); // throws pathcl::Error when the sizes differ
+    const State& state() const { return state_; }
+    // Takes back a state of the same pixel count; throws pathcl::Error when sizes differ.
+    void restore(State state);
+    // Adds another accumulator's state (other batches of the same render): exact, so the
+    // order of merges does not matter. Throws pathcl::Error when sizes differ.
+    void merge(const State& other);
 
     // The estimated relMSE of image(): the mean over pixels and channels of
     // var(mean) / (mean^2 + 0.01). var(mean) is s^2 * batch_spp / n, s^2 the variance of
@@ -86,13 +85,16 @@ public:
     double per_sample_relmse_estimate() const;
 
 private:
-    FilmSum total_;
-    std::uint32_t batch_spp_;
-    std::vector<double> batch_mean_sum_, batch_mean_sq_; // three channels per pixel
-    std::vector<std::uint32_t> pixel_batches_;
-    std::uint32_t batches_ = 0;
+    struct Moments {
+        double n = 0.0, mean = 0.0, variance = 0.0; // samples, mean, per-sample variance (0 below 2)
+    };
+    Moments moments(std::size_t pixel, int channel) const;
     void add_to_total(const FilmSum& batch);
     double pixel_channel_estimate(std::size_t i, int c) const;
+    void check_sizes(const State& other) const;
+
+    std::uint32_t batch_spp_;
+    State state_;
 };
 
 } // namespace pathcl
