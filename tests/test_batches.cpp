@@ -3,6 +3,7 @@
 // batch means are known exactly.
 #include <gtest/gtest.h>
 
+#include "common/error.h"
 #include "render/batches.h"
 #include "render/film.h"
 #include "support/expect_error.h"
@@ -141,6 +142,41 @@ TEST(FilmAccumulator, PixelsWithoutSamplesInABatchKeepTheirSpread)
     acc.add_batch(FilmSum(1));
     EXPECT_EQ(acc.batches(), 3u);
     EXPECT_DOUBLE_EQ(acc.pixel_relmse_estimate(0), before);
+}
+
+// Sample ranges merge exactly: batches added to one film, or to several merged in another
+// order, give the same state to the last bit, and so the same image.
+TEST(FilmAccumulator, BatchesSplitOverFilmsAndMergedGiveTheSameState)
+{
+    std::vector<FilmSum> batches;
+    for (int b = 0; b < 9; ++b) {
+        FilmPixel px{};
+        const float v = 0.1f + 0.37f * static_cast<float>(b % 4) + 1e-4f * static_cast<float>(b);
+        px.sum = {v * 16, 2 * v * 16, 3e3f * v * 16, 16};
+        px.sum_compensation = {1e-9f * static_cast<float>(b), 0, 0, 0};
+        px.sum_sq = {v * v * 16, 4 * v * v * 16, 9e6f * v * v * 16, 16};
+        FilmSum s(1);
+        s.add({px}, {static_cast<pcl_uint>(b % 2)});
+        batches.push_back(s);
+    }
+    FilmAccumulator whole(1, 16), first(1, 16), second(1, 16);
+    for (int b = 0; b < 9; ++b) {
+        whole.add_batch(batches[b]);
+        (b % 3 == 1 ? first : second).add_batch(batches[b]);
+    }
+    FilmAccumulator merged(1, 16);
+    merged.merge(second.state());
+    merged.merge(first.state());
+    const auto& a = whole.state();
+    const auto& m = merged.state();
+    EXPECT_TRUE(a.sum == m.sum && a.sum_sq == m.sum_sq && a.batch_mean_sum == m.batch_mean_sum &&
+                a.batch_mean_sq == m.batch_mean_sq);
+    EXPECT_EQ(a.samples, m.samples);
+    EXPECT_EQ(a.pixel_batches, m.pixel_batches);
+    EXPECT_EQ(a.bad, m.bad);
+    EXPECT_EQ(a.batches, m.batches);
+    EXPECT_EQ(whole.relmse_estimate(), merged.relmse_estimate());
+    EXPECT_THROW(merged.merge(FilmAccumulator(2, 16).state()), Error);
 }
 
 } // namespace

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "support/same_image.h"
 #include "support/tool_run.h"
 
 extern char** environ;
@@ -24,19 +25,11 @@ extern char** environ;
 namespace pathcl {
 namespace {
 
+using test::expect_same_image;
 using test::ToolRun;
 
 const std::string kScene = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box-glass-mirror.gltf";
 const std::string kSmall = " --width 32 --height 32 --quiet";
-
-void expect_bitwise_equal(const Image& a, const Image& b)
-{
-    ASSERT_EQ(a.rgb.size(), b.rgb.size());
-    EXPECT_EQ(a.spp, b.spp);
-    EXPECT_EQ(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0) << "radiance differs";
-    EXPECT_EQ(std::memcmp(a.variance.data(), b.variance.data(), a.variance.size() * sizeof(float)), 0)
-        << "variance differs";
-}
 
 // Guards the device films in the checkpoint: restarting the batch in progress from a
 // cleared film gives another image (and a resumed render short of samples).
@@ -78,7 +71,7 @@ TEST_F(ToolRun, RenderKilledBetweenCheckpointsResumesToTheSameImage)
     EXPECT_FALSE(std::filesystem::exists(dir_ / "killed.exr"));
 
     ASSERT_EQ(run("render '" + kScene + "' -o resumed.exr --resume cp.bin" + options), 0) << text("stderr.txt");
-    expect_bitwise_equal(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()));
+    expect_same_image(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()));
 }
 
 // Guards the accumulator state in the checkpoint: a render of several batches stopped in
@@ -94,7 +87,7 @@ TEST_F(ToolRun, RenderStoppedByItsTimeBudgetResumesToTheSameImage)
     ASSERT_EQ(run("render '" + kScene + "' -o resumed.exr --time 600 --resume cp.bin" + options), 0)
         << text("stderr.txt");
     Image full = read_image((dir_ / "full.exr").string()), resumed = read_image((dir_ / "resumed.exr").string());
-    expect_bitwise_equal(full, resumed);
+    expect_same_image(full, resumed);
     EXPECT_EQ(full.metadata["relmse_estimate"], resumed.metadata["relmse_estimate"]);
 }
 

@@ -12,27 +12,18 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "support/same_image.h"
 #include "support/tool_run.h"
 
 namespace pathcl {
 namespace {
 
+using test::expect_same_image;
 using test::ToolRun;
 
 const std::string kTwoDevices = "POCL_DEVICES='basic basic'";
 const std::string kGlass = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box-glass-mirror.gltf";
 const std::string kCornell = std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box.gltf";
-
-void expect_bitwise_equal(const Image& a, const Image& b, const std::string& what)
-{
-    ASSERT_EQ(a.rgb.size(), b.rgb.size()) << what;
-    EXPECT_EQ(a.spp, b.spp) << what;
-    EXPECT_EQ(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0) << what << ": radiance differs";
-    EXPECT_EQ(std::memcmp(a.variance.data(), b.variance.data(), a.variance.size() * sizeof(float)), 0)
-        << what << ": variance differs";
-    EXPECT_EQ(a.samples, b.samples) << what << ": per-pixel samples differ";
-    EXPECT_EQ(a.metadata, b.metadata) << what;
-}
 
 class MultiDevice : public ToolRun {
 protected:
@@ -56,8 +47,7 @@ protected:
         }
         const Image first = read_image((dir_ / "r0.exr").string());
         for (std::size_t i = 1; i < device_flags.size(); ++i)
-            expect_bitwise_equal(first, read_image((dir_ / ("r" + std::to_string(i) + ".exr")).string()),
-                                 device_flags[i]);
+            expect_same_image(first, read_image((dir_ / ("r" + std::to_string(i) + ".exr")).string()), device_flags[i]);
     }
 };
 
@@ -91,8 +81,8 @@ TEST_F(MultiDevice, StoppedAndResumedOnTwoDevicesIsTheOneDeviceImage)
         << text("stderr.txt");
     ASSERT_EQ(run("render '" + kGlass + "' -o resumed.exr --spp 256 --resume cp.bin --device 0,1" + o, kTwoDevices), 0)
         << text("stderr.txt");
-    expect_bitwise_equal(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()),
-                         "resumed on two devices");
+    expect_same_image(read_image((dir_ / "full.exr").string()), read_image((dir_ / "resumed.exr").string()),
+                      "resumed on two devices");
 }
 
 } // namespace

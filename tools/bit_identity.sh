@@ -101,6 +101,7 @@ render cornell-box-glass-mirror-single-scattering cornell-box-glass-mirror --sin
 render material-spheres-single-scattering material-spheres --single-scattering --sampler halton
 render sky-spheres-rotated sky-spheres --env-rotation 30 --env-strength 0.7
 render textured-long textured --max-bounces 12 --spp 16 --sampler multi-jittered
+render cornell-box-batches cornell-box --spp 24 --batch-spp 8 --seed 3
 
 # The ray log of a thin-lens render.
 cases=$((cases + 1))

@@ -13,6 +13,7 @@
 #include "common/staged_files.h"
 #include "image/image_io.h"
 #include "render/checkpoint.h"
+#include "render/partial_renders.h"
 #include "render/ray_log.h"
 #include "render/renderer.h"
 #include "scene/camera_overrides.h"
@@ -116,6 +117,7 @@ struct RenderRequest {
     double checkpoint_every = 60.0;
     DisplayTransform display; // PNG outputs: --exposure EV, --tone
     std::string tone = "clip";
+    std::string sample_range; // --sample-range FIRST:COUNT
 };
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
@@ -138,7 +140,9 @@ void print_summary(const RenderRequest& rq, const RenderResult& r)
     if (!rq.ray_log.empty())
         names += ", " + rq.ray_log + " (" + std::to_string(r.camera_rays.size()) + " rays)";
     std::string spp = std::to_string(s.spp) + " spp " + sampler_name(rq.options.sampler);
-    if (s.stop == StopReason::Spp && s.spp != rq.options.spp)
+    if (rq.options.sample_count > 0)
+        spp += " (samples " + rq.sample_range + " of " + std::to_string(rq.options.spp) + ")";
+    else if (s.stop == StopReason::Spp && s.spp != rq.options.spp)
         spp += " (rounded up from " + std::to_string(rq.options.spp) + ")";
     std::printf("%s: %zu triangles, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
                 "%.3g samples/s | %llu NaN/Inf samples | %s | stopped: %s\n",
@@ -179,6 +183,14 @@ int run_render(RenderRequest rq)
     }
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
+    if (!rq.sample_range.empty()) {
+        const SampleRange range = parse_sample_range(rq.sample_range);
+        opt.sample_first = range.first;
+        opt.sample_count = range.count;
+        for (const std::string& output : rq.outputs)
+            if (lowercase_extension(output) != ".exr")
+                throw Error(output + ": a sample range's film state is kept in EXR only (--sample-range)");
+    }
     opt.devices = parse_devices(rq.device);
     if (!rq.device_shares.empty()) {
         double total = 0.0;
@@ -214,7 +226,7 @@ int run_render(RenderRequest rq)
             line.show(p);
             return !interrupted();
         };
-        if (resume || !rq.checkpoint.empty())
+        if (resume || !rq.checkpoint.empty() || opt.sample_count > 0)
             run.scene_key = scene_fingerprint_hex(scene);
         run.resume = resume ? &*resume : nullptr;
         auto last_checkpoint = std::chrono::steady_clock::now();
@@ -344,6 +356,12 @@ Command add_render_command(CLI::App& app)
     render->add_option("--resume", rq->resume,
                        "continue the render whose checkpoint FILE holds (same scene and options: the image equals "
                        "the uninterrupted render's bit for bit)");
+    render
+        ->add_option("--sample-range", rq->sample_range,
+                     "render only sample indices FIRST .. FIRST+COUNT-1 of the --spp render (whole batches of "
+                     "--batch-spp): the EXR keeps the exact film state, and 'pathcl merge' adds the ranges into "
+                     "the whole render's image bit for bit")
+        ->type_name("FIRST:COUNT");
     add_program_options(render, rq->options);
     return {render, [rq] { return run_render(*rq); }};
 }

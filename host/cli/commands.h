@@ -18,6 +18,7 @@ Command add_devices_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_samples_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 // argc and argv: the command line as typed, quoted in the study's summary.
 Command add_converge_command(CLI::App& app, int argc, char** argv);

@@ -24,13 +24,11 @@ int main(int argc, char** argv)
         std::replace(what.begin(), what.end(), '\n', ' ');
         return "pathcl: error: " + what + "\n";
     });
-    std::vector<pathcl::cli::Command> commands = {pathcl::cli::add_render_command(app),
-                                                  pathcl::cli::add_devices_command(app),
-                                                  pathcl::cli::add_bench_command(app),
-                                                  pathcl::cli::add_samples_command(app),
-                                                  pathcl::cli::add_compare_command(app),
-                                                  pathcl::cli::add_info_command(app),
-                                                  pathcl::cli::add_converge_command(app, argc, argv)};
+    std::vector<pathcl::cli::Command> commands = {
+        pathcl::cli::add_render_command(app),  pathcl::cli::add_devices_command(app),
+        pathcl::cli::add_bench_command(app),   pathcl::cli::add_samples_command(app),
+        pathcl::cli::add_compare_command(app), pathcl::cli::add_merge_command(app),
+        pathcl::cli::add_info_command(app),    pathcl::cli::add_converge_command(app, argc, argv)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -19,6 +19,12 @@ struct Image {
     // How the render went, as text (EXR attributes "pathcl:<key>"): the stop reason, the
     // estimated error, the batches, the seed.
     std::map<std::string, std::string> metadata;
+    // A partial render's exact film state (render/film_channels.h), written to an EXR as
+    // a second part named "film" of 32-bit unsigned channels: film_channels names them,
+    // film holds width * height * film_channels.size() values, pixel by pixel. Empty for
+    // a whole render.
+    std::vector<std::string> film_channels;
+    std::vector<std::uint32_t> film;
 
     double pixel_spp(std::size_t pixel) const { return samples.empty() ? spp : samples[pixel]; }
 };

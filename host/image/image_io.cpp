@@ -1,5 +1,6 @@
 #include "image/image_io.h"
 
+#include <algorithm>
 #include <fcntl.h>
 #include <filesystem>
 #include <memory>
@@ -21,11 +22,11 @@ using OIIO::ImageBuf;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
-// Whether `file` is on disk whole: flushed (fsync reports a write the kernel could not
+// Whether `file` is on disk whole (its first `parts` parts): flushed (fsync reports a write the kernel could not
 // complete) and read back to the last pixel. The image writers do not all report a failed
 // write (libpng's can leave a 0-byte file and succeed), so the renamed file is never
 // trusted blindly.
-bool written_completely(const std::string& file, int width, int height)
+bool written_completely(const std::string& file, int width, int height, int parts)
 {
     MutedStderr muted;
     int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
@@ -38,9 +39,15 @@ bool written_completely(const std::string& file, int width, int height)
     auto in = OIIO::ImageInput::open(file);
     if (!in || in->spec().width != width || in->spec().height != height)
         return false;
-    std::vector<float> px(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
-                          static_cast<std::size_t>(in->spec().nchannels));
-    bool ok = in->read_image(0, 0, 0, in->spec().nchannels, TypeDesc::FLOAT, px.data());
+    bool ok = true;
+    for (int part = 0; part < parts && ok; ++part) {
+        ok = in->seek_subimage(part, 0);
+        if (!ok)
+            break;
+        std::vector<float> px(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                              static_cast<std::size_t>(in->spec().nchannels));
+        ok = in->read_image(part, 0, 0, in->spec().nchannels, TypeDesc::FLOAT, px.data());
+    }
     (void)in->geterror(); // clear OIIO's per-thread error, so it is not printed later
     return ok;
 }
@@ -77,6 +84,67 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path)
     return in;
 }
 
+// The EXR: part 0 the image (float), part 1 "film" (uint32) where the image has one.
+void write_exr(const std::string& file, const std::string& path, const Image& img)
+{
+    const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+    const int w = static_cast<int>(img.width), h = static_cast<int>(img.height);
+    const bool counts = !img.samples.empty();
+    if (counts && img.samples.size() != pixels)
+        throw Error(path + ": internal error: per-pixel sample counts do not match the image");
+    const std::size_t film_channels = img.film_channels.size();
+    if (img.film.size() != pixels * film_channels)
+        throw Error(path + ": internal error: the film part does not match the image");
+    const int channels = counts ? 7 : 6;
+    std::vector<ImageSpec> specs(film_channels > 0 ? 2 : 1);
+    ImageSpec& spec = specs[0];
+    spec = ImageSpec(w, h, channels, TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "variance.R", "variance.G", "variance.B"};
+    if (counts)
+        spec.channelnames.push_back("samples");
+    spec.attribute("compression", "zip");
+    spec.attribute("pathcl:spp", static_cast<int>(img.spp));
+    for (const auto& [key, value] : img.metadata)
+        spec.attribute("pathcl:" + key, value);
+    if (film_channels > 0) {
+        spec.attribute("name", "image");
+        specs[1] = ImageSpec(w, h, static_cast<int>(film_channels), TypeDesc::UINT);
+        specs[1].channelnames = img.film_channels;
+        specs[1].attribute("compression", "zip");
+        specs[1].attribute("name", "film");
+    }
+    std::vector<float> px(pixels * static_cast<std::size_t>(channels));
+    for (std::size_t i = 0; i < pixels; ++i) {
+        float* p = &px[i * static_cast<std::size_t>(channels)];
+        for (int c = 0; c < 3; ++c) {
+            p[c] = img.rgb[i * 3 + c];
+            p[3 + c] = img.variance[i * 3 + c];
+        }
+        if (counts)
+            p[6] = static_cast<float>(img.samples[i]); // exact below 2^24
+    }
+    std::string why;
+    {
+        auto out = OIIO::ImageOutput::create(file);
+        bool ok = out && out->open(file, static_cast<int>(specs.size()), specs.data()) &&
+                  out->write_image(TypeDesc::FLOAT, px.data());
+        if (ok && film_channels > 0)
+            ok = out->open(file, specs[1], OIIO::ImageOutput::AppendSubimage) &&
+                 out->write_image(TypeDesc::UINT, img.film.data());
+        if (out && !out->close())
+            ok = false;
+        if (!ok)
+            why = out ? one_line(out->geterror()) : one_line(OIIO::geterror());
+    }
+    if (why.empty() && !written_completely(file, w, h, static_cast<int>(specs.size())))
+        why = "the file on disk is incomplete (is the disk full?)";
+    if (!why.empty()) {
+        std::error_code ec;
+        fs::remove(file, ec);
+        throw Error(path + ": cannot write: " + why);
+    }
+}
+
 } // namespace
 
 void check_output_path(const std::string& path)
@@ -98,33 +166,12 @@ void write_image_file(const std::string& file, const std::string& path, const Im
     const bool exr = lowercase_extension(path) == ".exr";
     const int w = static_cast<int>(img.width), h = static_cast<int>(img.height);
 
-    ImageBuf out;
     if (exr) {
-        const bool counts = !img.samples.empty();
-        if (counts && img.samples.size() != pixels)
-            throw Error(path + ": internal error: per-pixel sample counts do not match the image");
-        const int channels = counts ? 7 : 6;
-        ImageSpec spec(w, h, channels, TypeDesc::FLOAT);
-        spec.channelnames = {"R", "G", "B", "variance.R", "variance.G", "variance.B"};
-        if (counts)
-            spec.channelnames.push_back("samples");
-        spec.attribute("compression", "zip");
-        spec.attribute("pathcl:spp", static_cast<int>(img.spp));
-        for (const auto& [key, value] : img.metadata)
-            spec.attribute("pathcl:" + key, value);
-        out.reset(spec);
-        std::vector<float> px(pixels * static_cast<std::size_t>(channels));
-        for (std::size_t i = 0; i < pixels; ++i) {
-            float* p = &px[i * static_cast<std::size_t>(channels)];
-            for (int c = 0; c < 3; ++c) {
-                p[c] = img.rgb[i * 3 + c];
-                p[3 + c] = img.variance[i * 3 + c];
-            }
-            if (counts)
-                p[6] = static_cast<float>(img.samples[i]); // exact below 2^24
-        }
-        out.set_pixels(OIIO::ROI::All(), TypeDesc::FLOAT, px.data());
-    } else {
+        write_exr(file, path, img);
+        return;
+    }
+    ImageBuf out;
+    {
         std::vector<float> shown(img.rgb.size());
         for (std::size_t i = 0; i < shown.size(); ++i)
             shown[i] = display_value(img.rgb[i], display);
@@ -137,7 +184,7 @@ void write_image_file(const std::string& file, const std::string& path, const Im
     if (out.has_error())
         throw Error(path + ": cannot prepare image: " + out.geterror());
 
-    if (!out.write(file) || !written_completely(file, w, h)) {
+    if (!out.write(file) || !written_completely(file, w, h, 1)) {
         std::string why = out.has_error() ? out.geterror() : "the file on disk is incomplete (is the disk full?)";
         std::error_code ec;
         fs::remove(file, ec);
@@ -196,6 +243,33 @@ Image read_image(const std::string& path)
         }
     }
     return img;
+}
+
+void read_film_part(const std::string& path, Image& img)
+{
+    MutedStderr muted;
+    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
+    if (!in->seek_subimage(1, 0))
+        throw Error(path + ": has no film part: not a partial render (--sample-range)");
+    const ImageSpec& spec = in->spec();
+    if (spec.width != static_cast<int>(img.width) || spec.height != static_cast<int>(img.height) ||
+        spec.get_string_attribute("name") != "film" || spec.nchannels <= 0)
+        throw Error(path + ": its film part does not match its image");
+    const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+    const std::size_t channels = static_cast<std::size_t>(spec.nchannels);
+    if (channels > kMaxFilmChannels || pixels > kMaxFilmBytes / 4 / channels)
+        throw Error(path + ": its film part is too large (" + std::to_string(channels) + " channels of " +
+                    std::to_string(pixels) + " pixels; at most " + std::to_string(kMaxFilmBytes) + " bytes)");
+    img.film_channels = spec.channelnames;
+    img.film.assign(pixels * channels, 0u);
+    // A few rows at a time: what OpenImageIO buffers stays small whatever the width.
+    constexpr int kRows = 16;
+    for (int y = 0; y < spec.height; y += kRows) {
+        const int y1 = std::min(spec.height, y + kRows);
+        if (!in->read_scanlines(1, 0, y, y1, 0, 0, spec.nchannels, TypeDesc::UINT,
+                                img.film.data() + static_cast<std::size_t>(y) * img.width * channels))
+            throw Error(path + ": cannot read its film part: " + one_line(in->geterror()));
+    }
 }
 
 } // namespace pathcl

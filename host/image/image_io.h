@@ -1,10 +1,11 @@
 // Image files through OpenImageIO. EXR: linear float RGB plus the per-sample variance as
 // channels variance.R/G/B, the sample count as attribute "pathcl:spp" (and, where pixels
-// differ, per pixel as channel "samples"), and Image::metadata as string attributes
-// "pathcl:<key>". PNG: the same radiance through a DisplayTransform (exposure and tone
-// curve; by default clamped to [0, 1]), sRGB-encoded to 8 bits. Files are written under a temporary name in
-// the target directory and renamed, so a failed write never leaves a partial file and
-// never destroys an existing one.
+// differ, per pixel as channel "samples"), Image::metadata as string attributes
+// "pathcl:<key>", and a partial render's film state as a second part. PNG: the same
+// radiance through a DisplayTransform (exposure and tone curve; by default clamped to
+// [0, 1]), sRGB-encoded to 8 bits. Files are written under a temporary name in the target
+// directory and renamed, so a failed write never leaves a partial file and never destroys
+// an existing one.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +36,17 @@ constexpr std::size_t kMaxImageBytes = std::size_t(1) << 31;
 
 // Reads an EXR written by write_image (variance channels optional: zero if absent), or
 // any image OpenImageIO reads, from a regular file of at most kMaxImagePixels pixels.
+// The film part of a partial render is not read (read_film_part).
 Image read_image(const std::string& path);
+
+// A film part is read whole too: at most this many channels and bytes (a 4K partial
+// render's is 2.5 GB).
+constexpr std::size_t kMaxFilmChannels = 256;
+constexpr std::size_t kMaxFilmBytes = std::size_t(1) << 33;
+
+// Reads an EXR's "film" part (Image::film_channels, Image::film) into `image`, which
+// read_image returned for the same path; throws pathcl::Error naming the path when the
+// file has none or it does not match the image.
+void read_film_part(const std::string& path, Image& image);
 
 } // namespace pathcl

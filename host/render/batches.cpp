@@ -17,14 +17,41 @@ constexpr std::uint32_t kMinEstimateBatches = 2;
 // a target, large enough for the stratified samplers' sets to pay.
 constexpr std::uint32_t kDefaultBudgetBatchSpp = 16;
 
+// The sample range of the options into the plan: whole batches of the render, so that a
+// range's batches are those of the whole render and its film state adds to the others'
+// exactly.
+void plan_range(const RenderOptions& opt, BatchPlan& plan)
+{
+    if (opt.sample_count == 0) {
+        if (opt.sample_first > 0)
+            throw ParameterError("sample_range", "needs a sample count: FIRST:COUNT");
+        return;
+    }
+    if (plan.budgeted || opt.adaptive)
+        throw ParameterError("sample_range", "is a fixed set of samples: it cannot end early by a time budget or a "
+                                             "target error");
+    const std::uint64_t end = std::uint64_t(opt.sample_first) + opt.sample_count;
+    if (end > plan.max_spp)
+        throw ParameterError("sample_range", "ends at sample " + std::to_string(end) + ", past the render's " +
+                                                 std::to_string(plan.max_spp) + " samples per pixel ({spp})");
+    const std::uint32_t b = plan.batch_spp;
+    if (opt.sample_first % b != 0 || (end % b != 0 && end != plan.max_spp))
+        throw ParameterError("sample_range",
+                             "is made of whole batches: FIRST and FIRST+COUNT must be multiples of the batch size " +
+                                 std::to_string(b) + " (or end at {spp} " + std::to_string(plan.max_spp) +
+                                 "); choose the batch size with {batch_spp}");
+    plan.first_spp = opt.sample_first;
+    plan.end_spp = static_cast<std::uint32_t>(end);
+}
+
 } // namespace
 
 std::uint32_t BatchPlan::batch_passes(std::uint32_t b) const
 {
     const std::uint64_t first = static_cast<std::uint64_t>(b) * batch_spp;
-    if (first >= max_spp)
+    if (first >= end_spp)
         return 0;
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(batch_spp, max_spp - first));
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(batch_spp, end_spp - first));
 }
 
 BatchPlan plan_batches(const RenderOptions& opt)
@@ -46,7 +73,8 @@ BatchPlan plan_batches(const RenderOptions& opt)
     plan.budgeted = opt.time_budget > 0.0 || opt.target_error > 0.0;
     if (opt.batch_spp == 0 && !plan.budgeted) {
         // One point set of spp samples: the plain render.
-        plan.batch_spp = plan.max_spp = sampler_spp(opt.sampler, opt.spp);
+        plan.batch_spp = plan.max_spp = plan.end_spp = sampler_spp(opt.sampler, opt.spp);
+        plan_range(opt, plan);
         return plan;
     }
     plan.batch_spp = sampler_spp(opt.sampler, opt.batch_spp > 0 ? opt.batch_spp : kDefaultBudgetBatchSpp);
@@ -59,6 +87,8 @@ BatchPlan plan_batches(const RenderOptions& opt)
             throw ParameterError("spp", "a target error needs two batches: at least " + std::to_string(two) +
                                             " samples per pixel ({batch_spp} " + std::to_string(plan.batch_spp) + ")");
     }
+    plan.end_spp = plan.max_spp;
+    plan_range(opt, plan);
     return plan;
 }
 

@@ -27,8 +27,13 @@ struct BatchPlan {
     std::uint32_t max_spp = 1;   // sample indices per pixel at most, over all batches
     std::uint32_t min_spp = 0;   // a target error is not trusted before
     bool budgeted = false;       // a time budget or a target error may end it early
+    // The sample indices this render takes: all (0 .. max_spp) or a range of whole batches
+    // (RenderOptions::sample_first, sample_count).
+    std::uint32_t first_spp = 0, end_spp = 1;
 
-    std::uint32_t batch_count() const { return (max_spp + batch_spp - 1) / batch_spp; }
+    bool partial() const { return first_spp > 0 || end_spp < max_spp; }
+    std::uint32_t first_batch() const { return first_spp / batch_spp; }
+    std::uint32_t batch_count() const { return (end_spp + batch_spp - 1) / batch_spp; } // one past the last
     // Passes of batch b (batch_spp, or fewer for the last).
     std::uint32_t batch_passes(std::uint32_t b) const;
 };

@@ -88,6 +88,12 @@ struct RenderOptions {
     // Per-pixel adaptive sampling (needs target_error): a pixel whose estimated relMSE,
     // and its neighbours', is at most target_error takes no more samples.
     bool adaptive = false;
+    // A sample range: only sample indices sample_first .. sample_first + sample_count - 1
+    // of the render of spp samples (sample_count 0: the whole render). A range is made of
+    // whole batches; its image carries its exact film state, and `pathcl merge` adds
+    // ranges rendered apart into the whole render's image bit for bit
+    // (render/partial_renders.h).
+    std::uint32_t sample_first = 0, sample_count = 0;
     // Test-only: mutations of the kernel source (host/cl/kernel_source.h), for the tests
     // that prove a render test fails on a deliberately broken kernel.
     std::vector<KernelPatch> kernel_patches;

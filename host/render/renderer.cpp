@@ -13,7 +13,10 @@
 #include "render/device_arrays.h"
 #include "render/device_bands.h"
 #include "render/film.h"
+#include "render/film_channels.h"
 #include "render/kernel_features.h"
+#include "render/partial_renders.h"
+#include "render/render_metadata.h"
 #include "sample/dimensions.h"
 #include "sampling/samplers.h"
 #include "scene/render_space.h"
@@ -75,13 +78,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t)
 {
     return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-std::string format_g(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
 }
 
 void check_options(const RenderOptions& opt)
@@ -376,17 +372,24 @@ struct Renderer::Impl {
         return remaining;
     }
 
-    // Everything a render's image depends on besides the scene: checkpoints carry it.
+    // Everything a render's image depends on besides the scene and which of its samples
+    // are taken: sample ranges of one render carry the same key (render/partial_renders.h).
+    std::string render_key(const RenderRun& run, const RenderOptions& opt, const BatchPlan& plan) const
+    {
+        return "scene " + run.scene_key + "; size " + std::to_string(opt.width) + "x" + std::to_string(opt.height) +
+               "; seed " + std::to_string(run.seed) + "; sampler " + sampler_name(opt.sampler) + "; strategy " +
+               strategy_name(opt.strategy) + "; bounces " + std::to_string(opt.max_bounces) + "; stratified bounces " +
+               std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
+               std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
+               std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
+               std::to_string(opt.adaptive);
+    }
+
+    // And what a checkpoint must match besides: the range and the devices.
     std::string checkpoint_key(const RenderRun& run, const RenderOptions& opt, const BatchPlan& plan) const
     {
-        std::string key =
-            "scene " + run.scene_key + "; size " + std::to_string(opt.width) + "x" + std::to_string(opt.height) +
-            "; seed " + std::to_string(run.seed) + "; sampler " + sampler_name(opt.sampler) + "; strategy " +
-            strategy_name(opt.strategy) + "; bounces " + std::to_string(opt.max_bounces) + "; stratified bounces " +
-            std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
-            std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
-            std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
-            std::to_string(opt.adaptive) + "; devices";
+        std::string key = render_key(run, opt, plan) + "; samples " + std::to_string(plan.first_spp) + " to " +
+                          std::to_string(plan.end_spp) + "; devices";
         for (const auto& dr : devices)
             key += " " + dr->dev.info.name;
         return key;
@@ -461,7 +464,9 @@ struct Renderer::Impl {
         std::string key;
         if (checkpoints || run.resume)
             key = checkpoint_key(run, opt, plan);
-        std::uint32_t first_batch = 0, first_pass = 0;
+        std::uint32_t first_batch = plan.first_batch(), first_pass = 0;
+        if (plan.partial() && run.scene_key.empty())
+            throw Error("internal error: a sample range needs the scene's key (RenderRun::scene_key)");
         if (run.resume) {
             const RenderCheckpoint& cp = *run.resume;
             if (cp.key != key)
@@ -481,13 +486,13 @@ struct Renderer::Impl {
         auto report = [&]() {
             RenderProgress p;
             p.spp = spp_done;
-            p.max_spp = plan.max_spp;
+            p.max_spp = plan.end_spp - plan.first_spp;
             p.batches = acc.batches();
             p.elapsed_seconds = seconds_since(start);
             p.samples_per_second = samples / std::max(p.elapsed_seconds, 1e-9);
             p.error_estimate = estimate;
             double pass_rate = (spp_done - spp_at_start) / std::max(p.elapsed_seconds, 1e-9);
-            double to_go = plan.max_spp - spp_done;
+            double to_go = p.max_spp - spp_done;
             if (opt.target_error > 0.0 && estimate > 0.0) // relMSE falls as 1 / spp
                 to_go = std::min(to_go, std::max(0.0, spp_done * (estimate / opt.target_error - 1.0)));
             const bool awaiting_estimate = opt.target_error > 0.0 && estimate < 0.0;
@@ -618,27 +623,19 @@ struct Renderer::Impl {
         stats.batches = acc.batches();
         stats.stop = reason;
         stats.bad_samples = acc.bad_samples();
-        if (acc.batches() >= 2) {
-            stats.error_estimate = acc.relmse_estimate();
-        } else {
-            stats.error_estimate = acc.per_sample_relmse_estimate();
-            stats.error_is_bound = opt.sampler != SamplerType::Independent;
-        }
+        const ErrorEstimate error = estimate_error(acc, opt.sampler);
+        stats.error_estimate = error.relmse;
+        stats.error_is_bound = error.is_bound;
         result.image = acc.image(options.width, options.height, spp_done);
         if (opt.adaptive)
             result.image.samples = acc.pixel_samples();
-        auto& meta = result.image.metadata;
-        meta["stop"] = stop_reason_name(reason);
-        meta["seed"] = std::to_string(seed);
-        meta["sampler"] = sampler_name(opt.sampler);
-        meta["batch_spp"] = std::to_string(plan.batch_spp);
-        meta["batches"] = std::to_string(acc.batches());
-        if (stats.error_estimate >= 0.0) {
-            meta["relmse_estimate"] = format_g(stats.error_estimate);
-            meta["relmse_estimate_method"] =
-                acc.batches() >= 2
-                    ? "batch means"
-                    : (stats.error_is_bound ? "per-sample variance (upper bound)" : "per-sample variance");
+        describe_render({reason, seed, opt.sampler, plan.batch_spp}, acc, error, result.image);
+        if (plan.partial()) { // what `pathcl merge` needs
+            store_film_state(acc.state(), result.image);
+            auto& meta = result.image.metadata;
+            meta["render_key"] = render_key(run, opt, plan);
+            meta["sample_ranges"] = format_sample_ranges({{plan.first_spp, plan.end_spp - plan.first_spp}});
+            meta["spp_total"] = std::to_string(plan.max_spp);
         }
         return result;
     }

@@ -80,7 +80,8 @@ struct RenderRun {
     // Checkpoints (render/checkpoint.h). With `checkpoint` set, the render drains its
     // passes and hands over its state whenever `checkpoint_due` says so at a pass
     // boundary, and once more when a budget or the caller stopped it early. `resume`
-    // continues such a state. `scene_key` names the scene (its fingerprint) in the key.
+    // continues such a state. `scene_key` names the scene (its fingerprint) in the key,
+    // and in the render key of a sample range's image (RenderOptions::sample_count).
     std::function<bool()> checkpoint_due;
     std::function<void(const RenderCheckpoint&)> checkpoint;
     const RenderCheckpoint* resume = nullptr;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,6 +37,20 @@ protected:
     {
         std::string cmd = "cd '" + dir_.string() + "' && " + env + " '" + std::string(PATHCL_BINARY) + "' " + args +
                           " >stdout.txt 2>stderr.txt";
+        int rc = std::system(cmd.c_str());
+        return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    }
+    // Runs the binary once per element of `args`, all at once (separate processes), each
+    // with its output in stdout-<i>.txt and stderr-<i>.txt; returns how many failed.
+    int run_parallel(const std::vector<std::string>& args) const
+    {
+        std::string cmd = "cd '" + dir_.string() + "' && failed=0";
+        for (std::size_t i = 0; i < args.size(); ++i)
+            cmd += "; ('" + std::string(PATHCL_BINARY) + "' " + args[i] + " >stdout-" + std::to_string(i) +
+                   ".txt 2>stderr-" + std::to_string(i) + ".txt) & p" + std::to_string(i) + "=$!";
+        for (std::size_t i = 0; i < args.size(); ++i)
+            cmd += "; wait $p" + std::to_string(i) + " || failed=$((failed + 1))";
+        cmd += "; exit $failed";
         int rc = std::system(cmd.c_str());
         return rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
     }

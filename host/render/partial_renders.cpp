@@ -1,0 +1,161 @@
+#include "render/partial_renders.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "common/error.h"
+#include "image/image_io.h"
+#include "render/film.h"
+#include "render/film_channels.h"
+#include "render/render_metadata.h"
+
+namespace pathcl {
+namespace {
+
+// A decimal uint32, or nothing.
+std::optional<std::uint32_t> parse_u32(const std::string& s)
+{
+    if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    const unsigned long long v = std::stoull(s);
+    if (v > 0xffffffffull)
+        return std::nullopt;
+    return static_cast<std::uint32_t>(v);
+}
+
+std::optional<SampleRange> parse_range(const std::string& text)
+{
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos)
+        return std::nullopt;
+    auto first = parse_u32(text.substr(0, colon)), count = parse_u32(text.substr(colon + 1));
+    if (!first || !count || *count == 0 || std::uint64_t(*first) + *count > 0xffffffffull)
+        return std::nullopt;
+    return SampleRange{*first, *count};
+}
+
+const std::string& meta(const Image& img, const std::string& key, const std::string& path)
+{
+    auto it = img.metadata.find(key);
+    if (it == img.metadata.end())
+        throw Error(path + ": is not a partial render (--sample-range): it has no pathcl:" + key);
+    return it->second;
+}
+
+std::uint32_t meta_u32(const Image& img, const std::string& key, const std::string& path)
+{
+    auto v = parse_u32(meta(img, key, path));
+    if (!v)
+        throw Error(path + ": pathcl:" + key + " is not a number");
+    return *v;
+}
+
+std::vector<SampleRange> meta_ranges(const Image& img, const std::string& path)
+{
+    const std::string& text = meta(img, "sample_ranges", path);
+    std::vector<SampleRange> out;
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        auto r = parse_range(text.substr(at, comma - at));
+        if (!r)
+            throw Error(path + ": pathcl:sample_ranges '" + text + "' is not a list of FIRST:COUNT");
+        out.push_back(*r);
+        at = comma + 1;
+    }
+    return out;
+}
+
+} // namespace
+
+SampleRange parse_sample_range(const std::string& text)
+{
+    auto r = parse_range(text);
+    if (!r)
+        throw Error("--sample-range: '" + text + "' is not FIRST:COUNT (sample indices, COUNT at least 1)");
+    return *r;
+}
+
+std::string format_sample_ranges(std::vector<SampleRange> ranges)
+{
+    std::sort(ranges.begin(), ranges.end(),
+              [](const SampleRange& a, const SampleRange& b) { return a.first < b.first; });
+    std::vector<SampleRange> joined;
+    for (const SampleRange& r : ranges) {
+        if (!joined.empty() && joined.back().first + joined.back().count == r.first)
+            joined.back().count += r.count;
+        else
+            joined.push_back(r);
+    }
+    std::string text;
+    for (const SampleRange& r : joined)
+        text += (text.empty() ? "" : ",") + std::to_string(r.first) + ":" + std::to_string(r.count);
+    return text;
+}
+
+Image merge_partial_renders(const std::vector<std::string>& paths)
+{
+    if (paths.empty())
+        throw Error("merge: no partial renders given");
+    std::optional<FilmAccumulator> film;
+    std::string key, first_path;
+    std::uint32_t width = 0, height = 0, spp_total = 0, batch_spp = 0, seed = 0, spp = 0;
+    SamplerType sampler = SamplerType::Sobol;
+    struct Owned {
+        SampleRange range;
+        const std::string* path;
+    };
+    std::vector<Owned> owned;
+    for (const std::string& path : paths) {
+        Image img = read_image(path);
+        const std::string& its_key = meta(img, "render_key", path);
+        const std::string& stop = meta(img, "stop", path);
+        if (stop != "spp")
+            throw Error(path + ": stopped early (" + stop + "): finish its range first (--resume its checkpoint)");
+        if (!film) {
+            key = its_key;
+            first_path = path;
+            width = img.width;
+            height = img.height;
+            spp_total = meta_u32(img, "spp_total", path);
+            batch_spp = meta_u32(img, "batch_spp", path);
+            seed = meta_u32(img, "seed", path);
+            auto s = sampler_names().find(meta(img, "sampler", path));
+            if (s == sampler_names().end())
+                throw Error(path + ": pathcl:sampler names no sampler");
+            sampler = s->second;
+            film.emplace(static_cast<std::size_t>(width) * height, batch_spp);
+        } else if (its_key != key || img.width != width || img.height != height) {
+            throw Error(path + ": is a range of another render than " + first_path + " (its key \"" + its_key +
+                        "\", not \"" + key + "\")");
+        }
+        for (const SampleRange& r : meta_ranges(img, path)) {
+            if (std::uint64_t(r.first) + r.count > spp_total)
+                throw Error(path + ": its sample range ends past the render's " + std::to_string(spp_total) +
+                            " samples");
+            for (const Owned& o : owned)
+                if (r.first < o.range.first + o.range.count && o.range.first < r.first + r.count)
+                    throw Error(path + ": its samples " + format_sample_ranges({r}) + " overlap " + *o.path + "'s " +
+                                format_sample_ranges({o.range}) + ": a sample would count twice");
+            owned.push_back({r, &path});
+            spp += r.count;
+        }
+        read_film_part(path, img);
+        film->merge(load_film_state(img, path));
+    }
+    std::vector<SampleRange> ranges;
+    for (const Owned& o : owned)
+        ranges.push_back(o.range);
+    const std::string union_text = format_sample_ranges(ranges);
+    Image out = film->image(width, height, spp);
+    describe_render({StopReason::Spp, seed, sampler, batch_spp}, *film, estimate_error(*film, sampler), out);
+    if (union_text != format_sample_ranges({{0, spp_total}})) { // still partial
+        store_film_state(film->state(), out);
+        out.metadata["render_key"] = key;
+        out.metadata["sample_ranges"] = union_text;
+        out.metadata["spp_total"] = std::to_string(spp_total);
+    }
+    return out;
+}
+
+} // namespace pathcl
