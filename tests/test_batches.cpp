@@ -144,6 +144,16 @@ TEST(FilmAccumulator, PixelsWithoutSamplesInABatchKeepTheirSpread)
     EXPECT_DOUBLE_EQ(acc.pixel_relmse_estimate(0), before);
 }
 
+TEST(FilmAccumulator, HostMemoryIsCheckedBeforeTheFilmIsAllocated)
+{
+    // 1920x1080 on two devices: 300 + 64 + 2 x 68 bytes a pixel.
+    EXPECT_DOUBLE_EQ(host_film_bytes(1920 * 1080, 2), 1920.0 * 1080.0 * 500.0);
+    EXPECT_NO_THROW(check_host_memory(1e9, 2e9));
+    EXPECT_EQ(test::error_of([] { check_host_memory(3.0 * 1073741824.0, 2.0 * 1073741824.0); }),
+              "the film needs 3.00 GiB of host memory, more than this machine's 2.00 GiB");
+    EXPECT_NO_THROW(check_host_memory(1e6)); // this machine has a megabyte
+}
+
 // Sample ranges merge exactly: batches added to one film, or to several merged in another
 // order, give the same state to the last bit, and so the same image.
 TEST(FilmAccumulator, BatchesSplitOverFilmsAndMergedGiveTheSameState)

@@ -1,10 +1,32 @@
 #include "render/film.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <unistd.h>
 
 #include "common/error.h"
 
 namespace pathcl {
+
+double host_film_bytes(std::size_t pixels, std::size_t devices)
+{
+    const double total = 12 * sizeof(ExactSum) + sizeof(double) + sizeof(std::uint32_t);
+    const double batch = 8 * sizeof(double);
+    const double device = sizeof(FilmPixel) + sizeof(pcl_uint);
+    return static_cast<double>(pixels) * (total + batch + device * static_cast<double>(devices));
+}
+
+void check_host_memory(double needed, double available)
+{
+    if (available <= 0.0)
+        available = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+    if (needed > available) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the film needs %.2f GiB of host memory, more than this machine's %.2f GiB",
+                      needed / 1073741824.0, available / 1073741824.0);
+        throw Error(text);
+    }
+}
 
 FilmSum::FilmSum(std::size_t pixels) : sum_(pixels * 4, 0.0), sum_sq_(pixels * 4, 0.0)
 {}

@@ -127,6 +127,7 @@ struct Renderer::Impl {
         setup.kernel_from_cache = true;
         for (int index : opt.devices)
             devices.push_back(open(index));
+        check_host_memory(host_film_bytes(pixels(), devices.size()));
 
         frame = frame_params(compiled, opt, default_plan.batch_spp);
     }
