@@ -1,7 +1,7 @@
 #!/bin/sh
 # tools/slurm_render.sh without Slurm: the array tasks of one frame run as parallel
-# processes (3 tasks, then 7 for 5 batches, so that some have none), and their merge must
-# be the whole render bit for bit.
+# processes (1 task, 3, then 7 for 5 batches, so that some have none), and their merge
+# must be the whole render bit for bit.
 #   sh tests/slurm_script_test.sh PATHCL SOURCE_DIR
 set -eu
 PATHCL=$1
@@ -13,7 +13,7 @@ SCENE=$SRC/scenes/cornell-box-sphere.gltf
 OPTS="--width 24 --height 20 --seed 9"
 # shellcheck disable=SC2086
 "$PATHCL" render "$SCENE" -o "$WORK/whole.exr" --spp 36 --batch-spp 8 --quiet $OPTS
-for tasks in 3 7; do
+for tasks in 1 3 7; do
     pids=""
     task=0
     while [ $task -lt $tasks ]; do
@@ -33,4 +33,4 @@ for tasks in 3 7; do
         exit 1
     fi
 done
-echo "slurm script: 3 and 7 tasks merge into the whole render"
+echo "slurm script: 1, 3 and 7 tasks merge into the whole render"

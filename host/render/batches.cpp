@@ -42,6 +42,7 @@ void plan_range(const RenderOptions& opt, BatchPlan& plan)
                                  "); choose the batch size with {batch_spp}");
     plan.first_spp = opt.sample_first;
     plan.end_spp = static_cast<std::uint32_t>(end);
+    plan.ranged = true;
 }
 
 } // namespace

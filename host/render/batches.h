@@ -30,8 +30,10 @@ struct BatchPlan {
     // The sample indices this render takes: all (0 .. max_spp) or a range of whole batches
     // (RenderOptions::sample_first, sample_count).
     std::uint32_t first_spp = 0, end_spp = 1;
+    // A range was asked for (even one covering every sample): the image carries its film
+    // state for `pathcl merge`.
+    bool ranged = false;
 
-    bool partial() const { return first_spp > 0 || end_spp < max_spp; }
     std::uint32_t first_batch() const { return first_spp / batch_spp; }
     std::uint32_t batch_count() const { return (end_spp + batch_spp - 1) / batch_spp; } // one past the last
     // Passes of batch b (batch_spp, or fewer for the last).

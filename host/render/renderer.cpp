@@ -466,7 +466,7 @@ struct Renderer::Impl {
         if (checkpoints || run.resume)
             key = checkpoint_key(run, opt, plan);
         std::uint32_t first_batch = plan.first_batch(), first_pass = 0;
-        if (plan.partial() && run.scene_key.empty())
+        if (plan.ranged && run.scene_key.empty())
             throw Error("internal error: a sample range needs the scene's key (RenderRun::scene_key)");
         if (run.resume) {
             const RenderCheckpoint& cp = *run.resume;
@@ -631,7 +631,7 @@ struct Renderer::Impl {
         if (opt.adaptive)
             result.image.samples = acc.pixel_samples();
         describe_render({reason, seed, opt.sampler, plan.batch_spp}, acc, error, result.image);
-        if (plan.partial()) { // what `pathcl merge` needs
+        if (plan.ranged) { // what `pathcl merge` needs
             store_film_state(acc.state(), result.image);
             auto& meta = result.image.metadata;
             meta["render_key"] = render_key(run, opt, plan);
