@@ -129,6 +129,16 @@ def gltf(rel, model):
     return write(rel, dump(model))
 
 
+def model_case(rel, name, expect, what, model, raw=None):
+    """Writes `model` as rel (with one number's text replaced by raw = (old, new), for
+    values JSON cannot hold) and lists it as a case."""
+    text = dump(model)
+    if raw:
+        text = replace_number(text, *raw)
+    write(rel, text)
+    case(name, rel, expect, what)
+
+
 def with_light(light, node_extra=None):
     m = base()
     m["extensionsUsed"].append("KHR_lights_punctual")
@@ -412,11 +422,7 @@ def accessor_cases():
     def variant(rel, name, what, edit, raw=None):
         m = base()
         edit(m)
-        text = dump(m)
-        if raw:
-            text = replace_number(text, *raw)
-        write(rel, text)
-        case(name, rel, "error", what)
+        model_case(rel, name, "error", what, m, raw)
 
     def set_(path, value):
         def edit(m):
@@ -515,11 +521,7 @@ def node_cases():
         m = base()
         m["nodes"] = node_list + [{"name": "camera", "camera": 0, "translation": [0.0, 0.0, 3.0]}]
         m["scenes"][0]["nodes"] = roots + [len(node_list)]
-        text = dump(m)
-        if raw:
-            text = replace_number(text, *raw)
-        write(rel, text)
-        case(name, rel, expect, what)
+        model_case(rel, name, expect, what, m, raw)
 
     nodes("node/cycle-self.gltf", "node-cycle-self", "node 0 is its own child", "error",
           [{"mesh": 0, "children": [0]}], [0])
@@ -580,11 +582,7 @@ def camera_cases():
             m["cameras"][0] = cam
         if extras is not None:
             m["nodes"][1]["extras"] = extras
-        text = dump(m)
-        if raw:
-            text = replace_number(text, *raw)
-        write(rel, text)
-        case(name, rel, "error", what)
+        model_case(rel, name, "error", what, m, raw)
 
     camera("camera/yfov-zero.gltf", "camera-yfov-0", "yfov 0", {"yfov": 0.0})
     camera("camera/yfov-negative.gltf", "camera-yfov-negative", "yfov -0.5", {"yfov": -0.5})
@@ -607,11 +605,7 @@ def camera_cases():
 
 def light_cases():
     def light(rel, name, what, lt, raw=None, node_extra=None):
-        text = dump(with_light(lt, node_extra))
-        if raw:
-            text = replace_number(text, *raw)
-        write(rel, text)
-        case(name, rel, "error", what)
+        model_case(rel, name, "error", what, with_light(lt, node_extra), raw)
 
     point = {"type": "point", "color": [1.0, 1.0, 1.0], "intensity": 1.0}
     light("light/intensity-negative.gltf", "light-intensity-negative", "point light intensity -1",
@@ -661,11 +655,7 @@ def material_cases():
         for ext in m["materials"][0].get("extensions", {}):
             if ext not in m["extensionsUsed"]:
                 m["extensionsUsed"].append(ext)
-        text = dump(m)
-        if raw:
-            text = replace_number(text, *raw)
-        write(rel, text)
-        case(name, rel, "error", what)
+        model_case(rel, name, "error", what, m, raw)
 
     def ext(name, values):
         return lambda mat: mat.setdefault("extensions", {}).update({name: values})
