@@ -113,6 +113,14 @@ TEST_F(ToolRun, WhatCannotBeMergedExactlyIsAOneLineError)
     EXPECT_EQ(run("merge early.exr c.exr -o m.exr"), 2);
     EXPECT_NE(text("stderr.txt").find("early.exr: stopped early (interrupted)"), std::string::npos)
         << text("stderr.txt");
+    // A count in the metadata past 64 bits is a malformed file, not an exception.
+    Image huge = early;
+    huge.metadata["stop"] = "spp";
+    huge.metadata["film_batches"] = "99999999999999999999";
+    write_image((dir_ / "huge.exr").string(), huge);
+    EXPECT_EQ(run("merge huge.exr -o m.exr"), 2);
+    EXPECT_NE(text("stderr.txt").find("huge.exr: its film part lacks a valid pathcl:film_batches"), std::string::npos)
+        << text("stderr.txt");
     // The file written back is still a whole partial render: it merges once marked done.
     early.metadata["stop"] = "spp";
     write_image((dir_ / "early.exr").string(), early);

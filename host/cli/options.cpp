@@ -6,6 +6,7 @@
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
+#include "common/text_fields.h"
 
 namespace pathcl::cli {
 namespace {
@@ -56,10 +57,7 @@ std::vector<int> parse_devices(const std::string& text)
             throw Error("--device: no OpenCL device found");
         return out;
     }
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        const std::string item = text.substr(at, comma - at);
+    for (const std::string& item : split_commas(text)) {
         const bool digits = !item.empty() && item.size() <= 6 &&
                             std::all_of(item.begin(), item.end(), [](unsigned char c) { return std::isdigit(c); });
         if (!digits)
@@ -68,7 +66,6 @@ std::vector<int> parse_devices(const std::string& text)
         if (std::find(out.begin(), out.end(), index) != out.end())
             throw Error("--device: device " + item + " is listed twice");
         out.push_back(index);
-        at = comma + 1;
     }
     return out;
 }

@@ -1,11 +1,11 @@
 #include "converge/knobs.h"
 
 #include <algorithm>
-#include <charconv>
 #include <functional>
 #include <map>
 
 #include "common/error.h"
+#include "common/text_fields.h"
 #include "sampling/samplers.h"
 
 namespace pathcl {
@@ -13,11 +13,10 @@ namespace {
 
 std::uint32_t parse_count(const std::string& knob, const std::string& v)
 {
-    std::uint32_t n = 0;
-    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-    if (ec != std::errc() || end != v.data() + v.size() || n > (1u << 16))
+    auto n = parse_whole_number(v, 1u << 16);
+    if (!n)
         throw Error("--vary " + knob + ": '" + v + "' is not a whole number from 0 to 65536");
-    return n;
+    return static_cast<std::uint32_t>(*n);
 }
 
 bool parse_switch(const std::string& knob, const std::string& v)
@@ -89,12 +88,7 @@ Knob parse_knob(const std::string& spec)
             all += (all.empty() ? "" : ", ") + n;
         throw Error("--vary: unknown knob '" + k.name + "' (" + all + ")");
     }
-    std::string rest = spec.substr(eq + 1);
-    for (std::size_t start = 0; start <= rest.size();) {
-        std::size_t comma = rest.find(',', start);
-        if (comma == std::string::npos)
-            comma = rest.size();
-        std::string v = rest.substr(start, comma - start);
+    for (const std::string& v : split_commas(spec.substr(eq + 1))) {
         if (v.empty())
             throw Error("--vary " + k.name + ": an empty value");
         if (std::find(k.values.begin(), k.values.end(), v) != k.values.end())
@@ -102,7 +96,6 @@ Knob parse_knob(const std::string& spec)
         RenderOptions probe;
         it->second(probe, v); // checks the value now, not after the reference render
         k.values.push_back(v);
-        start = comma + 1;
     }
     return k;
 }

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "common/error.h"
+#include "common/text_fields.h"
 
 namespace pathcl {
 namespace {
@@ -32,13 +33,14 @@ std::vector<std::string> channel_names()
     return names;
 }
 
-std::uint64_t metadata_number(const Image& image, const std::string& key, const std::string& path)
+std::uint64_t metadata_number(const Image& image, const std::string& key, const std::string& path,
+                              std::uint64_t max = UINT64_MAX)
 {
     auto it = image.metadata.find(key);
-    if (it == image.metadata.end() || it->second.empty() || it->second.size() > 20 ||
-        it->second.find_first_not_of("0123456789") != std::string::npos)
+    auto v = it == image.metadata.end() ? std::nullopt : parse_whole_number(it->second, max);
+    if (!v)
         throw Error(path + ": its film part lacks a valid pathcl:" + key);
-    return std::stoull(it->second);
+    return *v;
 }
 
 } // namespace
@@ -97,10 +99,7 @@ FilmAccumulator::State load_film_state(const Image& image, const std::string& pa
         s.samples[i] = p[at[k++]];
         s.pixel_batches[i] = p[at[k++]];
     }
-    const std::uint64_t batches = metadata_number(image, "film_batches", path);
-    if (batches > 0xffffffffu)
-        throw Error(path + ": its film part lacks a valid pathcl:film_batches");
-    s.batches = static_cast<std::uint32_t>(batches);
+    s.batches = static_cast<std::uint32_t>(metadata_number(image, "film_batches", path, 0xffffffffu));
     s.bad = metadata_number(image, "film_bad_samples", path);
     return s;
 }

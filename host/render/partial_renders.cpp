@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "common/text_fields.h"
 #include "image/image_io.h"
 #include "render/film.h"
 #include "render/film_channels.h"
@@ -15,12 +16,10 @@ namespace {
 // A decimal uint32, or nothing.
 std::optional<std::uint32_t> parse_u32(const std::string& s)
 {
-    if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos)
+    auto v = parse_whole_number(s, 0xffffffffu);
+    if (!v)
         return std::nullopt;
-    const unsigned long long v = std::stoull(s);
-    if (v > 0xffffffffull)
-        return std::nullopt;
-    return static_cast<std::uint32_t>(v);
+    return static_cast<std::uint32_t>(*v);
 }
 
 std::optional<SampleRange> parse_range(const std::string& text)
@@ -54,14 +53,11 @@ std::vector<SampleRange> meta_ranges(const Image& img, const std::string& path)
 {
     const std::string& text = meta(img, "sample_ranges", path);
     std::vector<SampleRange> out;
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        auto r = parse_range(text.substr(at, comma - at));
+    for (const std::string& item : split_commas(text)) {
+        auto r = parse_range(item);
         if (!r)
             throw Error(path + ": pathcl:sample_ranges '" + text + "' is not a list of FIRST:COUNT");
         out.push_back(*r);
-        at = comma + 1;
     }
     return out;
 }
