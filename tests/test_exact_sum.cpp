@@ -55,14 +55,17 @@ TEST(ExactSum, TheSumDoesNotDependOnTheOrderOfItsAddends)
 
 TEST(ExactSum, ValueIsTheExactSumRoundedOnce)
 {
-    // Pairs whose exact sum fits __float128's 113 bits, so its rounding to double is the
-    // correctly rounded reference; a double sum rounds the same way, and three addends
-    // show the difference from rounding twice.
+    // Three addends whose exact sum fits __float128's 113 bits, so its rounding to double
+    // is the correctly rounded reference, and the sequential double sum (rounded twice)
+    // differs from it now and then. At two scales: sums under 2^64 (held in 128 bits) and
+    // above 2^70 (all three limbs), which value() converts in different ways.
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(1.0, 2.0);
     int differs_from_double_sums = 0;
-    for (int i = 0; i < 20000; ++i) {
-        const double a = std::ldexp(u(rng), 30), b = std::ldexp(u(rng), -20), c = -std::ldexp(u(rng), 29);
+    for (int i = 0; i < 40000; ++i) {
+        const int scale = i % 2 == 0 ? 0 : 50;
+        const double a = std::ldexp(u(rng), 30 + scale), b = std::ldexp(u(rng), -20 + scale),
+                     c = -std::ldexp(u(rng), 29 + scale);
         ExactSum s;
         s.add(a);
         s.add(b);
@@ -72,6 +75,21 @@ TEST(ExactSum, ValueIsTheExactSumRoundedOnce)
         differs_from_double_sums += ((a + b) + c) != reference;
     }
     EXPECT_GT(differs_from_double_sums, 0); // the sequential double sum is not always right
+}
+
+TEST(ExactSum, ATieBrokenOnlyByTheLowestBitRoundsAway)
+{
+    // x (1 + 2^-53) + 2^-64: just above the tie between x and x (1 + 2^-52), so it rounds
+    // up; only the 2^-64 breaks the tie, so a conversion that rounds twice (its lower
+    // half first) lands on the tie and rounds to even, down. Held in 128 bits (x = 2^42)
+    // and in all three limbs (x = 2^90).
+    for (int e : {42, 90}) {
+        ExactSum s;
+        s.add(std::ldexp(1.0, e));
+        s.add(std::ldexp(1.0, e - 53));
+        s.add(std::ldexp(1.0, -64));
+        EXPECT_EQ(s.value(), std::ldexp(1.0, e) + std::ldexp(1.0, e - 52)) << "x = 2^" << e;
+    }
 }
 
 TEST(ExactSum, ValuesOnTheGridComeBackUnchanged)

@@ -1,5 +1,7 @@
 #include "render/exact_sum.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -12,6 +14,7 @@ constexpr std::uint64_t kPoison = std::uint64_t(1) << 63;
 constexpr double kMaxAddend = 19807040628566084398385987584.0; // 2^94
 
 using Limbs = std::uint64_t[3];
+__extension__ typedef unsigned __int128 Uint128; // GCC's and Clang's, for value()'s conversion
 
 void add_limbs(Limbs& a, const Limbs& b)
 {
@@ -50,24 +53,32 @@ void ExactSum::add(double x)
         limb[2] = kPoison;
         return;
     }
-    // x on the grid: an integer count of 2^-64, exact below 2^158 in a double.
-    const double r = std::nearbyint(std::ldexp(x, 64)); // the default mode: to nearest, ties to even
-    if (r == 0.0)
-        return;
-    int e = 0;
-    const double f = std::frexp(std::fabs(r), &e);                          // |r| = f 2^e, f in [0.5, 1)
-    std::uint64_t mantissa = static_cast<std::uint64_t>(std::ldexp(f, 53)); // |r| = mantissa 2^(e - 53)
-    int shift = e - 53;
-    if (shift < 0) { // |r| < 2^53: an integer, so the shifted-out bits are zero
-        mantissa >>= -shift;
+    // x on the grid, an integer count of 2^-64, from the double's own fields: x is
+    // mantissa 2^(exponent - 1075), so x 2^64 is mantissa 2^shift. Integer operations
+    // only (the film adds 12 of these a pixel a batch).
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    const int exponent = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+    if (exponent > 0)
+        mantissa |= std::uint64_t(1) << 52;
+    int shift = std::max(exponent, 1) - 1075 + 64;
+    if (shift < 0) { // below the grid: round to nearest, ties to even
+        const int k = -shift;
+        if (k > 54) // mantissa < 2^53, so x 2^64 < 1/2
+            return;
+        const std::uint64_t q = mantissa >> k, rest = mantissa & ((std::uint64_t(1) << k) - 1);
+        const std::uint64_t half = std::uint64_t(1) << (k - 1);
+        mantissa = q + (rest > half || (rest == half && (q & 1)));
         shift = 0;
     }
+    if (mantissa == 0)
+        return;
     Limbs v = {0, 0, 0};
     const int word = shift / 64, bit = shift % 64;
     v[word] = mantissa << bit;
     if (bit > 0 && word < 2)
         v[word + 1] = mantissa >> (64 - bit);
-    if (r < 0.0)
+    if (bits >> 63)
         negate(v);
     add_limbs(limb, v);
 }
@@ -91,33 +102,27 @@ double ExactSum::value() const
     const bool negative = (m[2] >> 63) != 0;
     if (negative)
         negate(m);
-    int top = 2;
-    while (top >= 0 && m[top] == 0)
-        --top;
-    if (top < 0)
-        return 0.0;
-    // The 64 bits below the leading one, the bits under them folded into the last (a
-    // sticky bit): converting those 64 bits to double then rounds exactly as the whole
-    // number would, as 64 > 53 + 2.
-    const int lead = top * 64 + 63 - __builtin_clzll(m[top]); // bit index of the leading one
-    const int drop = lead - 63;                               // bits below the 64 kept
-    std::uint64_t kept;
-    bool sticky = false;
-    if (drop <= 0) {
-        kept = m[0];
-    } else {
-        const int word = drop / 64, bit = drop % 64;
-        kept = m[word] >> bit;
-        if (bit > 0 && word < 2)
-            kept |= m[word + 1] << (64 - bit);
-        for (int i = 0; i < word; ++i)
-            sticky |= m[i] != 0;
-        if (bit > 0)
-            sticky |= (m[word] & ((std::uint64_t(1) << bit) - 1)) != 0;
+    // Most sums fit 128 bits: the compiler's conversion of a 128-bit integer rounds once,
+    // to nearest (scaling by 2^-64 is exact: the result is at least 2^-64).
+    if (m[2] == 0) {
+        const Uint128 v = (static_cast<Uint128>(m[1]) << 64) | m[0];
+        const double d = static_cast<double>(v) * 0x1p-64;
+        return negative ? -d : d;
     }
+    // Past 128 bits: the 64 bits below the leading one, the bits under them folded into
+    // the last (a sticky bit): converting those 64 bits to double then rounds exactly as
+    // the whole number would, as 64 > 53 + 2.
+    const int drop = 128 - __builtin_clzll(m[2]); // bits below the 64 kept: 65 .. 128
+    const int word = drop / 64, bit = drop % 64;  // word 1 or 2
+    std::uint64_t kept = m[word] >> bit;
+    if (bit > 0 && word < 2)
+        kept |= m[word + 1] << (64 - bit);
+    bool sticky = (m[word] & ((std::uint64_t(1) << bit) - 1)) != 0;
+    for (int i = 0; i < word; ++i)
+        sticky |= m[i] != 0;
     if (sticky)
         kept |= 1;
-    const double v = std::ldexp(static_cast<double>(kept), (drop > 0 ? drop : 0) - 64);
+    const double v = std::ldexp(static_cast<double>(kept), drop - 64);
     return negative ? -v : v;
 }
 

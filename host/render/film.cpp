@@ -165,8 +165,11 @@ double FilmAccumulator::pixel_channel_estimate(std::size_t i, int c) const
     double k = state_.pixel_batches[i];
     double s = state_.batch_mean_sum[i * 3 + c].value(), q = state_.batch_mean_sq[i * 3 + c].value();
     double spread = std::max(0.0, (q - s * s / k) / (k - 1.0)); // variance of one batch mean
-    const Moments m = moments(i, c);
-    return spread * batch_spp_ / m.n / (m.mean * m.mean + kRelMseEpsilon);
+    // The pixel's mean as moments() has it, without the sum of squares this does not need
+    // (it runs after every batch; each exact value costs a conversion).
+    const double n = state_.samples[i];
+    const double mean = n > 0.0 ? state_.sum[i * 3 + c].value() / n : 0.0;
+    return spread * batch_spp_ / n / (mean * mean + kRelMseEpsilon);
 }
 
 double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
