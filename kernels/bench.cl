@@ -29,7 +29,7 @@ __kernel void bench_closest_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
         return;
     Ray r = kd.rays[pixel];
     kd.bad_samples[pixel] =
-        (uint)bvh_trace(kd.nodes, kd.triangles, r.origin.xyz, r.direction.xyz, bench_ray_extent(r), false).triangle;
+        (uint)bvh_closest_hit(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)).triangle;
 }
 
 __kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
@@ -41,7 +41,7 @@ __kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
         return;
     Ray r = kd.rays[pixel];
     kd.bad_samples[pixel] =
-        bvh_trace(kd.nodes, kd.triangles, r.origin.xyz, r.direction.xyz, bench_ray_extent(r), true).triangle >= 0;
+        bvh_visibility(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)) == 0.0f;
 }
 
 /* Replaces each camera ray by a ray leaving its first hit: cosine-distributed about the
@@ -56,7 +56,7 @@ __kernel void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint dif
     if (!frame_pixel(&frame, &xy, &pixel))
         return;
     Ray r = kd.rays[pixel];
-    Hit hit = bvh_trace(kd.nodes, kd.triangles, r.origin.xyz, r.direction.xyz, INFINITY, false);
+    Hit hit = bvh_closest_hit(&kd, r.origin.xyz, r.direction.xyz, INFINITY);
     if (hit.triangle < 0)
         return;
     float3 wo = -r.direction.xyz;

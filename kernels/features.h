@@ -24,7 +24,9 @@
 #define FEATURE_THIN_LENS (1u << 11)         /* the camera has an aperture (depth of field) */
 /* Model options: set by a render option, not by the scene. */
 #define FEATURE_SINGLE_SCATTERING (1u << 12) /* no multiple-scattering compensation (pbrt's, Mitsuba's model) */
-#define FEATURE_ALL ((1u << 13) - 1u)
+/* Scene features added later (their bits follow the model options). */
+#define FEATURE_ALPHA (1u << 13) /* a triangle whose material's alphaMode MASK or BLEND can cut it */
+#define FEATURE_ALL ((1u << 14) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -70,6 +72,9 @@
 #endif
 #if PATHCL_FEATURES & FEATURE_SINGLE_SCATTERING
 #define PATHCL_SINGLE_SCATTERING
+#endif
+#if PATHCL_FEATURES & FEATURE_ALPHA
+#define PATHCL_HAS_ALPHA
 #endif
 
 /* Derived guards. */

@@ -33,10 +33,14 @@ typedef struct {
  * tree fits (a four-wide node pushes at most three children per level). */
 #define BVH_STACK_SIZE 96
 
-/* Triangle positions in BVH leaf order, for intersection only: 48 bytes. */
+/* Triangle positions in BVH leaf order, for intersection only: 48 bytes. v0.w is
+ * TRIANGLE_ALPHA_TESTED when the triangle's material has alphaMode MASK or BLEND and its
+ * alpha can fall short of opaque (the traversal then asks texture/alpha.cl whether a hit
+ * counts), else 0; every other w is 0. */
 typedef struct {
-    pcl_float4 v0, v1, v2; /* xyz world position; w unused */
+    pcl_float4 v0, v1, v2; /* xyz world position */
 } Triangle;
+#define TRIANGLE_ALPHA_TESTED 1.0f
 
 /* What shading needs of a triangle, same order as Triangle: 64 bytes. */
 typedef struct {
@@ -65,10 +69,10 @@ typedef struct {
     pcl_float4 t0, t1, t2;
 } TriangleTangents;
 
-/* Vertex colours (COLOR_0, linear RGB; alpha is not used): 48 bytes. White where the
- * triangle's primitive has no COLOR_0. */
+/* Vertex colours (COLOR_0, linear RGB and alpha): 48 bytes. Opaque white where the
+ * triangle's primitive has no COLOR_0 (alpha 1 where it is VEC3). */
 typedef struct {
-    pcl_float4 c0, c1, c2; /* rgb; a unused */
+    pcl_float4 c0, c1, c2; /* rgba */
 } TriangleColors;
 
 /* Texel storage formats. Texels of every image live in one buffer of 32-bit words,
@@ -110,6 +114,8 @@ typedef struct {
 /* Material flags */
 #define MATERIAL_DOUBLE_SIDED 1 /* glTF doubleSided: opaque surfaces reflect on both sides */
 #define MATERIAL_THIN_WALLED 2  /* transmission without KHR_materials_volume thickness > 0 */
+#define MATERIAL_ALPHA_MASK 4   /* alphaMode MASK: alpha below alpha_cutoff is no surface */
+#define MATERIAL_ALPHA_BLEND 8  /* alphaMode BLEND: alpha is the surface's coverage */
 
 /* No texture (a texture field's value when the material has none). */
 #define TEXTURE_NONE (-1)
@@ -120,7 +126,7 @@ typedef struct {
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
 typedef struct {
-    pcl_float4 base_color;     /* rgb linear baseColorFactor; a unused */
+    pcl_float4 base_color;     /* linear baseColorFactor: rgb, and alpha (read with MATERIAL_ALPHA_*) */
     pcl_float4 emission;       /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
     pcl_float4 specular_color; /* rgb specularColorFactor; w specularFactor */
     pcl_float metallic;
@@ -131,7 +137,8 @@ typedef struct {
     pcl_float normal_scale;               /* normalTexture.scale */
     pcl_int textures[TEXTURE_SLOT_COUNT]; /* TextureView per slot (texture/texture_slots.h) */
     pcl_float smooth_layer_average;       /* 2 int s(mu, ior) mu dmu, see layer_albedo.h */
-    pcl_int pad1, pad2;
+    pcl_float alpha_cutoff;               /* glTF alphaCutoff (MATERIAL_ALPHA_MASK) */
+    pcl_int pad2;
 } Material;
 
 /* Light types */

@@ -31,9 +31,9 @@ using test::white_texture;
 
 TEST(GltfTextures, VertexColorsInEveryAllowedForm)
 {
-    // COLOR_0 as VEC3 float, VEC4 normalized u8 and u16, VEC3 normalized u8 (alpha
-    // ignored); a primitive without COLOR_0 in the same scene is white. Broken variant
-    // seen to fail: u16 colours divided by 255.
+    // COLOR_0 as VEC3 float, VEC4 normalized u8 and u16 (alpha kept), VEC3 normalized
+    // u8 (alpha 1); a primitive without COLOR_0 in the same scene is opaque white.
+    // Broken variant seen to fail: u16 colours divided by 255.
     GltfBuilder b;
     int mat = b.add_material(glm::vec3(1.0f));
     auto add = [&](int color_accessor, float x) {
@@ -63,14 +63,14 @@ TEST(GltfTextures, VertexColorsInEveryAllowedForm)
             if (std::fabs(s.triangles[i].v[0].x + static_cast<float>(s.render_origin.x) - x) < 1e-4f)
                 return s.colors[i][0];
         ADD_FAILURE() << "no triangle at x = " << x;
-        return glm::vec3(-1.0f);
+        return glm::vec4(-1.0f);
     };
-    auto near = [](glm::vec3 a, glm::vec3 e) { return glm::length(a - e) < 1e-6f; };
-    EXPECT_TRUE(near(first_color(0.0f), {0.25f, 0.5f, 1.0f}));
-    EXPECT_TRUE(near(first_color(2.0f), {1.0f, 0.0f, 0.2f}));
-    EXPECT_TRUE(near(first_color(4.0f), {1.0f, 0.0f, 0.2f}));
-    EXPECT_TRUE(near(first_color(6.0f), {0.0f, 1.0f, 0.4f}));
-    EXPECT_TRUE(near(first_color(8.0f), {1.0f, 1.0f, 1.0f}));
+    auto near = [](glm::vec4 a, glm::vec4 e) { return glm::length(a - e) < 1e-6f; };
+    EXPECT_TRUE(near(first_color(0.0f), {0.25f, 0.5f, 1.0f, 1.0f}));
+    EXPECT_TRUE(near(first_color(2.0f), {1.0f, 0.0f, 0.2f, 7.0f / 255.0f}));
+    EXPECT_TRUE(near(first_color(4.0f), {1.0f, 0.0f, 0.2f, 1.0f / 65535.0f}));
+    EXPECT_TRUE(near(first_color(6.0f), {0.0f, 1.0f, 0.4f, 1.0f}));
+    EXPECT_TRUE(near(first_color(8.0f), {1.0f, 1.0f, 1.0f, 1.0f}));
 }
 
 // ---------------------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "render/compile_scene.h"
+#include "scene/alpha_cutouts.h"
 
 namespace pathcl {
 
@@ -27,9 +28,13 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
 
     a.triangles.resize(n);
     a.shading.resize(n);
+    std::vector<bool> alpha_tested;
+    if (out.features.has(FEATURE_ALPHA))
+        alpha_tested = alpha_tested_triangles(scene);
     for (std::size_t i = 0; i < n; ++i) {
         const SceneTriangle& t = scene.triangles[order[i]];
-        a.triangles[i] = Triangle{to_float4(t.v[0]), to_float4(t.v[1]), to_float4(t.v[2])};
+        float alpha_flag = !alpha_tested.empty() && alpha_tested[order[i]] ? TRIANGLE_ALPHA_TESTED : 0.0f;
+        a.triangles[i] = Triangle{to_float4(t.v[0], alpha_flag), to_float4(t.v[1]), to_float4(t.v[2])};
         // The emitter index is set by compile_lights.
         a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
     }
@@ -49,7 +54,8 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         a.colors.resize(n, TriangleColors{white, white, white});
         for (std::size_t i = 0; i < n && !scene.colors.empty(); ++i) {
             const TriangleColor& c = scene.colors[order[i]];
-            a.colors[i] = {to_float4(c[0]), to_float4(c[1]), to_float4(c[2])};
+            a.colors[i] = {
+                {c[0].x, c[0].y, c[0].z, c[0].w}, {c[1].x, c[1].y, c[1].z, c[1].w}, {c[2].x, c[2].y, c[2].z, c[2].w}};
         }
     }
     return order;

@@ -10,14 +10,17 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
 {
     for (const SceneMaterial& m : scene.materials) {
         Material dm{};
-        dm.base_color = to_float4(m.base_color);
+        dm.base_color = to_float4(m.base_color, m.alpha);
         dm.emission = to_float4(m.emission);
         dm.specular_color = to_float4(m.specular_color, m.specular);
         dm.metallic = m.metallic;
         dm.roughness = m.roughness;
         dm.transmission = m.transmission;
         dm.ior = m.ior;
-        dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u);
+        dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u) |
+                   (m.alpha_mode == AlphaMode::Mask ? MATERIAL_ALPHA_MASK : 0u) |
+                   (m.alpha_mode == AlphaMode::Blend ? MATERIAL_ALPHA_BLEND : 0u);
+        dm.alpha_cutoff = m.alpha_cutoff;
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));

@@ -1,5 +1,9 @@
 #include "render/kernel_features.h"
 
+#include <algorithm>
+
+#include "scene/alpha_cutouts.h"
+
 namespace pathcl {
 
 std::string KernelFeatures::define() const
@@ -24,6 +28,8 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
     }
     set(FEATURE_VERTEX_COLORS, !scene.colors.empty());
+    std::vector<bool> alpha_tested = alpha_tested_triangles(scene);
+    set(FEATURE_ALPHA, std::find(alpha_tested.begin(), alpha_tested.end(), true) != alpha_tested.end());
     for (const SceneLight& l : scene.lights) {
         set(FEATURE_POINT_LIGHTS, l.type == SceneLight::Type::Point);
         set(FEATURE_SPOT_LIGHTS, l.type == SceneLight::Type::Spot || l.type == SceneLight::Type::RectSpot);
@@ -48,13 +54,13 @@ std::string program_build_options(const KernelFeatures& features, const RenderOp
 
 std::vector<std::string> feature_names(std::uint32_t mask)
 {
-    static const char* const names[] = {"area-lights",      "point-lights", "spot-lights",   "directional-lights",
-                                        "sphere-lights",    "environment",  "glossy",        "transmission",
-                                        "textures",         "normal-maps",  "vertex-colors", "thin-lens",
-                                        "single-scattering"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 13 && FEATURE_ALL == (1u << 13) - 1u);
+    static const char* const names[] = {"area-lights",       "point-lights", "spot-lights",   "directional-lights",
+                                        "sphere-lights",     "environment",  "glossy",        "transmission",
+                                        "textures",          "normal-maps",  "vertex-colors", "thin-lens",
+                                        "single-scattering", "alpha"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 14 && FEATURE_ALL == (1u << 14) - 1u);
     std::vector<std::string> out;
-    for (std::uint32_t b = 0; b < 13; ++b)
+    for (std::uint32_t b = 0; b < 14; ++b)
         if (mask & (1u << b))
             out.push_back(names[b]);
     return out;

@@ -1,4 +1,4 @@
-// import_materials: the core material and its extensions (emissive strength, specular,
+// import_materials: the core material (alpha included) and its extensions (emissive strength, specular,
 // transmission, ior, volume), the texture of each slot, then the range check.
 #include "scene/gltf_materials.h"
 
@@ -21,7 +21,7 @@ void check_material(const SceneMaterial& m, const std::string& where)
     auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
     auto fail = [&](const char* what) { throw Error(where + ": " + what); };
     for (int i = 0; i < 3; ++i) {
-        if (!in01(m.base_color[i]))
+        if (!in01(m.base_color[i]) || !in01(m.alpha))
             fail("baseColorFactor must lie in [0, 1]");
         if (!(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
             fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
@@ -38,6 +38,8 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
     if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
         fail("KHR_materials_ior ior must be finite and >= 1");
+    if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
+        fail("alphaCutoff must be finite and >= 0");
 }
 
 // The KHR_texture_transform object of a textureInfo's extensions, or null.
@@ -81,6 +83,15 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     const auto& pbr = m.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() >= 3)
         out.base_color = glm::vec3(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
+    if (pbr.baseColorFactor.size() == 4)
+        out.alpha = static_cast<float>(pbr.baseColorFactor[3]);
+    if (m.alphaMode == "MASK")
+        out.alpha_mode = AlphaMode::Mask;
+    else if (m.alphaMode == "BLEND")
+        out.alpha_mode = AlphaMode::Blend;
+    else if (m.alphaMode != "OPAQUE")
+        throw Error(source + ": " + where + ": alphaMode must be OPAQUE, MASK or BLEND, not \"" + m.alphaMode + "\"");
+    out.alpha_cutoff = static_cast<float>(m.alphaCutoff);
     out.metallic = static_cast<float>(pbr.metallicFactor);
     out.roughness = static_cast<float>(pbr.roughnessFactor);
     double strength = 1.0;
@@ -135,7 +146,7 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
                                             const std::string& source)
 {
     std::vector<SceneMaterial> materials;
-    std::size_t attenuated = 0, alpha = 0;
+    std::size_t attenuated = 0;
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
         materials.push_back(import_material(model.materials[i], textures, source, where));
@@ -144,12 +155,7 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
         if (volume != model.materials[i].extensions.end() && volume->second.IsObject() &&
             (volume->second.Has("attenuationDistance") || volume->second.Has("attenuationColor")))
             ++attenuated;
-        if (model.materials[i].alphaMode == "MASK" || model.materials[i].alphaMode == "BLEND")
-            ++alpha;
     }
-    if (alpha > 0)
-        warn(source + ": renders " + std::to_string(alpha) +
-             " material(s) of alphaMode MASK or BLEND as opaque (alpha is not read)");
     if (attenuated > 0)
         warn(source + ": ignores the KHR_materials_volume attenuation of " + std::to_string(attenuated) +
              " material(s): their volumes render clear");

@@ -51,7 +51,7 @@ PrimitiveImporter::PrimitiveImporter(const tinygltf::Model& model, const std::st
 struct PrimitiveImporter::VertexAttributes {
     std::vector<std::vector<glm::vec2>> texcoords; // [set][vertex], for the used sets it has
     std::vector<glm::dvec4> tangents;              // object space, per corner of `tris`
-    std::vector<glm::vec3> colors;                 // per vertex
+    std::vector<glm::vec4> colors;                 // per vertex, rgba
 };
 
 void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, const glm::dmat4& world,
@@ -240,11 +240,11 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(co
         r.require_float_or_normalized();
         attr.colors.resize(r.count());
         for (std::size_t i = 0; i < r.count(); ++i) {
-            glm::dvec3 c(r.get(i, 0), r.get(i, 1), r.get(i, 2)); // alpha is not used
-            for (int k = 0; k < 3; ++k)
+            glm::dvec4 c(r.get(i, 0), r.get(i, 1), r.get(i, 2), r.components() == 4 ? r.get(i, 3) : 1.0);
+            for (int k = 0; k < 4; ++k)
                 if (!(c[k] >= 0.0 && c[k] <= 1.0))
                     r.fail("vertex " + std::to_string(i) + " has a colour component outside [0, 1]");
-            attr.colors[i] = glm::vec3(c);
+            attr.colors[i] = glm::vec4(c);
         }
     }
     if (mat.textures[TEXTURE_SLOT_NORMAL].present())

@@ -175,6 +175,13 @@ private:
             fail(at + "." + key, "is " + obj[key].dump() + ", not a finite number");
     }
 
+    // A string when present.
+    void string(const Json& obj, const char* key, const std::string& at) const
+    {
+        if (obj.contains(key) && !obj[key].is_string())
+            fail(at + "." + key, "is " + obj[key].dump() + ", not a string");
+    }
+
     // An array of finite numbers when present; of exactly `length` of them unless length is 0.
     void numbers(const Json& obj, const char* key, const std::string& at, std::size_t length) const
     {
@@ -290,6 +297,7 @@ private:
         texture_info(m, "emissiveTexture", at);
         numbers(m, "emissiveFactor", at, 3);
         number(m, "alphaCutoff", at);
+        string(m, "alphaMode", at);
         // The material extensions name their textures "...Texture"; each is a textureInfo.
         if (const Json* ext = member_object(m, "extensions", at + ".extensions")) {
             for (const auto& [name, e] : ext->items()) {

@@ -34,6 +34,6 @@ struct PendingGeometry {
 };
 
 // The colour of a triangle whose primitive has no COLOR_0 while another one has.
-inline const TriangleColor kWhiteTriangleColor{glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
+inline const TriangleColor kWhiteTriangleColor{glm::vec4(1.0f), glm::vec4(1.0f), glm::vec4(1.0f)};
 
 } // namespace pathcl

@@ -44,9 +44,16 @@ struct SceneTexture {
     bool operator==(const SceneTexture&) const = default;
 };
 
+// glTF alphaMode: OPAQUE ignores alpha; MASK cuts where alpha < alpha_cutoff; BLEND
+// makes alpha the surface's coverage (kernels/texture/alpha.cl).
+enum class AlphaMode { Opaque, Mask, Blend };
+
 struct SceneMaterial {
     std::string name;
     glm::vec3 base_color{1.0f};
+    float alpha = 1.0f; // baseColorFactor's alpha
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;
     float metallic = 1.0f; // glTF defaults
     float roughness = 1.0f;
     glm::vec3 emission{0.0f}; // radiance, W m^-2 sr^-1
@@ -124,7 +131,7 @@ struct SceneCamera {
 // Per-vertex attributes of one triangle (vertex k as in SceneTriangle::v[k]).
 using TriangleUv = std::array<glm::vec2, 3>;
 using TriangleTangent = std::array<glm::vec4, 3>; // xyz unit world tangent, w handedness (+-1)
-using TriangleColor = std::array<glm::vec3, 3>;   // COLOR_0 rgb
+using TriangleColor = std::array<glm::vec4, 3>;   // COLOR_0 rgba (alpha 1 for VEC3)
 
 struct Scene {
     std::vector<SceneTriangle> triangles;

@@ -60,6 +60,11 @@ std::uint64_t scene_fingerprint(const Scene& scene)
         f.add(m.ior);
         f.add(static_cast<int>(m.thin_walled));
         f.add(m.normal_scale);
+        if (m.alpha_mode != AlphaMode::Opaque) { // an opaque material's alpha changes nothing
+            f.add(static_cast<int>(m.alpha_mode));
+            f.add(m.alpha);
+            f.add(m.alpha_cutoff);
+        }
         for (const SceneTexture& t : m.textures) {
             f.add(t.image);
             f.add(t.texcoord);
@@ -87,7 +92,7 @@ std::uint64_t scene_fingerprint(const Scene& scene)
         for (const glm::vec4& v : t)
             f.add(v);
     for (const TriangleColor& c : scene.colors)
-        for (const glm::vec3& v : c)
+        for (const glm::vec4& v : c)
             f.add(v);
     f.add(scene.lights.size());
     for (const SceneLight& l : scene.lights) {

@@ -1,9 +1,12 @@
-/* Closest-hit and any-hit traversal of the four-wide BVH: one float4 slab test for the
- * four children of a node, children entered nearest first.
+/* Closest-hit and any-hit (visibility) traversal of the four-wide BVH: one float4 slab
+ * test for the four children of a node, children entered nearest first.
  *
  * Floating-point contraction is off here as in triangle_intersect.cl: the box test's
  * rounding allowance is derived for separately rounded operations. */
 #include "bvh/triangle_intersect.cl"
+#include "features.h"
+#include "kernel_data.cl"
+#include "texture/alpha.cl"
 #include "types.h"
 #include "util/math.cl"
 
@@ -31,14 +34,18 @@ static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, 
     return select((float4)(INFINITY), tnear, islessequal(tnear, tfar));
 }
 
-/* Closest hit along origin + t dir, t in (0, t_max). Set any_hit to stop at the first hit
- * (shadow rays; its own loop, in no order). For the closest hit, children are visited
- * nearest entry first; the others wait on the stack with their entry distance and are
- * dropped once a closer hit is known. */
-static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triangle* triangles, float3 origin,
-                            float3 dir, float t_max, bool any_hit)
+/* Closest hit along origin + dir, t in (0, t_max). Children are visited nearest entry
+ * first; the others wait on the stack with their entry distance and are dropped once a
+ * closer hit is known. A hit on an alpha-tested triangle counts only if its coverage
+ * coin keeps it (texture/alpha.cl). */
+static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 dir, float t_max)
 {
+    __global const BvhNode* nodes = kd->nodes;
+    __global const Triangle* triangles = kd->triangles;
     RayTraversal r = ray_traversal_setup(origin, dir);
+#ifdef PATHCL_HAS_ALPHA
+    uint alpha_seed = alpha_ray_seed(origin, dir);
+#endif
     Hit hit;
     hit.t = t_max;
     hit.b1 = 0.0f;
@@ -49,43 +56,15 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
     float stack_entry[BVH_STACK_SIZE];
     int sp = 0;
     int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
-    if (any_hit) {
-        /* Any hit ends the search: no order among the children, no entry distances. */
-        for (;;) {
-            if (cur.y > 0) {
-                for (int i = cur.x; i < cur.x + cur.y; ++i) {
-                    float t, b1, b2;
-                    if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
-                        hit.t = t;
-                        hit.b1 = b1;
-                        hit.b2 = b2;
-                        hit.triangle = i;
-                        return hit;
-                    }
-                }
-            } else {
-                BvhNode node = nodes[cur.x];
-                /* An empty slot's inverted box passes the slab test: its index (-1) tells. */
-                int4 enter = isnotequal(ray_box_entry4(&r, &node, hit.t), (float4)(INFINITY)) & (node.index >= 0);
-                if (enter.x)
-                    stack[sp++] = (int2)(node.index.x, node.count.x);
-                if (enter.y)
-                    stack[sp++] = (int2)(node.index.y, node.count.y);
-                if (enter.z)
-                    stack[sp++] = (int2)(node.index.z, node.count.z);
-                if (enter.w)
-                    stack[sp++] = (int2)(node.index.w, node.count.w);
-            }
-            if (sp == 0)
-                return hit;
-            cur = stack[--sp];
-        }
-    }
     for (;;) {
         if (cur.y > 0) {
             for (int i = cur.x; i < cur.x + cur.y; ++i) {
                 float t, b1, b2;
                 if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
+#ifdef PATHCL_HAS_ALPHA
+                    if (triangles[i].v0.w != 0.0f && !alpha_keeps_hit(kd, alpha_seed, i, b1, b2))
+                        continue;
+#endif
                     hit.t = t;
                     hit.b1 = b1;
                     hit.b2 = b2;
@@ -123,6 +102,53 @@ static inline Hit bvh_trace(__global const BvhNode* nodes, __global const Triang
             --sp;
         } while (stack_entry[sp] > hit.t * (1.0f + 2.0f * FLOAT_GAMMA(3)));
         cur = stack[sp];
+    }
+}
+
+/* The fraction of light that passes along origin + dir, t in (0, t_max) (shadow rays):
+ * 0 at the first opaque hit, which ends the search (children in no order, no entry
+ * distances); 1 when nothing is hit. An alpha-tested triangle passes 1 - its coverage
+ * (each triangle sits in one leaf, so each is met once) and the search goes on. */
+static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 dir, float t_max)
+{
+    __global const BvhNode* nodes = kd->nodes;
+    __global const Triangle* triangles = kd->triangles;
+    RayTraversal r = ray_traversal_setup(origin, dir);
+    float visibility = 1.0f;
+    int2 stack[BVH_STACK_SIZE];
+    int sp = 0;
+    int2 cur = (int2)(0, 0);
+    for (;;) {
+        if (cur.y > 0) {
+            for (int i = cur.x; i < cur.x + cur.y; ++i) {
+                float t, b1, b2;
+                if (ray_triangle(&r, &triangles[i], t_max, &t, &b1, &b2)) {
+#ifdef PATHCL_HAS_ALPHA
+                    if (triangles[i].v0.w != 0.0f) {
+                        visibility *= 1.0f - surface_coverage(kd, i, b1, b2);
+                        if (visibility > 0.0f)
+                            continue;
+                    }
+#endif
+                    return 0.0f;
+                }
+            }
+        } else {
+            BvhNode node = nodes[cur.x];
+            /* An empty slot's inverted box passes the slab test: its index (-1) tells. */
+            int4 enter = isnotequal(ray_box_entry4(&r, &node, t_max), (float4)(INFINITY)) & (node.index >= 0);
+            if (enter.x)
+                stack[sp++] = (int2)(node.index.x, node.count.x);
+            if (enter.y)
+                stack[sp++] = (int2)(node.index.y, node.count.y);
+            if (enter.z)
+                stack[sp++] = (int2)(node.index.z, node.count.z);
+            if (enter.w)
+                stack[sp++] = (int2)(node.index.w, node.count.w);
+        }
+        if (sp == 0)
+            return visibility;
+        cur = stack[--sp];
     }
 }
 

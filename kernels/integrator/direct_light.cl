@@ -48,12 +48,16 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
         shadow_dir = to - from;
         shadow_t_max = SHADOW_RAY_EXTENT;
     }
-    bool blocked = shadow_ray_blocked(kd, frame, from, shadow_dir, shadow_t_max);
+    float visibility = shadow_ray_visibility(kd, frame, from, shadow_dir, shadow_t_max);
+    if (!(visibility > 0.0f))
+        return;
+#ifdef PATHCL_HAS_ALPHA
+    ls.radiance *= visibility; /* the light left behind alpha-blended surfaces */
+#endif
     /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
     float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
-    if (!blocked)
-        ps->radiance +=
-            ps->beta * e.f_cos * ls.radiance * light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
+    ps->radiance +=
+        ps->beta * e.f_cos * ls.radiance * light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
 }
 
 #endif /* PATHCL_HAS_LIGHTS */

@@ -31,7 +31,7 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 
     PathState ps = path_state_start(kd.rays[pixel]);
     for (uint depth = 0;; ++depth) {
-        Hit hit = bvh_trace(kd.nodes, kd.triangles, ps.origin, ps.dir, INFINITY, false);
+        Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
         if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
             break;

@@ -1,10 +1,13 @@
 /* Area lights: emissive triangles, emitting from the front face only, sampled uniformly
  * by area and converted to a solid-angle pdf. A textured emitter's radiance is its
- * emissive texel at the sampled point, as a ray hitting that point would see it. */
+ * emissive texel at the sampled point, as a ray hitting that point would see it, times
+ * the triangle's alpha coverage there when alpha can cut it (a ray hits the point with
+ * that probability). */
 #include "features.h"
 #include "geom/surface_point.cl"
 #include "kernel_data.cl"
 #include "light/light_sample_record.cl"
+#include "texture/alpha.cl"
 #include "texture/lookup.cl"
 
 #ifdef PATHCL_HAS_AREA_LIGHTS
@@ -41,6 +44,11 @@ static inline void sample_triangle_light(const KernelData* kd, const Light* ligh
     /* The emissive texture at the sampled point, as a ray hitting it would see it. */
     if (light->data.triangle.texture != TEXTURE_NONE && ls->pdf > 0.0f)
         ls->radiance *= texture_at(kd, light->data.triangle.texture, light->data.triangle.triangle, b1, b2).xyz;
+#endif
+#ifdef PATHCL_HAS_ALPHA
+    int tri = light->data.triangle.triangle;
+    if (ls->pdf > 0.0f && kd->triangles[tri].v0.w != 0.0f)
+        ls->radiance *= surface_coverage(kd, tri, b1, b2);
 #endif
 }
 

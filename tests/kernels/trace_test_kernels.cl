@@ -7,12 +7,23 @@
 #include "light/light_sample.cl"
 #include "sample/sampler.cl"
 
+/* The traversal reads the scene through KernelData; these kernels bind only the BVH and
+ * the triangles (programs without PATHCL_HAS_ALPHA read nothing else). */
+static inline KernelData geometry_only(__global const BvhNode* nodes, __global const Triangle* triangles)
+{
+    KernelData kd;
+    kd.nodes = nodes;
+    kd.triangles = triangles;
+    return kd;
+}
+
 __kernel void test_trace_closest(__global const float4* origins, __global const float4* dirs,
                                  __global const BvhNode* nodes, __global const Triangle* triangles,
                                  __global float4* out)
 {
     uint i = get_global_id(0);
-    Hit h = bvh_trace(nodes, triangles, origins[i].xyz, dirs[i].xyz, INFINITY, false);
+    KernelData kd = geometry_only(nodes, triangles);
+    Hit h = bvh_closest_hit(&kd, origins[i].xyz, dirs[i].xyz, INFINITY);
     out[i] = (float4)(h.t, h.b1, h.b2, as_float(h.triangle));
 }
 
@@ -41,7 +52,8 @@ __kernel void test_any_hit(__global const float4* origins, __global const float4
                            __global const Triangle* triangles, float t_max, __global int* out)
 {
     uint i = get_global_id(0);
-    out[i] = bvh_trace(nodes, triangles, origins[i].xyz, dirs[i].xyz, t_max, true).triangle >= 0;
+    KernelData kd = geometry_only(nodes, triangles);
+    out[i] = bvh_visibility(&kd, origins[i].xyz, dirs[i].xyz, t_max) == 0.0f;
 }
 
 /* Spawns one ray per work-item from a random point on a random triangle (through the
@@ -64,7 +76,8 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
     float r = sqrt(fmax(0.0f, 1.0f - z * z));
     float3 d = (float3)(r * cos(2.0f * PI_F * w.y), r * sin(2.0f * PI_F * w.y), z);
     float3 o = offset_ray_origin(p, err, n, d);
-    hit_triangle[i] = bvh_trace(nodes, triangles, o, d, INFINITY, false).triangle;
+    KernelData kd = geometry_only(nodes, triangles);
+    hit_triangle[i] = bvh_closest_hit(&kd, o, d, INFINITY).triangle;
     source_triangle[i] = (int)t;
 }
 
