@@ -28,8 +28,7 @@ __kernel void bench_closest_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
     if (!frame_pixel(&frame, &xy, &pixel))
         return;
     Ray r = kd.rays[pixel];
-    kd.bad_samples[pixel] =
-        (uint)bvh_closest_hit(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)).triangle;
+    kd.bad_samples[pixel] = (uint)bvh_closest_hit(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)).triangle;
 }
 
 __kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
@@ -40,8 +39,7 @@ __kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
     if (!frame_pixel(&frame, &xy, &pixel))
         return;
     Ray r = kd.rays[pixel];
-    kd.bad_samples[pixel] =
-        bvh_visibility(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)) == 0.0f;
+    kd.bad_samples[pixel] = bvh_visibility(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)) == 0.0f;
 }
 
 /* Replaces each camera ray by a ray leaving its first hit: cosine-distributed about the

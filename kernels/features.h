@@ -25,8 +25,9 @@
 /* Model options: set by a render option, not by the scene. */
 #define FEATURE_SINGLE_SCATTERING (1u << 12) /* no multiple-scattering compensation (pbrt's, Mitsuba's model) */
 /* Scene features added later (their bits follow the model options). */
-#define FEATURE_ALPHA (1u << 13) /* a triangle whose material's alphaMode MASK or BLEND can cut it */
-#define FEATURE_ALL ((1u << 14) - 1u)
+#define FEATURE_ALPHA (1u << 13)             /* a triangle whose material's alphaMode MASK or BLEND can cut it */
+#define FEATURE_VOLUME_ABSORPTION (1u << 14) /* a solid transmissive material with KHR_materials_volume attenuation */
+#define FEATURE_ALL ((1u << 15) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -75,6 +76,9 @@
 #endif
 #if PATHCL_FEATURES & FEATURE_ALPHA
 #define PATHCL_HAS_ALPHA
+#endif
+#if PATHCL_FEATURES & FEATURE_VOLUME_ABSORPTION
+#define PATHCL_HAS_VOLUME_ABSORPTION
 #endif
 
 /* Derived guards. */

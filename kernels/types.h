@@ -121,7 +121,7 @@ typedef struct {
 #define TEXTURE_NONE (-1)
 
 /* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
- * _volume, as the kernels read it (see kernels/closure/bsdf.cl for the model): 112 bytes.
+ * _volume, as the kernels read it (see kernels/closure/bsdf.cl for the model): 128 bytes.
  * Each texture slot indexes the TextureView array (TEXTURE_NONE when absent); a texture
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
@@ -129,6 +129,8 @@ typedef struct {
     pcl_float4 base_color;     /* linear baseColorFactor: rgb, and alpha (read with MATERIAL_ALPHA_*) */
     pcl_float4 emission;       /* rgb radiance (emissiveFactor x strength), W m^-2 sr^-1 */
     pcl_float4 specular_color; /* rgb specularColorFactor; w specularFactor */
+    pcl_float4 absorption;     /* rgb Beer-Lambert coefficient inside a solid, per unit length
+                                  (-ln attenuationColor / attenuationDistance); w unused */
     pcl_float metallic;
     pcl_float roughness;                  /* perceptual; GGX alpha = roughness^2 */
     pcl_float transmission;               /* transmissionFactor */

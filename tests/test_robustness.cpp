@@ -153,18 +153,6 @@ CentreMean centre_mean(const RenderResult& r, std::uint32_t spp)
     return {sum / n, std::sqrt(var) / n};
 }
 
-// A closed box mesh (12 triangles, counter-clockwise seen from outside) with the given
-// half extents, centred at the origin.
-int add_box_mesh(test::GltfBuilder& b, glm::vec3 h, int material)
-{
-    std::vector<glm::vec3> p;
-    for (int i = 0; i < 8; ++i)
-        p.emplace_back((i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z);
-    std::vector<std::uint32_t> idx = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                                      2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-    return b.add_mesh(b.add_positions(p), b.add_indices(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), material);
-}
-
 TEST(Robustness, GlassSphereAndSlabInAWhiteFurnaceAreInvisible)
 {
     // Solid glass (white, ior 1.5) under a constant environment of radiance 1: light
@@ -186,7 +174,7 @@ TEST(Robustness, GlassSphereAndSlabInAWhiteFurnaceAreInvisible)
             glass.thickness = 1.0;
             int mat = b.add_pbr_material(glass);
             if (slab) // a 2 x 0.4 x 2 slab turned 30 degrees about x, seen edge-on-ish
-                b.add_root(b.add_node(add_box_mesh(b, {1.0f, 0.2f, 1.0f}, mat), {}, {}, {0.2588, 0.0, 0.0, 0.9659}));
+                b.add_root(b.add_node(b.add_box_mesh({1.0f, 0.2f, 1.0f}, mat), {}, {}, {0.2588, 0.0, 0.0, 0.9659}));
             else
                 b.add_root(b.add_node(b.add_sphere_mesh(1.0, 24, 48, mat, /*inward=*/false)));
             b.add_camera_node(b.add_perspective_camera(slab ? 0.15 : 0.3), {0.0, 0.0, 5.0});

@@ -13,6 +13,7 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.base_color = to_float4(m.base_color, m.alpha);
         dm.emission = to_float4(m.emission);
         dm.specular_color = to_float4(m.specular_color, m.specular);
+        dm.absorption = to_float4(m.absorbs() ? m.absorption : glm::vec3(0.0f));
         dm.metallic = m.metallic;
         dm.roughness = m.roughness;
         dm.transmission = m.transmission;

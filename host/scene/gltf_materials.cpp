@@ -1,8 +1,11 @@
-// import_materials: the core material (alpha included) and its extensions (emissive strength, specular,
+// import_materials: the core material (alpha included) and its extensions (volume
+// attenuation included) (emissive strength, specular,
 // transmission, ior, volume), the texture of each slot, then the range check.
 #include "scene/gltf_materials.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <tiny_gltf.h>
 
@@ -115,6 +118,19 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
         if (!(thickness >= 0.0) || !std::isfinite(thickness))
             throw Error(source + ": " + where + ": KHR_materials_volume thicknessFactor must be finite and >= 0");
         out.thin_walled = thickness == 0.0;
+        // Beer-Lambert inside the solid: attenuationColor is what is left after
+        // attenuationDistance (default infinity: clear).
+        double distance = number_or(e->second, "attenuationDistance", std::numeric_limits<double>::infinity());
+        if (!(distance > 0.0))
+            throw Error(source + ": " + where + ": KHR_materials_volume attenuationDistance must be > 0");
+        glm::dvec3 color(vec3_or(e->second, "attenuationColor", glm::vec3(1.0f)));
+        for (int c = 0; c < 3; ++c) {
+            if (!(color[c] >= 0.0 && color[c] <= 1.0))
+                throw Error(source + ": " + where + ": KHR_materials_volume attenuationColor must lie in [0, 1]");
+            double sigma = std::isinf(distance) ? 0.0 : color[c] == 0.0 ? HUGE_VAL : -std::log(color[c]) / distance;
+            out.absorption[c] =
+                static_cast<float>(std::min(sigma, static_cast<double>(std::numeric_limits<float>::max())));
+        }
     }
 
     // The texture of every slot (occlusionTexture is not read: a path tracer computes
@@ -146,19 +162,11 @@ std::vector<SceneMaterial> import_materials(const tinygltf::Model& model, Textur
                                             const std::string& source)
 {
     std::vector<SceneMaterial> materials;
-    std::size_t attenuated = 0;
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         std::string where = "material " + std::to_string(i) + " (" + model.materials[i].name + ")";
         materials.push_back(import_material(model.materials[i], textures, source, where));
         check_material(materials.back(), source + ": " + where);
-        auto volume = model.materials[i].extensions.find("KHR_materials_volume");
-        if (volume != model.materials[i].extensions.end() && volume->second.IsObject() &&
-            (volume->second.Has("attenuationDistance") || volume->second.Has("attenuationColor")))
-            ++attenuated;
     }
-    if (attenuated > 0)
-        warn(source + ": ignores the KHR_materials_volume attenuation of " + std::to_string(attenuated) +
-             " material(s): their volumes render clear");
     return materials;
 }
 

@@ -63,6 +63,9 @@ struct SceneMaterial {
     float transmission = 0.0f;      // KHR_materials_transmission transmissionFactor
     float ior = 1.5f;               // KHR_materials_ior
     bool thin_walled = true;        // no KHR_materials_volume with thicknessFactor > 0
+    // Inside a solid (not thin-walled): Beer-Lambert absorption per unit length,
+    // -ln(attenuationColor) / attenuationDistance (0: clear; at most FLT_MAX).
+    glm::vec3 absorption{0.0f};
 
     // Textures, one per slot (TEXTURE_SLOT_*, the table in scene/texture_slots.h); each
     // value multiplies its factor.
@@ -70,6 +73,12 @@ struct SceneMaterial {
     float normal_scale = 1.0f;
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+    // Whether light can travel inside it (a solid that transmits) and be absorbed there.
+    bool absorbs() const
+    {
+        return transmission > 0.0f && !thin_walled &&
+               (absorption.x > 0.0f || absorption.y > 0.0f || absorption.z > 0.0f);
+    }
     bool has_textures() const
     {
         for (const SceneTexture& t : textures)

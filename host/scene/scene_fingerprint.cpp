@@ -60,6 +60,8 @@ std::uint64_t scene_fingerprint(const Scene& scene)
         f.add(m.ior);
         f.add(static_cast<int>(m.thin_walled));
         f.add(m.normal_scale);
+        if (m.absorbs()) // (added only where it changes the image, so older fingerprints stand)
+            f.add(m.absorption);
         if (m.alpha_mode != AlphaMode::Opaque) { // an opaque material's alpha changes nothing
             f.add(static_cast<int>(m.alpha_mode));
             f.add(m.alpha);

@@ -3,6 +3,7 @@
 #include "closure/bsdf.cl"
 #include "features.h"
 #include "geom/ray_offset.cl"
+#include "integrator/absorption.cl"
 #include "integrator/intersect_shadow.cl"
 #include "integrator/mis.cl"
 #include "integrator/path_state.cl"
@@ -53,6 +54,11 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
         return;
 #ifdef PATHCL_HAS_ALPHA
     ls.radiance *= visibility; /* the light left behind alpha-blended surfaces */
+#endif
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+    /* Absorbed on the way when the shadow ray runs inside a solid. */
+    ls.radiance *=
+        medium_transmittance(kd, medium_after(ps->medium, s, ls.wi), ls.at_infinity ? INFINITY : length(shadow_dir));
 #endif
     /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
     float bsdf_pdf = ls.delta ? 0.0f : e.pdf;

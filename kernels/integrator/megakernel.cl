@@ -12,6 +12,7 @@
 #include "features.h"
 #include "film/film.cl"
 #include "film/pixel.cl"
+#include "integrator/absorption.cl"
 #include "integrator/direct_light.cl"
 #include "integrator/path_state.cl"
 #include "integrator/shade_background.cl"
@@ -35,6 +36,9 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
         if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
             break;
+#endif
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+        ps.beta *= medium_transmittance(&kd, ps.medium, hit.t);
 #endif
         if (hit.triangle < 0) {
             shade_background(&kd, &frame, &ps);

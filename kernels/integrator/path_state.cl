@@ -1,5 +1,6 @@
 /* The state a path carries from one bounce to the next. Every stage of the integrator
  * (the files of integrator/, called in order by integrator/megakernel.cl) reads and writes it. */
+#include "features.h"
 #include "types.h"
 
 typedef struct {
@@ -10,6 +11,9 @@ typedef struct {
     float prev_bsdf_pdf;      /* pdf of the BSDF sample that made the ray */
     bool prev_delta;          /* it came from the camera or a delta lobe: emission has full weight */
     bool prev_technique_bsdf; /* one-sample MIS: the coin chose the BSDF technique */
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+    int medium; /* the solid the ray travels inside (its material), -1: outside every solid */
+#endif
 } PathState;
 
 /* A path starting along a camera ray. */
@@ -24,5 +28,8 @@ static inline PathState path_state_start(Ray ray)
     ps.prev_bsdf_pdf = 0.0f;
     ps.prev_delta = true; /* camera rays see emission with full weight */
     ps.prev_technique_bsdf = true;
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+    ps.medium = -1; /* cameras are outside every solid */
+#endif
     return ps;
 }

@@ -2,6 +2,7 @@
  * sampling of it. Sphere lights, which live outside the BVH, are hit here too: they emit
  * outwards only and do not reflect, so the path ends on them. */
 #include "features.h"
+#include "integrator/absorption.cl"
 #include "integrator/mis.cl"
 #include "integrator/path_state.cl"
 #include "kernel_data.cl"
@@ -20,6 +21,9 @@ static inline bool shade_sphere_lights(const KernelData* kd, const FrameParams* 
     if (sphere < 0)
         return false;
     if (sphere_from_outside) {
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+        ps->beta *= medium_transmittance(kd, ps->medium, t_sphere);
+#endif
         Light light = kd->lights[sphere];
         float pmf = kd->light_distribution[sphere].pmf;
         float w = ps->prev_delta ? 1.0f

@@ -2,6 +2,7 @@
  * after RR_START_BOUNCE bounces play Russian roulette on the energy the path carries. */
 #include "closure/bsdf.cl"
 #include "geom/ray_offset.cl"
+#include "integrator/absorption.cl"
 #include "integrator/path_state.cl"
 #include "integrator/shade_surface.cl"
 #include "sample/dimensions.h"
@@ -27,6 +28,9 @@ static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 w
     ps->prev_technique_bsdf = !technique_light;
     ps->origin = spawn_ray_origin(&s->sp, bs.wi);
     ps->dir = bs.wi;
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+    ps->medium = medium_after(ps->medium, s, bs.wi);
+#endif
     return true;
 }
 

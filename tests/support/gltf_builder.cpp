@@ -191,6 +191,16 @@ void GltfBuilder::add_root(int node)
     model.scenes[0].nodes.push_back(node);
 }
 
+int GltfBuilder::add_box_mesh(glm::vec3 h, int material)
+{
+    std::vector<glm::vec3> p;
+    for (int i = 0; i < 8; ++i)
+        p.emplace_back((i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z);
+    std::vector<std::uint32_t> idx = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                      2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+    return add_mesh(add_positions(p), add_indices(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), material);
+}
+
 int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward, bool smooth_normals)
 {
     std::vector<glm::vec3> p;

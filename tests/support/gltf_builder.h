@@ -60,6 +60,9 @@ public:
     // `inward` (the front face then faces the centre). smooth_normals: a NORMAL
     // attribute with the sphere's own (radial) normals, for smooth shading.
     int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward, bool smooth_normals = false);
+    // A closed box mesh (12 triangles, counter-clockwise seen from outside) with the given
+    // half extents, centred at the origin.
+    int add_box_mesh(glm::vec3 half, int material);
 
     // Textures. Images are stored as PNG bytes in a bufferView (as in a .glb), encoded by
     // OpenImageIO with alpha kept unassociated.
