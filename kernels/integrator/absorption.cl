@@ -3,8 +3,8 @@
  * inside it until it refracts out, and its throughput is multiplied by exp(-sigma t)
  * over each segment of length t there. The medium a path is in is the material of the
  * last solid it entered (PathState.medium); media do not nest (leaving any solid returns
- * to the outside), and cameras and punctual lights are outside every solid. Compiled only
- * for scenes with an absorbing solid (PATHCL_HAS_VOLUME_ABSORPTION). */
+ * to the outside), and cameras are outside every solid. Compiled only for scenes with an
+ * absorbing solid (PATHCL_HAS_VOLUME_ABSORPTION). */
 #include "features.h"
 #include "integrator/path_state.cl"
 #include "integrator/shade_surface.cl"
