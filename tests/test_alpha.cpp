@@ -16,7 +16,9 @@
 #include "scene/alpha_cutouts.h"
 #include "scene/gltf_loader.h"
 #include "support/expect_error.h"
+#include "support/floor_probe.h"
 #include "support/gltf_builder.h"
+#include "support/render_checks.h"
 #include "support/test_options.h"
 #include "types.h"
 #include <tiny_gltf.h>
@@ -25,19 +27,11 @@ namespace pathcl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kFloor = 0.5, kCard = 0.8; // albedos
+constexpr double kFloor = test::kFloorAlbedo, kCard = 0.8;
 constexpr int kNearest = 9728, kClamp = 33071;
 constexpr int kU16 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-// Rotation turning a node's -Z (where cameras look and lights shine) to world -Y.
-const std::vector<double> kLookDown = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
-
-// Node rotation that makes -Z point along (sin a, -cos a, 0): down and towards +X.
-std::vector<double> slanted_down(double a)
-{
-    glm::dquat q =
-        glm::angleAxis(a, glm::dvec3(0, 0, 1)) * glm::dquat(kLookDown[3], kLookDown[0], kLookDown[1], kLookDown[2]);
-    return {q.x, q.y, q.z, q.w};
-}
+using test::kLookDown;
+using test::slanted_down;
 
 // A double-sided Lambertian card over x, z in [-1, 1] at height y facing up, with
 // TEXCOORD_0 u = (x + 1) / 2, v = (z + 1) / 2; returns its material index.
@@ -167,37 +161,13 @@ TEST(Alpha, OnlyTrianglesAlphaCanCutAreTested)
 // ---------------------------------------------------------------------------------------
 // Device
 
-struct Measurement {
-    double mean = 0.0, stderr_ = 0.0;
-    std::uint64_t bad = 0;
-};
+using Measurement = test::ChannelMean;
 
-// Mean radiance (green) seen straight down at (x, z) through a 1e-3 rad camera at height
-// 3, above a Lambertian floor (albedo kFloor) at y = 0; the caller adds the rest.
-Measurement radiance_at(test::GltfBuilder b, double x, double z, std::uint32_t spp, Strategy strategy = Strategy::Mis)
+// Mean radiance (green) of the floor probe (tests/support/floor_probe.h: a Lambertian floor
+// of albedo kFloor at y = 0 seen straight down from height 3) at (x, z).
+Measurement radiance_at(const test::GltfBuilder& b, double x, double z, std::uint32_t spp)
 {
-    const float s = 50.0f;
-    int mat = b.add_material(glm::vec3(static_cast<float>(kFloor)));
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), mat)));
-    b.add_camera_node(b.add_perspective_camera(1e-3), {x, 3.0, z}, kLookDown);
-    RenderOptions o = test::independent_options();
-    o.width = o.height = 8;
-    o.spp = spp;
-    o.max_bounces = 1;
-    o.strategy = strategy;
-    RenderResult r = render(import_gltf(b.model, "alpha-test"), o);
-    Measurement m;
-    double var = 0.0;
-    std::size_t n = static_cast<std::size_t>(o.width) * o.height;
-    for (std::size_t i = 0; i < n; ++i) {
-        m.mean += r.image.rgb[i * 3 + 1];
-        var += r.image.variance[i * 3 + 1] / static_cast<double>(spp);
-    }
-    m.mean /= static_cast<double>(n);
-    m.stderr_ = std::sqrt(var) / static_cast<double>(n);
-    m.bad = r.stats.bad_samples;
-    return m;
+    return test::floor_radiance_at(b, x, z, 1.0, Strategy::Mis, spp);
 }
 
 void expect_radiance(const Measurement& m, double expected, const std::string& what)
@@ -319,21 +289,7 @@ TEST(Alpha, CutEmitterBehindASheetRendersTheSameByEveryStrategy)
     o.spp = 1024;
     o.seed = 5;
     o.max_bounces = 3;
-    o.strategy = Strategy::Bsdf;
-    RenderResult reference = render(scene, o);
-    EXPECT_EQ(reference.stats.bad_samples, 0u);
-    for (Strategy strategy : {Strategy::Nee, Strategy::Mis}) {
-        o.strategy = strategy;
-        o.spp = 256;
-        o.seed = 30 + static_cast<std::uint32_t>(strategy);
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u);
-        CompareOptions co;
-        co.pooled_variance = false; // different estimators share the mean only
-        CompareReport cmp = compare_images(r.image, reference.image, co);
-        std::cout << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
-    }
+    test::expect_same_image_by_strategies(scene, o, {Strategy::Nee, Strategy::Mis}, 256, 30);
 }
 
 } // namespace

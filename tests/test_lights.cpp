@@ -10,6 +10,7 @@
 
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "support/floor_probe.h"
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
 #include "types.h"
@@ -17,45 +18,16 @@
 namespace pathcl {
 namespace {
 
-constexpr double kRho = 0.5;
+constexpr double kRho = test::kFloorAlbedo;
 constexpr double kPi = std::numbers::pi;
-// Rotation turning a node's -Z (where cameras look and lights shine) to world -Y.
-const std::vector<double> kLookDown = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
+using test::kLookDown;
+using test::slanted_down;
+using Measurement = test::ChannelMean;
 
-struct Measurement {
-    double mean = 0.0, stderr_ = 0.0;
-    std::uint64_t bad = 0;
-};
-
-// Mean radiance (green channel) of a tiny patch of the plane y = 0 around (x, 0, z),
-// lit by the light the caller adds to `b`.
-Measurement radiance_at(test::GltfBuilder b, double x, double z, double height_scale, Strategy strategy = Strategy::Mis,
-                        std::uint32_t spp = 4)
+Measurement radiance_at(const test::GltfBuilder& b, double x, double z, double height_scale,
+                        Strategy strategy = Strategy::Mis, std::uint32_t spp = 4)
 {
-    double s = 50.0 * height_scale;
-    std::vector<glm::vec3> quad = {{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}; // normal +Y
-    int mat = b.add_material(glm::vec3(static_cast<float>(kRho)));
-    int mesh =
-        b.add_mesh(b.add_positions(quad), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat);
-    b.add_root(b.add_node(mesh));
-    b.add_camera_node(b.add_perspective_camera(1e-3), {x, 3.0 * height_scale, z}, kLookDown);
-    RenderOptions o = test::independent_options();
-    o.width = o.height = 8;
-    o.spp = spp;
-    o.max_bounces = 1;
-    o.strategy = strategy;
-    RenderResult r = render(import_gltf(b.model, "light-test"), o);
-    Measurement m;
-    double var = 0.0;
-    std::size_t n = static_cast<std::size_t>(o.width) * o.height;
-    for (std::size_t i = 0; i < n; ++i) {
-        m.mean += r.image.rgb[i * 3 + 1];
-        var += r.image.variance[i * 3 + 1] / static_cast<double>(spp);
-    }
-    m.mean /= static_cast<double>(n);
-    m.stderr_ = std::sqrt(var) / static_cast<double>(n);
-    m.bad = r.stats.bad_samples;
-    return m;
+    return test::floor_radiance_at(b, x, z, height_scale, strategy, spp);
 }
 
 void expect_radiance(const Measurement& m, double expected, const std::string& what)
@@ -210,14 +182,6 @@ TEST(SphereLight, CameraInsideAndSphereTouchingASurfaceStayFinite)
             EXPECT_TRUE(std::isfinite(m.mean)) << "x " << x;
         }
     }
-}
-
-// Node rotation that makes -Z point along (sin a, -cos a, 0): down and towards +X.
-std::vector<double> slanted_down(double a)
-{
-    glm::dquat q =
-        glm::angleAxis(a, glm::dvec3(0, 0, 1)) * glm::dquat(kLookDown[3], kLookDown[0], kLookDown[1], kLookDown[2]);
-    return {q.x, q.y, q.z, q.w};
 }
 
 TEST(DirectionalLight, IrradianceIsIntensityTimesCosine)

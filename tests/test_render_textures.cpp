@@ -16,6 +16,7 @@
 #include "render/texture_lookup.h"
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"
+#include "support/render_checks.h"
 #include "support/test_options.h"
 #include "types.h"
 #include <tiny_gltf.h>
@@ -208,21 +209,7 @@ TEST(RenderTextures, TexturedEmitterGivesTheSameImageByEveryStrategy)
     Scene scene = textured_emitter_scene();
     RenderOptions o = small_options(32, 1024, 11);
     o.max_bounces = 3;
-    o.strategy = Strategy::Bsdf;
-    RenderResult reference = render(scene, o);
-    EXPECT_EQ(reference.stats.bad_samples, 0u);
-    for (Strategy strategy : {Strategy::Nee, Strategy::OneSample, Strategy::Mis}) {
-        o.strategy = strategy;
-        o.spp = 256;
-        o.seed = 20 + static_cast<std::uint32_t>(strategy);
-        RenderResult r = render(scene, o);
-        EXPECT_EQ(r.stats.bad_samples, 0u);
-        CompareOptions co;
-        co.pooled_variance = false; // different estimators share the mean only
-        CompareReport cmp = compare_images(r.image, reference.image, co);
-        std::cout << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
-    }
+    test::expect_same_image_by_strategies(scene, o, {Strategy::Nee, Strategy::OneSample, Strategy::Mis}, 256, 20);
 }
 
 TEST(RenderTextures, TexturedSceneMatchesItsCommittedReference)
