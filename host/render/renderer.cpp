@@ -52,11 +52,14 @@ std::string cl_error_text(const cl::Error& e)
 // When a device finished a timed pass: set by an event callback, which the driver calls
 // when the device finishes (a driver that runs commands on the host thread, as PoCL's
 // "basic" does, calls it as it runs them), so a device that finishes first is timed then,
-// not when the host gets round to it.
+// not when the host gets round to it. Shared with the callback, which may run after the
+// host has stopped waiting for it (measure_pass waits a second at most): each side holds a
+// reference, so a late callback never writes into freed memory.
 struct PassFinish {
     std::atomic<std::int64_t> ns{-1}; // since the pass was enqueued; -1 until the callback ran
     std::chrono::steady_clock::time_point start;
 };
+using PassFinishes = std::vector<std::shared_ptr<PassFinish>>; // one per event of a timed pass
 
 // Everything one device holds for a render.
 struct DeviceRender {
@@ -236,7 +239,7 @@ struct Renderer::Impl {
     // signalling its path pass's end. Logs the camera rays of batch 0's first sample
     // indices.
     void enqueue_pass(std::uint32_t batch, std::uint32_t s, std::vector<cl::Event>& done,
-                      std::vector<CameraRayRecord>& camera_rays, std::vector<PassFinish>* finish = nullptr)
+                      std::vector<CameraRayRecord>& camera_rays, PassFinishes* finish = nullptr)
     {
         const auto start = Clock::now();
         frame.sample_index = s; // with the seed, the only parameters that change from pass to pass
@@ -259,16 +262,20 @@ struct Renderer::Impl {
             done.emplace_back();
             launch(*dr, dr->path_kernel, &done.back());
             if (finish) { // timed: the callback is set before the flush, which may run the pass
-                PassFinish& f = (*finish)[done.size() - 1];
-                f.start = start;
+                finish->push_back(std::make_shared<PassFinish>());
+                finish->back()->start = start;
+                // The callback's own reference, released by the callback.
+                auto keep = std::make_unique<std::shared_ptr<PassFinish>>(finish->back());
                 done.back().setCallback(
                     CL_COMPLETE,
                     [](cl_event, cl_int, void* data) {
-                        auto* pf = static_cast<PassFinish*>(data);
-                        pf->ns.store(
-                            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - pf->start).count());
+                        std::unique_ptr<std::shared_ptr<PassFinish>> pf(
+                            static_cast<std::shared_ptr<PassFinish>*>(data));
+                        (*pf)->ns.store(
+                            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - (*pf)->start).count());
                     },
-                    &f);
+                    keep.get());
+                keep.release(); // the callback owns it now
             }
             dr->dev.queue.flush(); // the device starts at once; the host waits on `done` later
         }
@@ -276,7 +283,7 @@ struct Renderer::Impl {
 
     // Each device's rows per second over the pass just enqueued with `finish` (an entry
     // per device with rows, in device order, as `done` has its events).
-    std::vector<double> measure_pass(std::vector<cl::Event>& done, std::vector<PassFinish>& finish)
+    std::vector<double> measure_pass(std::vector<cl::Event>& done, const PassFinishes& finish)
     {
         for (cl::Event& e : done)
             e.wait(); // reports an error status as cl::Error
@@ -285,14 +292,14 @@ struct Renderer::Impl {
         // an empty band, which costs speed, not correctness).
         const auto deadline = Clock::now() + std::chrono::seconds(1);
         for (std::size_t e = 0; e < done.size(); ++e)
-            while (finish[e].ns.load() < 0 && Clock::now() < deadline)
+            while (finish[e]->ns.load() < 0 && Clock::now() < deadline)
                 std::this_thread::yield();
         std::vector<double> rate(devices.size(), 0.0);
         std::size_t e = 0;
         for (std::size_t d = 0; d < devices.size(); ++d) {
             if (devices[d]->y1 <= devices[d]->y0)
                 continue;
-            const std::int64_t ns = finish[e++].ns.load();
+            const std::int64_t ns = finish[e++]->ns.load();
             if (ns >= 0)
                 rate[d] = (devices[d]->y1 - devices[d]->y0) / std::max(1e-9 * static_cast<double>(ns), 1e-9);
         }
@@ -564,7 +571,7 @@ struct Renderer::Impl {
                     if (balance && passes_enqueued == 1) {
                         drain();
                         std::vector<cl::Event> done;
-                        std::vector<PassFinish> finish(devices.size());
+                        PassFinishes finish;
                         enqueue_pass(b, s, done, result.camera_rays, &finish);
                         const std::vector<double> rates = measure_pass(done, finish);
                         after_pass();
