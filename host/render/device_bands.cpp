@@ -5,11 +5,11 @@
 
 namespace pathcl {
 
-std::vector<std::uint32_t> band_bounds(std::uint32_t height, const std::vector<double>& weights)
+std::vector<std::uint32_t> band_bounds(std::uint32_t height, std::size_t bands, const std::vector<double>& weights)
 {
-    const std::size_t n = std::max<std::size_t>(1, weights.size());
+    const std::size_t n = std::max<std::size_t>(1, bands);
     double total = 0.0;
-    bool valid = !weights.empty();
+    bool valid = weights.size() == n;
     for (double w : weights) {
         valid = valid && std::isfinite(w) && w >= 0.0;
         total += w;

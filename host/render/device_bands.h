@@ -8,6 +8,7 @@
 // at the image's height, which the kernels check.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,9 +16,10 @@ namespace pathcl {
 
 constexpr std::uint32_t kBandRows = 8;
 
-// Boundaries b[0] = 0 <= b[1] <= ... <= b[n] = height of n bands with sizes as near to
-// proportional to `weights` as multiples of kBandRows allow (a band may be empty). Weights
-// that are not all finite and non-negative with a positive sum count as equal.
-std::vector<std::uint32_t> band_bounds(std::uint32_t height, const std::vector<double>& weights);
+// Boundaries b[0] = 0 <= b[1] <= ... <= b[n] = height of n = `bands` bands (at least 1)
+// with sizes as near to proportional to `weights` as multiples of kBandRows allow (a band
+// may be empty). Weights that are not one per band, all finite and non-negative with a
+// positive sum (an empty list included: no shares given) count as equal.
+std::vector<std::uint32_t> band_bounds(std::uint32_t height, std::size_t bands, const std::vector<double>& weights);
 
 } // namespace pathcl

@@ -202,7 +202,7 @@ struct Renderer::Impl {
     // pixel's compensated sums continue exactly where they were.
     void set_bands(const std::vector<double>& weights, bool move_films)
     {
-        const std::vector<std::uint32_t> b = band_bounds(options.height, weights);
+        const std::vector<std::uint32_t> b = band_bounds(options.height, devices.size(), weights);
         auto owner = [&](std::uint32_t y, bool old_bands) {
             for (std::size_t d = 0; d < devices.size(); ++d) {
                 const std::uint32_t lo = old_bands ? devices[d]->y0 : b[d], hi = old_bands ? devices[d]->y1 : b[d + 1];
