@@ -40,6 +40,15 @@ MaterialSpec white_plastic(float roughness)
     return s;
 }
 
+// White base under a specular-glossiness layer (ior 0: F0 is the specular colour).
+MaterialSpec white_spec_gloss(float roughness)
+{
+    MaterialSpec s = white_plastic(roughness);
+    s.ior = 0.0f;
+    s.specular_color = glm::vec3(0.25f);
+    return s;
+}
+
 TEST(BsdfEnergy, WhiteMaterialsWithoutLossReflectEverything)
 {
     // White Lambertian (both programs), white smooth conductor and white smooth plastic
@@ -54,11 +63,13 @@ TEST(BsdfEnergy, WhiteMaterialsWithoutLossReflectEverything)
         Albedo lam_full = directional_albedo(full_program(), lambertian(glm::vec3(1.0f)), c, true, false);
         Albedo mirror = directional_albedo(full_program(), conductor(0.0f), c, true, false);
         Albedo coated = directional_albedo(full_program(), white_plastic(0.0f), c, true, false);
+        Albedo coated_sg = directional_albedo(full_program(), white_spec_gloss(0.0f), c, true, false);
         for (int ch = 0; ch < 3; ++ch) {
             EXPECT_NEAR(lam.mean[ch], 1.0, 1e-5);
             EXPECT_NEAR(lam_full.mean[ch], 1.0, 1e-5);
             EXPECT_NEAR(mirror.mean[ch], 1.0, 1e-5);
             EXPECT_NEAR(coated.mean[ch], 1.0, 5.0 * coated.stderr_[ch] + 1e-5);
+            EXPECT_NEAR(coated_sg.mean[ch], 1.0, 5.0 * coated_sg.stderr_[ch] + 1e-5) << "specular-glossiness";
         }
         EXPECT_EQ(lam.not_finite + lam_full.not_finite + mirror.not_finite + coated.not_finite, 0u);
         if (c < 0.01)
@@ -67,6 +78,8 @@ TEST(BsdfEnergy, WhiteMaterialsWithoutLossReflectEverything)
             SCOPED_TRACE("roughness " + std::to_string(r));
             Albedo plastic = directional_albedo(full_program(), white_plastic(r), c, true, false);
             EXPECT_NEAR(plastic.mean.x, 1.0, 5.0 * plastic.stderr_.x + kLayerTableError) << "plastic";
+            Albedo sg = directional_albedo(full_program(), white_spec_gloss(r), c, true, false);
+            EXPECT_NEAR(sg.mean.x, 1.0, 5.0 * sg.stderr_.x + kLayerTableError) << "specular-glossiness";
             // Rough conductors and interfaces with their multiple scattering restored.
             Albedo metal = directional_albedo(full_program(), conductor(r), c, true, false);
             EXPECT_NEAR(metal.mean.x, 1.0, 5.0 * metal.stderr_.x + kLayerTableError) << "metal";

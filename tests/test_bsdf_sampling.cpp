@@ -163,6 +163,12 @@ TEST(BsdfSampling, GltfMixturesMatchTheirPdf)
     sheet.base = {0.9f, 0.8f, 0.7f};
     expect_sampling_matches(full_program(), sheet, 0.5, true, "thin-walled rough transmission 0.6");
 
+    MaterialSpec spec_gloss = plastic; // KHR_materials_ior 0: Schlick's curve from the specular colour
+    spec_gloss.ior = 0.0f;
+    spec_gloss.specular = 1.0f;
+    spec_gloss.specular_color = {0.6f, 0.4f, 0.2f};
+    expect_sampling_matches(full_program(), spec_gloss, 0.6, true, "specular-glossiness (ior 0)");
+
     MaterialSpec coated = lambertian({0.6f, 0.6f, 0.6f});
     coated.specular = 1.0f;
     coated.roughness = 0.0f; // diffuse plus a delta coat: only the diffuse part is tested here

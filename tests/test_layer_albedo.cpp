@@ -48,7 +48,9 @@ LayerAlbedo brute_force(double mu, double roughness, double eta, int n)
         double f_cos = test::ggx_d(h, a) * g1(wo) * g1(wi) / (4.0 * mu); // f cos_i, Fresnel 1
         double w = f_cos * 2.0 * kPi;                                    // / uniform pdf 1 / (2 pi)
         e += w;
-        b += w * std::clamp((fresnel(glm::dot(wo, h), eta) - f0) / (1.0 - f0), 0.0, 1.0);
+        double c = glm::dot(wo, h);
+        // eta 0: KHR_materials_ior's ior 0, Schlick's curve.
+        b += w * (eta == 0.0 ? std::pow(1.0 - c, 5.0) : std::clamp((fresnel(c, eta) - f0) / (1.0 - f0), 0.0, 1.0));
     }
     return {e / n, b / n};
 }
@@ -58,10 +60,12 @@ TEST(LayerAlbedo, IntegrationAgreesWithABruteForceEstimate)
     // Rough lobes only (a uniform estimator cannot resolve narrow ones in 4e6 samples).
     for (double mu : {0.2, 0.6, 0.95})
         for (double r : {0.5, 0.8, 1.0}) {
-            LayerAlbedo q = integrate_layer_albedo(mu, r, 1.5);
-            LayerAlbedo m = brute_force(mu, r, 1.5, 4000000);
-            EXPECT_NEAR(q.e_ss, m.e_ss, 3e-3) << "mu " << mu << " roughness " << r;
-            EXPECT_NEAR(q.b, m.b, 1e-3) << "mu " << mu << " roughness " << r;
+            for (double eta : {1.5, 0.0}) {
+                LayerAlbedo q = integrate_layer_albedo(mu, r, eta);
+                LayerAlbedo m = brute_force(mu, r, eta, 4000000);
+                EXPECT_NEAR(q.e_ss, m.e_ss, 3e-3) << "mu " << mu << " roughness " << r;
+                EXPECT_NEAR(q.b, m.b, 1e-3) << "mu " << mu << " roughness " << r << " eta " << eta;
+            }
         }
 }
 
@@ -130,6 +134,8 @@ TEST(LayerAlbedo, SmoothLayerAverageMatchesClosedFormAndLimits)
     // separately); s_avg = (F_avg - F0) / (1 - F0).
     double f0 = 0.04, f_avg = f0 + (1.0 - f0) * smooth_layer_average(1.5);
     EXPECT_NEAR(f_avg, 0.091778, 1e-6);
+    // ior 0: Schlick's curve, 2 int mu (1 - mu)^5 dmu = 2 B(2, 6) = 1/21.
+    EXPECT_NEAR(smooth_layer_average(0.0), 1.0 / 21.0, 1e-12);
 }
 
 TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
@@ -139,7 +145,7 @@ TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
     // Smooth row: E_ss 1. Rough rows: E_ss in (0, 1], B in [0, E_ss].
     for (int i = 0; i < LAYER_MU_RES; ++i)
         EXPECT_EQ(t[LAYER_TABLE_ESS + i], 1.0f);
-    for (int k = 0; k < LAYER_ETA_RES; ++k)
+    for (int k = 0; k < LAYER_B_ROWS; ++k)
         for (int j = 0; j < LAYER_ROUGH_RES; ++j)
             for (int i = 0; i < LAYER_MU_RES; ++i) {
                 float e = t[LAYER_TABLE_ESS + j * LAYER_MU_RES + i];
@@ -157,10 +163,11 @@ TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
     // A few entries recomputed with four times the panels.
     for (int i : {3, 17, 31})
         for (int j : {1, 9, 20, 31})
-            for (int k : {0, 11, 31}) {
+            for (int k : {0, 11, 31, LAYER_ETA_RES}) { // and the Schlick row (eta 0)
                 double mu = std::max(std::pow(static_cast<double>(i) / (LAYER_MU_RES - 1), 2.0), 1e-6);
                 double r = static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
-                double x = static_cast<double>(LAYER_X_MAX) * k / (LAYER_ETA_RES - 1), eta = (1 + x) / (1 - x);
+                double x = static_cast<double>(LAYER_X_MAX) * k / (LAYER_ETA_RES - 1);
+                double eta = k == LAYER_ETA_RES ? 0.0 : (1 + x) / (1 - x);
                 LayerAlbedo fine = integrate_layer_albedo(mu, r, eta, 128);
                 EXPECT_NEAR(t[LAYER_TABLE_ESS + j * LAYER_MU_RES + i], fine.e_ss, 2e-4) << i << " " << j;
                 EXPECT_NEAR(t[LAYER_TABLE_B + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i], fine.b, 2e-4)

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -35,6 +36,8 @@ struct QuadOptions {
     bool double_sided = false;
     std::vector<std::uint8_t> normal_texel = {128, 128, 255, 255};
     double normal_scale = 1.0;
+    // Edits the material last (after every texture above is set).
+    std::function<void(test::GltfBuilder&, tinygltf::Material&)> edit;
 };
 
 // A unit quad in the z = 0 plane facing +z with smooth normals (+z), texture coordinates
@@ -87,6 +90,8 @@ Scene textured_quad(const QuadOptions& o)
     trans["transmissionFactor"] = tinygltf::Value(0.6);
     trans["transmissionTexture"] = info(b.add_texture(b.add_png_image(1, 1, {51, 200, 200, 255})));
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
+    if (o.edit)
+        o.edit(b, m);
     b.add_root(b.add_node(mesh));
     return import_gltf(b.model, "quad.gltf");
 }
@@ -150,6 +155,48 @@ TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(v3(p.specular_color[0])[c], specular_color[c], 1e-6f) << "specular colour channel " << c;
     EXPECT_NEAR(p.params[0].w, 0.6f * 51.0f / 255.0f, 1e-6f) << "transmission";
+}
+
+TEST(MaterialInputs, SpecularGlossinessTexturesGiveDiffuseSpecularColourAndRoughness)
+{
+    // KHR_materials_pbrSpecularGlossiness on the textured quad: base = diffuseFactor x sRGB
+    // diffuse texel x COLOR_0, metallic 0, specular colour = specularFactor x sRGB texel,
+    // roughness = 1 - glossinessFactor x the texel's linear alpha; the quad's
+    // metallic-roughness, specular and transmission textures are not read. Broken
+    // variants seen to fail: glossiness read from G as a metallic-roughness texel; the
+    // fallback metallic-roughness texture kept.
+    QuadOptions o;
+    o.edit = [](test::GltfBuilder& b, tinygltf::Material& m) {
+        auto info = [](int index) {
+            tinygltf::Value::Object obj;
+            obj["index"] = tinygltf::Value(index);
+            return tinygltf::Value(obj);
+        };
+        auto numbers = [](std::vector<double> v) {
+            tinygltf::Value::Array a;
+            for (double x : v)
+                a.emplace_back(x);
+            return tinygltf::Value(a);
+        };
+        tinygltf::Value::Object sg;
+        sg["diffuseFactor"] = numbers({0.8, 0.6, 0.4, 1.0});
+        sg["diffuseTexture"] = info(b.add_texture(b.add_png_image(1, 1, {128, 188, 255, 255})));
+        sg["specularFactor"] = numbers({0.5, 0.4, 0.3});
+        sg["glossinessFactor"] = tinygltf::Value(0.8);
+        sg["specularGlossinessTexture"] = info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 102})));
+        m.extensions["KHR_materials_pbrSpecularGlossiness"] = tinygltf::Value(sg);
+    };
+    MaterialProbe p = probe(textured_quad(o), {{0.2f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
+    glm::vec3 base(0.8f * srgb8_to_linear(128) * 0.5f, 0.6f * srgb8_to_linear(188), 0.4f * srgb8_to_linear(255));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(v3(p.base_color[0])[c], base[c], 1e-6f) << "base colour channel " << c;
+    EXPECT_EQ(p.params[0].x, 0.0f) << "metallic";
+    EXPECT_NEAR(p.params[0].y, 1.0f - 0.8f * 102.0f / 255.0f, 1e-6f) << "roughness";
+    EXPECT_EQ(p.params[0].z, 1.0f) << "specular";
+    glm::vec3 specular_color(0.5f * srgb8_to_linear(255), 0.4f * srgb8_to_linear(188), 0.3f * srgb8_to_linear(64));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(v3(p.specular_color[0])[c], specular_color[c], 1e-6f) << "specular colour channel " << c;
+    EXPECT_EQ(p.params[0].w, 0.0f) << "transmission";
 }
 
 TEST(MaterialInputs, NormalMapTiltsAlongTheTangentFrame)

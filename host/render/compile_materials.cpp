@@ -15,12 +15,13 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.specular_color = to_float4(m.specular_color, m.specular);
         dm.absorption = to_float4(m.absorbs() ? m.absorption : glm::vec3(0.0f));
         dm.metallic = m.metallic;
-        dm.roughness = m.roughness;
+        dm.roughness = m.glossiness_texture ? m.glossiness : m.roughness;
         dm.transmission = m.transmission;
         dm.ior = m.ior;
         dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u) |
                    (m.alpha_mode == AlphaMode::Mask ? MATERIAL_ALPHA_MASK : 0u) |
-                   (m.alpha_mode == AlphaMode::Blend ? MATERIAL_ALPHA_BLEND : 0u);
+                   (m.alpha_mode == AlphaMode::Blend ? MATERIAL_ALPHA_BLEND : 0u) |
+                   (m.glossiness_texture ? MATERIAL_GLOSSINESS : 0u);
         dm.alpha_cutoff = m.alpha_cutoff;
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;

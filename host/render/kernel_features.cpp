@@ -25,6 +25,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_GLOSSY, m.metallic > 0.0f || m.specular > 0.0f);
         set(FEATURE_TRANSMISSION, m.transmission > 0.0f);
         set(FEATURE_VOLUME_ABSORPTION, m.absorbs());
+        set(FEATURE_SCHLICK_LAYER, m.ior == 0.0f);
         set(FEATURE_TEXTURES, m.has_textures());
         set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
     }
@@ -55,13 +56,25 @@ std::string program_build_options(const KernelFeatures& features, const RenderOp
 
 std::vector<std::string> feature_names(std::uint32_t mask)
 {
-    static const char* const names[] = {"area-lights",       "point-lights", "spot-lights",      "directional-lights",
-                                        "sphere-lights",     "environment",  "glossy",           "transmission",
-                                        "textures",          "normal-maps",  "vertex-colors",    "thin-lens",
-                                        "single-scattering", "alpha",        "volume-absorption"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 15 && FEATURE_ALL == (1u << 15) - 1u);
+    static const char* const names[] = {"area-lights",
+                                        "point-lights",
+                                        "spot-lights",
+                                        "directional-lights",
+                                        "sphere-lights",
+                                        "environment",
+                                        "glossy",
+                                        "transmission",
+                                        "textures",
+                                        "normal-maps",
+                                        "vertex-colors",
+                                        "thin-lens",
+                                        "single-scattering",
+                                        "alpha",
+                                        "volume-absorption",
+                                        "schlick-layer"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 16 && FEATURE_ALL == (1u << 16) - 1u);
     std::vector<std::string> out;
-    for (std::uint32_t b = 0; b < 15; ++b)
+    for (std::uint32_t b = 0; b < 16; ++b)
         if (mask & (1u << b))
             out.push_back(names[b]);
     return out;

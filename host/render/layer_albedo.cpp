@@ -67,24 +67,25 @@ std::vector<float> compute_layer_albedo_table(int panels)
     auto b = [&](int k, int j, int i) -> float& {
         return t[LAYER_TABLE_B + (k * LAYER_ROUGH_RES + j) * LAYER_MU_RES + i];
     };
-    std::vector<double> etas(LAYER_ETA_RES), bs;
+    // The ior grid, then eta 0: ior 0's Schlick curve (layer_curve).
+    std::vector<double> etas(LAYER_B_ROWS, 0.0), bs;
     for (int k = 0; k < LAYER_ETA_RES; ++k)
         etas[k] = grid_eta(k);
     for (int j = 0; j < LAYER_ROUGH_RES; ++j)
         for (int i = 0; i < LAYER_MU_RES; ++i) {
             if (j == 0) { // the smooth interface: a mirror with the Fresnel curve itself
                 ess(j, i) = 1.0f;
-                for (int k = 0; k < LAYER_ETA_RES; ++k)
-                    b(k, j, i) = static_cast<float>(normalized_fresnel(grid_mu(i), etas[k]));
+                for (int k = 0; k < LAYER_B_ROWS; ++k)
+                    b(k, j, i) = static_cast<float>(layer_curve(grid_mu(i), etas[k]));
                 continue;
             }
             ess(j, i) = static_cast<float>(integrate_layer_albedo(grid_mu(i), grid_roughness(j), etas, bs, panels));
-            for (int k = 0; k < LAYER_ETA_RES; ++k)
+            for (int k = 0; k < LAYER_B_ROWS; ++k)
                 b(k, j, i) = static_cast<float>(bs[k]);
         }
     for (int j = 0; j < LAYER_ROUGH_RES; ++j) {
         t[LAYER_TABLE_ESS_AVG + j] = static_cast<float>(cosine_average(&ess(j, 0)));
-        for (int k = 0; k < LAYER_ETA_RES; ++k)
+        for (int k = 0; k < LAYER_B_ROWS; ++k)
             t[LAYER_TABLE_B_AVG + k * LAYER_ROUGH_RES + j] = static_cast<float>(cosine_average(&b(k, j, 0)));
     }
     // Rough dielectric interfaces, from outside (eta = ior) and inside (eta = 1 / ior);
@@ -208,7 +209,7 @@ double integrate_layer_albedo(double cos_theta, double roughness, const std::vec
             double g = smith_g1(wi, alpha) * weight, c = glm::dot(wo, m);
             e += g;
             for (std::size_t k = 0; k < etas.size(); ++k)
-                b_out[k] += g * normalized_fresnel(c, etas[k]);
+                b_out[k] += g * layer_curve(c, etas[k]);
         });
     return e;
 }
@@ -257,7 +258,7 @@ double smooth_layer_average(double eta)
         double a = static_cast<double>(k) / panels, b = static_cast<double>(k + 1) / panels;
         for (int i = 0; i < 5; ++i) {
             double t = 0.5 * (a + b) + 0.5 * (b - a) * x[i];
-            sum += 0.5 * (b - a) * w[i] * 4.0 * t * t * t * normalized_fresnel(t * t, eta);
+            sum += 0.5 * (b - a) * w[i] * 4.0 * t * t * t * layer_curve(t * t, eta);
         }
     }
     return sum;

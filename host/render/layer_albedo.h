@@ -21,8 +21,9 @@ std::vector<float> compute_layer_albedo_table(int panels = 32);
 
 // Albedo of the GGX reflection lobe (separable Smith G) from cos theta at the given
 // roughness (alpha = roughness^2): with Fresnel 1 (the result) and with the normalized
-// Fresnel curve of each eta in `etas` (into b). Gauss-Legendre over the visible-normal
-// cap with the horizon located per azimuth: accurate to about 1e-4 at 16 panels.
+// Fresnel curve of each eta in `etas` (into b; eta 0: Schlick's curve, see layer_curve).
+// Gauss-Legendre over the visible-normal cap with the horizon located per azimuth:
+// accurate to about 1e-4 at 16 panels.
 double integrate_layer_albedo(double cos_theta, double roughness, const std::vector<double>& etas,
                               std::vector<double>& b, int panels = 16);
 
@@ -38,8 +39,9 @@ struct LayerAlbedo {
 };
 LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double eta, int panels = 16);
 
-// 2 * integral of normalized_fresnel(mu, eta) mu dmu: the smooth layer's hemispherical
-// average of the normalized Fresnel curve, exact (the kernels use it below ALPHA_DELTA).
+// 2 * integral of layer_curve(mu, eta) mu dmu: the smooth layer's hemispherical average
+// of the normalized Fresnel curve (Schlick's for eta 0: 1/21), exact (the kernels use it
+// below ALPHA_DELTA).
 double smooth_layer_average(double eta);
 
 // fresnel_dielectric and normalized_fresnel, the Fresnel curves the tables integrate, are

@@ -69,6 +69,7 @@ struct Importer {
                                                         "KHR_materials_specular",
                                                         "KHR_materials_transmission",
                                                         "KHR_materials_ior",
+                                                        "KHR_materials_pbrSpecularGlossiness",
                                                         "KHR_materials_volume",
                                                         "KHR_lights_punctual",
                                                         "KHR_texture_transform",

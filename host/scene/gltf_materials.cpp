@@ -10,6 +10,7 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "scene/gltf_specular_glossiness.h"
 #include "scene/gltf_textures.h"
 #include "scene/gltf_values.h"
 #include "scene/texture_slots.h"
@@ -39,8 +40,8 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_specular specularFactor must lie in [0, 1]");
     if (!in01(m.transmission))
         fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
-    if (!(m.ior >= 1.0f) || !std::isfinite(m.ior))
-        fail("KHR_materials_ior ior must be finite and >= 1");
+    if (!(m.ior >= 1.0f || m.ior == 0.0f) || !std::isfinite(m.ior))
+        fail("KHR_materials_ior ior must be finite and >= 1, or 0");
     if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
         fail("alphaCutoff must be finite and >= 0");
 }
@@ -113,6 +114,8 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
+    const auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness");
+    const bool spec_gloss = sg != m.extensions.end();
     if (auto e = m.extensions.find("KHR_materials_volume"); e != m.extensions.end()) {
         double thickness = number_or(e->second, "thicknessFactor", 0.0);
         if (!(thickness >= 0.0) || !std::isfinite(thickness))
@@ -136,6 +139,8 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     // The texture of every slot (occlusionTexture is not read: a path tracer computes
     // occlusion).
     for (const TextureSlot& ts : texture_slot_table()) {
+        if (spec_gloss && specular_glossiness_replaces(ts.slot))
+            continue; // the metallic-roughness fallback of a specular-glossiness material
         const std::string slot_where = where + " " + ts.name;
         if (ts.extension) {
             auto e = m.extensions.find(ts.extension);
@@ -152,6 +157,16 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
         out.normal_scale = static_cast<float>(m.normalTexture.scale);
         if (!std::isfinite(out.normal_scale))
             throw Error(source + ": " + where + ": normalTexture scale must be finite");
+    }
+    if (spec_gloss)
+        import_specular_glossiness(sg->second, out, textures, source, where);
+    if (out.ior == 0.0f && out.transmission > 0.0f) {
+        // ior 0 makes the interface's Fresnel term 1: no light enters the solid.
+        warn(source + ": " + where +
+             ": KHR_materials_ior ior 0 (specular-glossiness mode) transmits no light; "
+             "its transmission is not rendered");
+        out.transmission = 0.0f;
+        out.textures[TEXTURE_SLOT_TRANSMISSION] = SceneTexture{};
     }
     return out;
 }

@@ -20,4 +20,7 @@ double number_or(const tinygltf::Value& obj, const char* key, double fallback);
 // three numbers gives NaN components, which the caller's range check rejects.
 glm::vec3 vec3_or(const tinygltf::Value& obj, const char* key, glm::vec3 fallback);
 
+// obj[key] as four numbers, like vec3_or.
+glm::vec4 vec4_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback);
+
 } // namespace pathcl

@@ -61,7 +61,7 @@ struct SceneMaterial {
     float specular = 1.0f;          // KHR_materials_specular specularFactor
     glm::vec3 specular_color{1.0f}; // KHR_materials_specular specularColorFactor
     float transmission = 0.0f;      // KHR_materials_transmission transmissionFactor
-    float ior = 1.5f;               // KHR_materials_ior
+    float ior = 1.5f;               // KHR_materials_ior; 0: specular-glossiness mode (Schlick's curve)
     bool thin_walled = true;        // no KHR_materials_volume with thicknessFactor > 0
     // Inside a solid (not thin-walled): Beer-Lambert absorption per unit length,
     // -ln(attenuationColor) / attenuationDistance (0: clear; at most FLT_MAX).
@@ -71,6 +71,11 @@ struct SceneMaterial {
     // value multiplies its factor.
     std::array<SceneTexture, TEXTURE_SLOT_COUNT> textures;
     float normal_scale = 1.0f;
+    // KHR_materials_pbrSpecularGlossiness with a specularGlossinessTexture: the
+    // metallic-roughness slot holds it, and roughness = 1 - glossiness x its alpha
+    // (roughness above is 1 - glossiness, its value where the alpha is 1).
+    bool glossiness_texture = false;
+    float glossiness = 1.0f;
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     // Whether light can travel inside it (a solid that transmits) and be absorbed there.

@@ -67,6 +67,10 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(m.alpha);
             f.add(m.alpha_cutoff);
         }
+        if (m.glossiness_texture) {
+            f.add(1);
+            f.add(m.glossiness);
+        }
         for (const SceneTexture& t : m.textures) {
             f.add(t.image);
             f.add(t.texcoord);

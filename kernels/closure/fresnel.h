@@ -33,6 +33,23 @@ PATHCL_FN pcl_real normalized_fresnel(pcl_real cos_i, pcl_real eta)
     return clamp(s, PCL_REAL(0.0), PCL_REAL(1.0));
 }
 
+/* Schlick's weight (1 - c)^5: the normalized Fresnel curve of KHR_materials_ior's ior 0
+ * (specular-glossiness mode: F0(ior) = 1, so specularColor alone is the normal-incidence
+ * reflectance, rising to 1 at grazing incidence as glTF's Fresnel term does). */
+PATHCL_FN pcl_real schlick_weight(pcl_real cos_i)
+{
+    pcl_real m = clamp(PCL_REAL(1.0) - cos_i, PCL_REAL(0.0), PCL_REAL(1.0));
+    pcl_real m2 = m * m;
+    return m2 * m2 * m;
+}
+
+/* The dielectric layer's normalized curve for a material's ior: the exact Fresnel curve,
+ * or Schlick's for ior 0. */
+PATHCL_FN pcl_real layer_curve(pcl_real cos_i, pcl_real eta)
+{
+    return eta == PCL_REAL(0.0) ? schlick_weight(cos_i) : normalized_fresnel(cos_i, eta);
+}
+
 PATHCL_END
 
 #endif

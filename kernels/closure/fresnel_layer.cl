@@ -11,15 +11,17 @@
 /* Schlick's approximation, as glTF defines the conductor Fresnel term. */
 static inline float3 fresnel_schlick(float3 f0, float cos_i)
 {
-    float m = clamp(1.0f - cos_i, 0.0f, 1.0f);
-    float m2 = m * m;
-    return f0 + (1.0f - f0) * (m2 * m2 * m);
+    return f0 + (1.0f - f0) * schlick_weight(cos_i);
 }
 
 /* The dielectric layer's reflectance F_d (see the header comment). */
 static inline float3 fresnel_specular_layer(const BsdfParams* p, float cos_i)
 {
+#ifdef PATHCL_HAS_SCHLICK_LAYER
+    float s = layer_curve(cos_i, p->eta); /* eta 0: ior 0's Schlick curve */
+#else
     float s = normalized_fresnel(cos_i, p->eta);
+#endif
     return p->specular * (p->f0c + (1.0f - p->f0c) * s);
 }
 

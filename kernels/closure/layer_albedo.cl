@@ -49,9 +49,16 @@ static inline float3 layer_albedo(const BsdfParams* p, float mu)
         return fresnel_specular_layer(p, mu);
     float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
     float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+#ifdef PATHCL_HAS_SCHLICK_LAYER
+    if (p->eta == 0.0f) { /* ior 0: the Schlick row, after the ior grid */
+        float b = layer_bilinear(p->layer, LAYER_TABLE_B + LAYER_ETA_RES * block, LAYER_MU_RES, p->layer_r,
+                                 LAYER_ROUGH_RES, t);
+        return p->specular * (p->f0c * (e_ss - b) + b);
+    }
+#endif
     int x0 = min((int)p->layer_x, LAYER_ETA_RES - 2);
     float fx = p->layer_x - (float)x0;
-    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
     float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
     float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
     float b = mix(b0, b1, fx);
@@ -72,6 +79,12 @@ static inline float3 layer_average(const BsdfParams* p, const Material* m)
         float fr = p->layer_r - (float)r0;
         e_ss = mix(p->layer[LAYER_TABLE_ESS_AVG + r0], p->layer[LAYER_TABLE_ESS_AVG + r0 + 1], fr);
         b = layer_bilinear(p->layer, LAYER_TABLE_B_AVG, LAYER_ROUGH_RES, p->layer_x, LAYER_ETA_RES, p->layer_r);
+#ifdef PATHCL_HAS_SCHLICK_LAYER
+        if (p->eta == 0.0f) { /* ior 0: the Schlick row */
+            __global const float* row = p->layer + LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES;
+            b = mix(row[r0], row[r0 + 1], fr);
+        }
+#endif
     }
     return p->specular * (p->f0c * (e_ss - b) + b);
 }

@@ -4,12 +4,13 @@
  * One float array over sqrt(cos theta), roughness r = sqrt(alpha) and x = (eta-1)/(eta+1),
  * each uniform on its grid and interpolated linearly:
  *   E_ss[r][mu]     albedo of the GGX reflection lobe with Fresnel 1
- *   B[x][r][mu]     albedo with the normalized Fresnel curve s(c) (closure/fresnel.h) for 1
+ *   B[x][r][mu]     albedo with the normalized Fresnel curve s(c) (closure/fresnel.h) for 1;
+ *                   one more row x = LAYER_ETA_RES with Schlick's curve (ior 0)
  *   E_ss_avg[r], B_avg[x][r]   their cosine-weighted hemispherical averages 2 int E mu dmu
  *   G_out[x'][r][mu], G_in[x'][r][mu]   energy albedo (reflection + refraction) of a rough
  *                   dielectric interface seen from outside (eta = ior) and inside (1/ior),
  *                   x' on a 16-point grid
- * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 270,464 bytes. */
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 274,688 bytes. */
 #ifndef PATHCL_CLOSURE_LAYER_TABLE_H
 #define PATHCL_CLOSURE_LAYER_TABLE_H
 
@@ -19,10 +20,11 @@
 #define LAYER_X_MAX 0.5f
 #define LAYER_TABLE_ESS 0
 #define LAYER_TABLE_B (LAYER_TABLE_ESS + LAYER_ROUGH_RES * LAYER_MU_RES)
-#define LAYER_TABLE_ESS_AVG (LAYER_TABLE_B + LAYER_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_B_ROWS (LAYER_ETA_RES + 1) /* the ior grid, then Schlick's curve */
+#define LAYER_TABLE_ESS_AVG (LAYER_TABLE_B + LAYER_B_ROWS * LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_B_AVG (LAYER_TABLE_ESS_AVG + LAYER_ROUGH_RES)
 #define LAYER_GLASS_ETA_RES 16 /* x in [0, 0.5] for the dielectric interface tables */
-#define LAYER_TABLE_GLASS_OUT (LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES)
+#define LAYER_TABLE_GLASS_OUT (LAYER_TABLE_B_AVG + LAYER_B_ROWS * LAYER_ROUGH_RES)
 #define LAYER_TABLE_GLASS_IN (LAYER_TABLE_GLASS_OUT + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_SIZE (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 

@@ -33,8 +33,12 @@ static inline void apply_material_inputs(Material* m, SurfacePoint* sp, float3 w
         m->base_color.xyz *= texture_at(kd, m->textures[TEXTURE_SLOT_BASE_COLOR], tri, hit.b1, hit.b2).xyz;
     if (m->textures[TEXTURE_SLOT_METALLIC_ROUGHNESS] != TEXTURE_NONE) {
         float4 mr = texture_at(kd, m->textures[TEXTURE_SLOT_METALLIC_ROUGHNESS], tri, hit.b1, hit.b2);
-        m->roughness *= mr.y;
-        m->metallic *= mr.z;
+        if (m->flags & MATERIAL_GLOSSINESS) {
+            m->roughness = 1.0f - m->roughness * mr.w;
+        } else {
+            m->roughness *= mr.y;
+            m->metallic *= mr.z;
+        }
     }
     if (m->textures[TEXTURE_SLOT_EMISSIVE] != TEXTURE_NONE)
         m->emission.xyz *= texture_at(kd, m->textures[TEXTURE_SLOT_EMISSIVE], tri, hit.b1, hit.b2).xyz;

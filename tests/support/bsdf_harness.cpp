@@ -21,7 +21,8 @@ pcl_float4 f4(const glm::dvec3& v)
 
 const cl::Program& full_program()
 {
-    static cl::Program p = test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION);
+    static cl::Program p =
+        test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER);
     return p;
 }
 
@@ -85,8 +86,20 @@ std::vector<MaterialSpec> reflective_materials()
     tinted.specular_color = {2.0f, 1.0f, 0.2f};
     MaterialSpec half = conductor(0.7f, {0.9f, 0.5f, 0.1f});
     half.metallic = 0.3f;
-    return {
-        lambertian({0.5f, 0.6f, 0.7f}), conductor(0.2f), conductor(0.8f, {0.9f, 0.6f, 0.3f}), plastic, tinted, half};
+    // KHR_materials_pbrSpecularGlossiness as pathcl reads it: ior 0, the specular colour
+    // is F0 (Schlick's curve).
+    MaterialSpec spec_gloss = lambertian({0.4f, 0.3f, 0.2f});
+    spec_gloss.specular = 1.0f;
+    spec_gloss.specular_color = {0.5f, 0.3f, 0.1f};
+    spec_gloss.ior = 0.0f;
+    spec_gloss.roughness = 0.5f;
+    return {lambertian({0.5f, 0.6f, 0.7f}),
+            conductor(0.2f),
+            conductor(0.8f, {0.9f, 0.6f, 0.3f}),
+            plastic,
+            tinted,
+            half,
+            spec_gloss};
 }
 
 glm::dvec3 incident(double c)

@@ -31,8 +31,9 @@ Material make_material(const MaterialSpec& s);
 MaterialSpec conductor(float roughness, glm::vec3 base = glm::vec3(1.0f));
 MaterialSpec dielectric(float roughness, float ior = 1.5f, bool thin = false);
 MaterialSpec lambertian(glm::vec3 base);
-// Lambertian, rough conductors, plastics (plain and tinted specular) and a part metal: the
-// reflective materials the eval and energy tests sweep.
+// Lambertian, rough conductors, plastics (plain and tinted specular), a part metal and a
+// specular-glossiness (ior 0) material: the reflective materials the eval and energy
+// tests sweep.
 std::vector<MaterialSpec> reflective_materials();
 
 // wo at angle theta from +Z with cos theta = c, in the xz plane turned by 0.3 rad about Z

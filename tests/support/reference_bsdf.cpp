@@ -79,11 +79,14 @@ bool ReferenceBsdf::rough() const
 }
 
 // The dielectric layer: KHR_materials_specular's F0 colour and weight, with the exact
-// Fresnel curve normalized to run from F0 (normal incidence) to 1 (grazing or TIR).
+// Fresnel curve normalized to run from F0 (normal incidence) to 1 (grazing or TIR); ior
+// 0 (specular-glossiness mode): F0 = 1 and Schlick's (1 - c)^5.
 static glm::dvec3 layer_fresnel(const ReferenceBsdf& b, double cos_h)
 {
     double r = (b.ior - 1.0) / (b.ior + 1.0), f0 = r * r;
     double s = f0 < 1.0 ? std::clamp((fresnel_dielectric(cos_h, b.eta) - f0) / (1.0 - f0), 0.0, 1.0) : 1.0;
+    if (b.ior == 0.0)
+        s = std::pow(1.0 - std::clamp(cos_h, 0.0, 1.0), 5.0);
     glm::dvec3 f0c = glm::min(f0 * b.specular_color, glm::dvec3(1.0));
     return b.specular * (f0c + (glm::dvec3(1.0) - f0c) * s);
 }
@@ -114,7 +117,7 @@ glm::dvec3 ReferenceBsdf::layer_albedo(double mu) const
 {
     glm::dvec3 f0c = f0_colour(*this);
     if (!rough()) {
-        double s = normalized_fresnel(mu, eta);
+        double s = ior == 0.0 ? std::pow(1.0 - std::clamp(mu, 0.0, 1.0), 5.0) : normalized_fresnel(mu, eta);
         return specular * (f0c + (glm::dvec3(1.0) - f0c) * s);
     }
     const std::vector<float>& t = layer_albedo_table();
@@ -127,6 +130,8 @@ glm::dvec3 ReferenceBsdf::layer_albedo(double mu) const
     double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
     double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
     double b = b0 + (x - x0) * (b1 - b0);
+    if (ior == 0.0) // the Schlick row after the ior grid
+        b = table_at(t, LAYER_TABLE_B + LAYER_ETA_RES * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
     return specular * (f0c * (e_ss - b) + b);
 }
 
@@ -143,6 +148,8 @@ glm::dvec3 ReferenceBsdf::layer_average() const
         double row = roughness * (LAYER_ROUGH_RES - 1), x = std::clamp(r / LAYER_X_MAX, 0.0, 1.0) * (LAYER_ETA_RES - 1);
         e_ss = table_at(t, LAYER_TABLE_ESS_AVG, LAYER_ROUGH_RES, 0.0, 2, row);
         b = table_at(t, LAYER_TABLE_B_AVG, LAYER_ROUGH_RES, x, LAYER_ETA_RES, row);
+        if (ior == 0.0)
+            b = table_at(t, LAYER_TABLE_B_AVG + LAYER_ETA_RES * LAYER_ROUGH_RES, LAYER_ROUGH_RES, 0.0, 2, row);
     }
     return specular * (f0c * (e_ss - b) + b);
 }
