@@ -105,7 +105,7 @@ TEST(CameraImport, BadThinLensExtrasAreErrors)
 TEST(CameraImport, CameraIndexBeyondTheCameraNodesIsAnErrorNamingTheCount)
 {
     try {
-        import_gltf(one_camera(false).model, "one.gltf", "", 1);
+        import_gltf(one_camera(false).model, "one.gltf", "", {1, ""});
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("camera: there is no camera node 1: one.gltf has 1 camera node"),
@@ -116,7 +116,7 @@ TEST(CameraImport, CameraIndexBeyondTheCameraNodesIsAnErrorNamingTheCount)
     GltfBuilder b;
     b.add_root(b.add_node(
         b.add_mesh(b.add_positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, b.add_material(glm::vec3(0.5f)))));
-    EXPECT_THROW(import_gltf(b.model, "none.gltf", "", 0), Error);
+    EXPECT_THROW(import_gltf(b.model, "none.gltf", "", {0, ""}), Error);
     EXPECT_FALSE(import_gltf(b.model, "none.gltf").camera.from_file);
 }
 

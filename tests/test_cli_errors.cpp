@@ -295,6 +295,12 @@ TEST_F(Cli, CameraIndexPastTheLastCameraNode)
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
 }
 
+TEST_F(Cli, VariantTheSceneDoesNotHave)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --variant gold" + kTiny);
+    expect_clean_failure(r, "--variant: there is no material variant \"gold\"");
+}
+
 TEST_F(Cli, LookAtEqualToLookFrom)
 {
     RunResult r = run("render " + quoted(kCornell) + " -o out.exr --look-from 1,2,3 --look-at 1,2,3" + kTiny);

@@ -120,14 +120,14 @@ TEST(GltfCamera, FirstCameraNodeIsUsedAndCameraNPicksTheNth)
     EXPECT_TRUE(s.camera.orthographic);
     EXPECT_EQ(s.camera.ymag, 1.0);
     EXPECT_EQ(s.camera.position, glm::dvec3(0.0, 0.0, 9.0));
-    Scene s1 = in_world_space(import_gltf(b.model, "test.gltf", "", 1));
+    Scene s1 = in_world_space(import_gltf(b.model, "test.gltf", "", {1, ""}));
     EXPECT_FALSE(s1.camera.orthographic);
     EXPECT_EQ(s1.camera.yfov, 0.5);
     EXPECT_EQ(s1.camera.position, glm::dvec3(0.0, 0.0, 5.0));
-    Scene s2 = in_world_space(import_gltf(b.model, "test.gltf", "", 2));
+    Scene s2 = in_world_space(import_gltf(b.model, "test.gltf", "", {2, ""}));
     EXPECT_EQ(s2.camera.yfov, 0.9);
     EXPECT_EQ(s2.camera.position, glm::dvec3(0.0, 0.0, 7.0));
-    EXPECT_THROW(import_gltf(b.model, "test.gltf", "", 3), Error);
+    EXPECT_THROW(import_gltf(b.model, "test.gltf", "", {3, ""}), Error);
 }
 
 // Bounds (0..2, -1..1, 3..4) from two triangles; no camera in the file.

@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.h"
 #include "render/kernel_features.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "support/expect_error.h"
 #include "support/gltf_builder.h"
@@ -149,6 +151,104 @@ TEST(GltfMaterialExtensions, SpecularGlossinessValuesOutOfRangeAreOneLineErrors)
         << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;
 }
+}
+
+// Two triangles, each its own primitive with material 0 ("red"); the file has materials
+// green (1) and blue (2) and variants "green" and "blue". The first primitive maps
+// green -> 1 and blue -> 2; the second has no mappings.
+GltfBuilder variant_scene()
+{
+    GltfBuilder b;
+    int red = b.add_material(glm::vec3(1, 0, 0));
+    b.add_material(glm::vec3(0, 1, 0));
+    b.add_material(glm::vec3(0, 0, 1));
+    int mapped = b.add_mesh(b.add_positions(kTilted), -1, red);
+    b.add_root(b.add_node(mapped));
+    b.add_root(b.add_node(b.add_mesh(b.add_positions(kTilted), -1, red), {}, {0.0, 0.0, 5.0}));
+    auto variant = [](const char* name) {
+        tinygltf::Value::Object o;
+        o["name"] = tinygltf::Value(std::string(name));
+        return tinygltf::Value(o);
+    };
+    tinygltf::Value::Object root;
+    root["variants"] = tinygltf::Value(tinygltf::Value::Array{variant("green"), variant("blue")});
+    b.model.extensions["KHR_materials_variants"] = tinygltf::Value(root);
+    b.model.extensionsUsed = {"KHR_materials_variants"};
+    auto mapping = [](int material, std::vector<int> variants) {
+        tinygltf::Value::Object o;
+        o["material"] = tinygltf::Value(material);
+        tinygltf::Value::Array v;
+        for (int i : variants)
+            v.emplace_back(i);
+        o["variants"] = tinygltf::Value(v);
+        return tinygltf::Value(o);
+    };
+    tinygltf::Value::Object ext;
+    ext["mappings"] = tinygltf::Value(tinygltf::Value::Array{mapping(1, {0}), mapping(2, {1})});
+    b.model.meshes[static_cast<std::size_t>(mapped)].primitives[0].extensions["KHR_materials_variants"] =
+        tinygltf::Value(ext);
+    return b;
+}
+
+// The base colours of the scene's triangles, in order.
+std::vector<glm::vec3> colours(const Scene& s)
+{
+    std::vector<glm::vec3> out;
+    for (const SceneTriangle& t : s.triangles)
+        out.push_back(s.materials[static_cast<std::size_t>(t.material)].base_color);
+    return out;
+}
+
+TEST(GltfMaterialExtensions, VariantsPickTheMappedMaterialAndTheDefaultIsThePrimitivesOwn)
+{
+    // Broken variants seen to fail: the first mapping taken whatever the variant; the
+    // variant applied to primitives without mappings.
+    const glm::vec3 red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
+    GltfBuilder b = variant_scene();
+    Scene d = import_gltf(b.model, "v.gltf");
+    EXPECT_EQ(d.material_variants, (std::vector<std::string>{"green", "blue"}));
+    EXPECT_EQ(colours(d), (std::vector<glm::vec3>{red, red}));
+    EXPECT_EQ(colours(import_gltf(b.model, "v.gltf", "", {-1, "green"})), (std::vector<glm::vec3>{green, red}));
+    Scene blue_scene = import_gltf(b.model, "v.gltf", "", {-1, "blue"});
+    EXPECT_EQ(colours(blue_scene), (std::vector<glm::vec3>{blue, red}));
+    EXPECT_EQ(blue_scene.variant, "blue");
+}
+
+TEST(GltfMaterialExtensions, AVariantTheFileLacksIsAParameterErrorNamingThoseItHas)
+{
+    try {
+        import_gltf(variant_scene().model, "v.gltf", "", {-1, "gold"});
+        ADD_FAILURE() << "did not throw";
+    } catch (const ParameterError& e) {
+        EXPECT_EQ(e.parameter(), "variant");
+        EXPECT_TRUE(contains(e.what(), "no material variant \"gold\": v.gltf has \"green\", \"blue\"")) << e.what();
+    }
+    std::string none = error_of([] { import_gltf(one_triangle(kTilted).model, "t.gltf", "", {-1, "gold"}); });
+    EXPECT_TRUE(contains(none, "t.gltf has none")) << none;
+}
+
+TEST(GltfMaterialExtensions, MalformedVariantMappingsAreErrorsNamingThePrimitive)
+{
+    // Checked whatever the variant chosen (here the default).
+    auto with_mapping = [](const std::function<void(tinygltf::Value::Object&)>& edit) {
+        GltfBuilder b = variant_scene();
+        tinygltf::Value::Object m;
+        m["material"] = tinygltf::Value(1);
+        m["variants"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(0)});
+        edit(m);
+        tinygltf::Value::Object ext;
+        ext["mappings"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(m)});
+        b.model.meshes[0].primitives[0].extensions["KHR_materials_variants"] = tinygltf::Value(ext);
+        return error_of([&] { import_gltf(b.model, "v.gltf"); });
+    };
+    std::string e = with_mapping([](tinygltf::Value::Object& m) { m["material"] = tinygltf::Value(3); });
+    EXPECT_TRUE(contains(e, "v.gltf: node 0") && contains(e, "mapping 0: material must be the index")) << e;
+    e = with_mapping([](tinygltf::Value::Object& m) {
+        m["variants"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(2)});
+    });
+    EXPECT_TRUE(contains(e, "mapping 0: variants lists a variant that does not exist")) << e;
+    e = with_mapping([](tinygltf::Value::Object& m) { m.erase("variants"); });
+    EXPECT_TRUE(contains(e, "mapping 0: variants must be a non-empty array")) << e;
 }
 
 } // namespace

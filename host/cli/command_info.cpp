@@ -15,6 +15,7 @@ namespace {
 
 struct InfoRequest {
     std::string scene_path;
+    std::string variant; // --variant NAME
     RenderOptions options;
     int device = 0;
 };
@@ -29,7 +30,7 @@ std::string join(const std::vector<std::string>& items)
 
 int run_info(const InfoRequest& rq)
 {
-    Scene scene = load_gltf(rq.scene_path);
+    Scene scene = load_gltf(rq.scene_path, {-1, rq.variant});
     SceneSummary s = summarize_scene(scene);
     std::printf("scene        %s\n", rq.scene_path.c_str());
     std::printf("triangles    %zu (%zu degenerate dropped at load)\n", s.triangles, s.dropped_degenerate);
@@ -44,6 +45,13 @@ int run_info(const InfoRequest& rq)
     std::printf("textures     %zu images, %.3g Mtexels%s\n", s.images, static_cast<double>(s.texels) / 1e6,
                 s.vertex_colors ? "; vertex colours" : "");
     std::printf("environment  %s\n", s.environment.c_str());
+    if (!scene.material_variants.empty()) {
+        std::vector<std::string> quoted;
+        for (const std::string& v : scene.material_variants)
+            quoted.push_back("\"" + v + "\"");
+        std::printf("variants     %s; materials of %s\n", join(quoted).c_str(),
+                    scene.variant.empty() ? "the default" : ("\"" + scene.variant + "\"").c_str());
+    }
     std::printf("camera       %s\n", s.camera.c_str());
 
     KernelFeatures features = kernel_features(scene, rq.options);
@@ -66,6 +74,7 @@ Command add_info_command(CLI::App& app)
     CLI::App* info = app.add_subcommand("info", "What a scene uses and the kernel variant it compiles");
     info->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
     add_program_options(info, rq->options);
+    add_variant_option(info, rq->variant);
     info->add_option("--device", rq->device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
     return {info, [rq] { return run_info(*rq); }};
 }

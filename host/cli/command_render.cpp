@@ -118,6 +118,7 @@ struct RenderRequest {
     DisplayTransform display; // PNG outputs: --exposure EV, --tone
     std::string tone = "clip";
     std::string sample_range; // --sample-range FIRST:COUNT
+    std::string variant;      // --variant NAME
 };
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
@@ -162,7 +163,7 @@ int run_render(RenderRequest rq)
         check_ray_log_path(rq.ray_log);
     if (rq.camera.camera < -1)
         throw Error("--camera must be >= 0");
-    Scene scene = load_gltf(rq.scene_path, rq.camera.camera);
+    Scene scene = load_gltf(rq.scene_path, {rq.camera.camera, rq.variant});
     apply_environment_flags(scene, rq.environment);
     apply_camera_overrides(scene, rq.camera.overrides());
     std::vector<std::string> inputs = scene.input_files;
@@ -363,6 +364,7 @@ Command add_render_command(CLI::App& app)
                      "the whole render's image bit for bit")
         ->type_name("FIRST:COUNT");
     add_program_options(render, rq->options);
+    add_variant_option(render, rq->variant);
     return {render, [rq] { return run_render(*rq); }};
 }
 

@@ -121,6 +121,13 @@ void add_program_options(CLI::App* command, RenderOptions& options)
                       "render them; for cross-checks)");
 }
 
+void add_variant_option(CLI::App* command, std::string& variant)
+{
+    command->add_option("--variant", variant,
+                        "KHR_materials_variants variant to render the scene's materials in (default: the file's own "
+                        "materials; 'pathcl info' lists the variants)");
+}
+
 std::string flag_for(const std::string& parameter)
 {
     static const std::map<std::string, std::string> renamed = {{"time_budget", "--time"}};

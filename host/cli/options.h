@@ -30,4 +30,7 @@ void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::stri
 // The flag of a library parameter ("look_at" -> "--look-at").
 std::string flag_for(const std::string& parameter);
 
+// --variant NAME: the KHR_materials_variants variant the scene is loaded in.
+void add_variant_option(CLI::App* command, std::string& variant);
+
 } // namespace pathcl::cli

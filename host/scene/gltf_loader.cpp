@@ -24,6 +24,7 @@
 #include "scene/gltf_primitives.h"
 #include "scene/gltf_schema.h"
 #include "scene/gltf_textures.h"
+#include "scene/gltf_variants.h"
 #include "scene/pending_geometry.h"
 #include "scene/render_space.h"
 
@@ -61,7 +62,7 @@ struct Importer {
     Scene scene;
     PendingGeometry geometry; // the triangles, in world space until the render-space origin is known
     PrimitiveImporter primitives;
-    int camera_choice = -1; // camera node to use (depth-first order); -1: the first, if any
+    SceneChoice choice;
 
     void run()
     {
@@ -70,6 +71,7 @@ struct Importer {
                                                         "KHR_materials_transmission",
                                                         "KHR_materials_ior",
                                                         "KHR_materials_pbrSpecularGlossiness",
+                                                        "KHR_materials_variants",
                                                         "KHR_materials_volume",
                                                         "KHR_lights_punctual",
                                                         "KHR_texture_transform",
@@ -83,6 +85,10 @@ struct Importer {
             if (!supported.count(ext))
                 warn(source + ": ignores the extension " + ext + " (what it adds is not rendered)");
 
+        scene.material_variants = material_variants(model, source);
+        scene.variant = choice.variant;
+        primitives.choose_variant(variant_index(scene.material_variants, choice.variant, source),
+                                  scene.material_variants.size());
         scene.materials = import_materials(model, textures, source);
         plan_attributes(scene.materials, geometry);
 
@@ -151,7 +157,7 @@ struct Importer {
     {
         bool have_camera = false;
         int camera_nodes = 0; // camera nodes seen so far, in depth-first order
-        const int wanted_camera = std::max(camera_choice, 0);
+        const int wanted_camera = std::max(choice.camera, 0);
         struct Item {
             int node;
             glm::dmat4 parent;
@@ -190,8 +196,8 @@ struct Importer {
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
                 stack.push_back({*it, world});
         }
-        if (camera_choice >= 0 && !have_camera)
-            throw ParameterError("camera", "there is no camera node " + std::to_string(camera_choice) + ": " + source +
+        if (choice.camera >= 0 && !have_camera)
+            throw ParameterError("camera", "there is no camera node " + std::to_string(choice.camera) + ": " + source +
                                                " has " + std::to_string(camera_nodes) + " camera node" +
                                                (camera_nodes == 1 ? "" : "s") + " (counted from 0)");
         return have_camera;
@@ -200,15 +206,16 @@ struct Importer {
 
 } // namespace
 
-Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir, int camera)
+Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir,
+                  const SceneChoice& choice)
 {
     Importer importer(model, source, base_dir);
-    importer.camera_choice = camera;
+    importer.choice = choice;
     importer.run();
     return std::move(importer.scene);
 }
 
-Scene load_gltf(const std::string& path, int camera)
+Scene load_gltf(const std::string& path, const SceneChoice& choice)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
@@ -238,7 +245,7 @@ Scene load_gltf(const std::string& path, int camera)
     if (!ok)
         throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
     Importer importer(model, path, base_dir);
-    importer.camera_choice = camera;
+    importer.choice = choice;
     importer.textures.set_refusals(&files.refusals());
     importer.run();
     importer.scene.input_files = files.files_read();

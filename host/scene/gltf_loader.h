@@ -14,15 +14,24 @@ class Model;
 
 namespace pathcl {
 
-// Loads a file; throws pathcl::Error("FILE: what is wrong") on any problem. `camera`
-// picks the camera node (perspective or orthographic) by its place among the default
-// scene's camera nodes in depth-first node order, counted from 0 (--camera N); -1 takes
-// the first one if there is any, else a camera framing the scene.
-Scene load_gltf(const std::string& path, int camera = -1);
+// What a file offers a choice of.
+struct SceneChoice {
+    // The camera node (perspective or orthographic) by its place among the default
+    // scene's camera nodes in depth-first node order, counted from 0 (--camera N); -1
+    // takes the first one if there is any, else a camera framing the scene.
+    int camera = -1;
+    // The KHR_materials_variants variant by name (--variant NAME); "" the default
+    // materials.
+    std::string variant;
+};
+
+// Loads a file; throws pathcl::Error("FILE: what is wrong") on any problem, and
+// ParameterError("camera" or "variant", ...) for a choice the file does not offer.
+Scene load_gltf(const std::string& path, const SceneChoice& choice = {});
 
 // Imports an already parsed model; `source` names it in error messages; `base_dir` is
 // where relative URIs (the environment map in scene extras) resolve, if anywhere.
 Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir = "",
-                  int camera = -1);
+                  const SceneChoice& choice = {});
 
 } // namespace pathcl

@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_variants.h"
 #include "scene/tangents.h"
 #include "scene/texture_slots.h"
 
@@ -96,7 +97,8 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
         for (std::size_t i = 0; i < nr.count(); ++i)
             n[i] = normal_matrix * glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
     }
-    int material = material_for(prim.material);
+    int material =
+        material_for(variant_material(prim, variant_, variant_count_, model_.materials.size(), source_ + ": " + what));
     std::vector<std::uint32_t> tris = triangle_indices(prim, p.size(), what);
     tris.resize(tris.size() / 3 * 3);
     VertexAttributes attr = read_vertex_attributes(prim, material, pos, tris, what);

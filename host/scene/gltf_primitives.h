@@ -42,6 +42,14 @@ public:
 
     std::size_t skipped_points_lines() const { return skipped_points_lines_; }
 
+    // Primitives take their material in KHR_materials_variants variant `variant` (-1: the
+    // default) of the file's `count`.
+    void choose_variant(int variant, std::size_t count)
+    {
+        variant_ = variant;
+        variant_count_ = count;
+    }
+
 private:
     struct VertexAttributes;
 
@@ -61,6 +69,8 @@ private:
     // may be integers (texture coordinates unnormalized too).
     bool quantized_ = false;
     int default_material_ = -1;
+    int variant_ = -1;
+    std::size_t variant_count_ = 0;
     std::size_t skipped_points_lines_ = 0;
 };
 

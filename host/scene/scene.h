@@ -164,6 +164,10 @@ struct Scene {
     std::size_t dropped_degenerate = 0; // zero-area triangles dropped at load
     std::size_t repaired_normals = 0;   // zero-length or NaN vertex normals replaced by the geometric one
     glm::dvec3 render_origin{0.0};      // world position of the render-space origin
+    // KHR_materials_variants: the file's variant names, and the one its triangles took
+    // their materials from ("" the default).
+    std::vector<std::string> material_variants;
+    std::string variant;
     // The files it was read from (the glTF file, its buffers and images; the environment
     // map is environment.path): no output may replace one of them.
     std::vector<std::string> input_files;

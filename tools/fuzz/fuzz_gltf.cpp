@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string path = fuzz::scratch_directory("gltf") + (glb ? "/scene.glb" : "/scene.gltf");
     fuzz::write_file(path, data, size);
     try {
-        pathcl::Scene scene = pathcl::load_gltf(path, -1);
+        pathcl::Scene scene = pathcl::load_gltf(path);
         (void)scene;
     } catch (const std::exception&) {
         // Rejected: what a bad file should get.
