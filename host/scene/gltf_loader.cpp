@@ -108,6 +108,9 @@ struct Importer {
         if (primitives.skipped_points_lines())
             warn(source + ": skipped " + std::to_string(primitives.skipped_points_lines()) +
                  " point and line primitives (only triangles are rendered)");
+        if (primitives.ignored_morph_attributes())
+            warn(source + ": ignores " + std::to_string(primitives.ignored_morph_attributes()) +
+                 " morph targets of attributes other than POSITION, NORMAL and TANGENT");
         if (scene.dropped_degenerate)
             warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
                  " degenerate (zero-area) triangles");
@@ -179,7 +182,8 @@ struct Importer {
                 for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
                     primitives.import_primitive(mesh.primitives[i], world,
                                                 what + " mesh " + std::to_string(node.mesh) + " primitive " +
-                                                    std::to_string(i));
+                                                    std::to_string(i),
+                                                node.weights.empty() ? mesh.weights : node.weights);
             }
             auto light_ext = node.extensions.find("KHR_lights_punctual");
             if (light_ext != node.extensions.end() && light_ext->second.Has("light"))

@@ -56,7 +56,7 @@ struct PrimitiveImporter::VertexAttributes {
 };
 
 void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, const glm::dmat4& world,
-                                         const std::string& what)
+                                         const std::string& what, const std::vector<double>& morph_weights)
 {
     tinygltf::Primitive prim = prim_in;
     if (prim.mode < 0) // unset (tinygltf's -1): glTF's default is triangles
@@ -75,9 +75,12 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
         pos.fail("POSITION must be VEC3");
     if (!pos.is_float() && !quantized_)
         pos.fail("POSITION must be FLOAT (integer positions need KHR_mesh_quantization)");
+    morph_ = morph_deltas(model_, prim, morph_weights, pos.count(), quantized_, source_, what);
+    ignored_morph_attributes_ += morph_.ignored_attributes;
     std::vector<glm::dvec3> p(pos.count());
     for (std::size_t i = 0; i < pos.count(); ++i) {
-        glm::dvec4 w = world * glm::dvec4(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2), 1.0);
+        glm::dvec3 o = object_position(pos, i);
+        glm::dvec4 w = world * glm::dvec4(o, 1.0);
         p[i] = glm::dvec3(w);
         if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y) || !std::isfinite(p[i].z))
             pos.fail("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
@@ -95,7 +98,7 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
             nr.fail("NORMAL must be FLOAT (integer normals need KHR_mesh_quantization)");
         n.resize(nr.count());
         for (std::size_t i = 0; i < nr.count(); ++i)
-            n[i] = normal_matrix * glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
+            n[i] = normal_matrix * object_normal(nr, i);
     }
     int material =
         material_for(variant_material(prim, variant_, variant_count_, model_.materials.size(), source_ + ": " + what));
@@ -145,6 +148,18 @@ void PrimitiveImporter::import_primitive(const tinygltf::Primitive& prim_in, con
             geometry_.colors.push_back(c);
         }
     }
+}
+
+glm::dvec3 PrimitiveImporter::object_position(const AccessorReader& pos, std::size_t i) const
+{
+    glm::dvec3 v(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2));
+    return morph_.position.empty() ? v : v + morph_.position[i];
+}
+
+glm::dvec3 PrimitiveImporter::object_normal(const AccessorReader& nr, std::size_t i) const
+{
+    glm::dvec3 v(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
+    return morph_.normal.empty() ? v : v + morph_.normal[i];
 }
 
 int PrimitiveImporter::material_for(int gltf_material)
@@ -273,7 +288,10 @@ std::vector<glm::dvec4> PrimitiveImporter::object_tangents(const tinygltf::Primi
             r.fail("TANGENT must be FLOAT (integer tangents need KHR_mesh_quantization)");
         std::vector<glm::dvec4> t(r.count());
         for (std::size_t i = 0; i < r.count(); ++i) {
-            t[i] = glm::dvec4(r.get(i, 0), r.get(i, 1), r.get(i, 2), r.get(i, 3) < 0.0 ? -1.0 : 1.0);
+            glm::dvec3 xyz(r.get(i, 0), r.get(i, 1), r.get(i, 2));
+            if (!morph_.tangent.empty())
+                xyz += morph_.tangent[i];
+            t[i] = glm::dvec4(xyz, r.get(i, 3) < 0.0 ? -1.0 : 1.0);
             if (!std::isfinite(t[i].x) || !std::isfinite(t[i].y) || !std::isfinite(t[i].z))
                 r.fail("vertex " + std::to_string(i) + " has a NaN or infinite tangent");
         }
@@ -283,12 +301,12 @@ std::vector<glm::dvec4> PrimitiveImporter::object_tangents(const tinygltf::Primi
     }
     std::vector<glm::dvec3> positions(pos.count()), normals;
     for (std::size_t i = 0; i < pos.count(); ++i)
-        positions[i] = glm::dvec3(pos.get(i, 0), pos.get(i, 1), pos.get(i, 2));
+        positions[i] = object_position(pos, i);
     if (nrm_it != prim.attributes.end()) {
         AccessorReader nr(model_, nrm_it->second, what + " NORMAL", source_);
         normals.resize(nr.count());
         for (std::size_t i = 0; i < nr.count(); ++i)
-            normals[i] = glm::dvec3(nr.get(i, 0), nr.get(i, 1), nr.get(i, 2));
+            normals[i] = object_normal(nr, i);
     }
     AccessorReader ur(model_, prim.attributes.at("TEXCOORD_" + std::to_string(texcoord)),
                       what + " TEXCOORD_" + std::to_string(texcoord), source_);

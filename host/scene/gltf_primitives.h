@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/gltf_morph_targets.h"
 #include "scene/pending_geometry.h"
 #include "scene/scene.h"
 
@@ -37,10 +38,14 @@ public:
 
     // The triangles of `prim` on a node with world transform `world`; `what` names the
     // primitive in errors ("node 2 'floor' mesh 0 primitive 1"). Points and lines are
-    // skipped and counted.
-    void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& what);
+    // skipped and counted. `morph_weights`: the node's weights, else the mesh's (morph
+    // targets are applied at them).
+    void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& what,
+                          const std::vector<double>& morph_weights = {});
 
     std::size_t skipped_points_lines() const { return skipped_points_lines_; }
+    // Morph targets of attributes other than POSITION, NORMAL and TANGENT, not applied.
+    std::size_t ignored_morph_attributes() const { return ignored_morph_attributes_; }
 
     // Primitives take their material in KHR_materials_variants variant `variant` (-1: the
     // default) of the file's `count`.
@@ -54,6 +59,9 @@ private:
     struct VertexAttributes;
 
     int material_for(int gltf_material);
+    // Vertex i's object-space position and normal, morphed.
+    glm::dvec3 object_position(const AccessorReader& pos, std::size_t i) const;
+    glm::dvec3 object_normal(const AccessorReader& nr, std::size_t i) const;
     std::vector<std::uint32_t> triangle_indices(const tinygltf::Primitive& prim, std::size_t vertex_count,
                                                 const std::string& what);
     VertexAttributes read_vertex_attributes(const tinygltf::Primitive& prim, int material, const AccessorReader& pos,
@@ -72,6 +80,8 @@ private:
     int variant_ = -1;
     std::size_t variant_count_ = 0;
     std::size_t skipped_points_lines_ = 0;
+    std::size_t ignored_morph_attributes_ = 0;
+    MorphDeltas morph_; // the primitive being imported's
 };
 
 } // namespace pathcl
