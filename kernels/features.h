@@ -28,7 +28,8 @@
 #define FEATURE_ALPHA (1u << 13)             /* a triangle whose material's alphaMode MASK or BLEND can cut it */
 #define FEATURE_VOLUME_ABSORPTION (1u << 14) /* a solid transmissive material with KHR_materials_volume attenuation */
 #define FEATURE_SCHLICK_LAYER (1u << 15)     /* a material with KHR_materials_ior ior 0 (specular-glossiness mode) */
-#define FEATURE_ALL ((1u << 16) - 1u)
+#define FEATURE_UNLIT (1u << 16)             /* a KHR_materials_unlit material */
+#define FEATURE_ALL ((1u << 17) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -83,6 +84,9 @@
 #endif
 #if PATHCL_FEATURES & FEATURE_SCHLICK_LAYER
 #define PATHCL_HAS_SCHLICK_LAYER
+#endif
+#if PATHCL_FEATURES & FEATURE_UNLIT
+#define PATHCL_HAS_UNLIT
 #endif
 
 /* Derived guards. */

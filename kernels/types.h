@@ -116,9 +116,11 @@ typedef struct {
 #define MATERIAL_THIN_WALLED 2  /* transmission without KHR_materials_volume thickness > 0 */
 #define MATERIAL_ALPHA_MASK 4   /* alphaMode MASK: alpha below alpha_cutoff is no surface */
 #define MATERIAL_ALPHA_BLEND 8  /* alphaMode BLEND: alpha is the surface's coverage */
-#define MATERIAL_GLOSSINESS                                                                                            \
-    16 /* the roughness slot holds a specularGlossinessTexture: roughness =                                            \
-          1 - roughness x its alpha (roughness holds glossinessFactor) */
+/* The roughness slot holds a specularGlossinessTexture: roughness = 1 - roughness x its
+ * alpha (roughness holds glossinessFactor). */
+#define MATERIAL_GLOSSINESS 16
+/* KHR_materials_unlit: the base colour is seen through delta chains; scatters nothing. */
+#define MATERIAL_UNLIT 32
 
 /* No texture (a texture field's value when the material has none). */
 #define TEXTURE_NONE (-1)

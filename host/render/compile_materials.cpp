@@ -21,7 +21,7 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.flags = (m.double_sided ? MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? MATERIAL_THIN_WALLED : 0u) |
                    (m.alpha_mode == AlphaMode::Mask ? MATERIAL_ALPHA_MASK : 0u) |
                    (m.alpha_mode == AlphaMode::Blend ? MATERIAL_ALPHA_BLEND : 0u) |
-                   (m.glossiness_texture ? MATERIAL_GLOSSINESS : 0u);
+                   (m.glossiness_texture ? MATERIAL_GLOSSINESS : 0u) | (m.unlit ? MATERIAL_UNLIT : 0u);
         dm.alpha_cutoff = m.alpha_cutoff;
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;

@@ -26,6 +26,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_TRANSMISSION, m.transmission > 0.0f);
         set(FEATURE_VOLUME_ABSORPTION, m.absorbs());
         set(FEATURE_SCHLICK_LAYER, m.ior == 0.0f);
+        set(FEATURE_UNLIT, m.unlit);
         set(FEATURE_TEXTURES, m.has_textures());
         set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
     }
@@ -71,10 +72,11 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "single-scattering",
                                         "alpha",
                                         "volume-absorption",
-                                        "schlick-layer"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 16 && FEATURE_ALL == (1u << 16) - 1u);
+                                        "schlick-layer",
+                                        "unlit"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 17 && FEATURE_ALL == (1u << 17) - 1u);
     std::vector<std::string> out;
-    for (std::uint32_t b = 0; b < 16; ++b)
+    for (std::uint32_t b = 0; b < 17; ++b)
         if (mask & (1u << b))
             out.push_back(names[b]);
     return out;

@@ -72,6 +72,7 @@ struct Importer {
                                                         "KHR_materials_ior",
                                                         "KHR_materials_pbrSpecularGlossiness",
                                                         "KHR_materials_variants",
+                                                        "KHR_materials_unlit",
                                                         "KHR_materials_volume",
                                                         "KHR_lights_punctual",
                                                         "KHR_texture_transform",

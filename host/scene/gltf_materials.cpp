@@ -160,6 +160,9 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     }
     if (spec_gloss)
         import_specular_glossiness(sg->second, out, textures, source, where);
+    out.unlit = m.extensions.count("KHR_materials_unlit") != 0;
+    if (out.unlit)
+        out.emission = glm::vec3(0.0f); // unlit: the base colour is all it shows, and it is no light
     if (out.ior == 0.0f && out.transmission > 0.0f) {
         // ior 0 makes the interface's Fresnel term 1: no light enters the solid.
         warn(source + ": " + where +

@@ -76,6 +76,9 @@ struct SceneMaterial {
     // (roughness above is 1 - glossiness, its value where the alpha is 1).
     bool glossiness_texture = false;
     float glossiness = 1.0f;
+    // KHR_materials_unlit: the base colour is seen as radiance (directly and through delta
+    // bounces); the material lights and scatters nothing (kernels/integrator/shade_surface.cl).
+    bool unlit = false;
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     // Whether light can travel inside it (a solid that transmits) and be absorbed there.

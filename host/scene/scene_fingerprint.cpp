@@ -67,6 +67,8 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(m.alpha);
             f.add(m.alpha_cutoff);
         }
+        if (m.unlit)
+            f.add(2);
         if (m.glossiness_texture) {
             f.add(1);
             f.add(m.glossiness);

@@ -46,6 +46,10 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         }
         float3 wo = -ps.dir;
         ShadingPoint s = shade_surface_setup(&kd, hit, wo);
+#ifdef PATHCL_HAS_UNLIT
+        if (shade_unlit(&ps, &s))
+            break;
+#endif
         shade_surface_emission(&kd, &frame, &ps, &s, hit, wo);
         if (depth >= frame.max_bounces || !surface_scatters(&s))
             break;

@@ -14,6 +14,9 @@ typedef struct {
 #ifdef PATHCL_HAS_VOLUME_ABSORPTION
     int medium; /* the solid the ray travels inside (its material), -1: outside every solid */
 #endif
+#ifdef PATHCL_HAS_UNLIT
+    bool specular_chain; /* every bounce so far was a delta lobe: unlit surfaces are seen */
+#endif
 } PathState;
 
 /* A path starting along a camera ray. */
@@ -30,6 +33,9 @@ static inline PathState path_state_start(Ray ray)
     ps.prev_technique_bsdf = true;
 #ifdef PATHCL_HAS_VOLUME_ABSORPTION
     ps.medium = -1; /* cameras are outside every solid */
+#endif
+#ifdef PATHCL_HAS_UNLIT
+    ps.specular_chain = true;
 #endif
     return ps;
 }

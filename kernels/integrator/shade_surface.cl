@@ -50,6 +50,23 @@ static inline void shade_surface_emission(const KernelData* kd, const FrameParam
 #endif
 }
 
+#ifdef PATHCL_HAS_UNLIT
+/* KHR_materials_unlit: the base colour (with its texture and vertex colour) is radiance
+ * that the camera sees, directly or through mirrors and smooth glass (a chain of delta
+ * bounces); it lights nothing else (it is no light, and a path that reaches it after a
+ * rough bounce gets nothing), scatters nothing, and blocks light like any surface. Only
+ * its front face shows it, unless it is double-sided. True: the path ends here. */
+static inline bool shade_unlit(PathState* ps, const ShadingPoint* s)
+{
+    if (!(s->material.flags & MATERIAL_UNLIT))
+        return false;
+    bool seen = s->sp.front_face || (s->material.flags & MATERIAL_DOUBLE_SIDED);
+    if (ps->specular_chain && seen)
+        ps->radiance += ps->beta * s->material.base_color.xyz;
+    return true;
+}
+#endif
+
 /* A single-sided opaque surface seen from behind is black but still blocks light. A
  * transmissive one is an interface from both sides: a solid's back face is its inside, a
  * thin sheet lets light through either way. */

@@ -31,6 +31,9 @@ static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 w
 #ifdef PATHCL_HAS_VOLUME_ABSORPTION
     ps->medium = medium_after(ps->medium, s, bs.wi);
 #endif
+#ifdef PATHCL_HAS_UNLIT
+    ps->specular_chain = ps->specular_chain && bs.delta;
+#endif
     return true;
 }
 
