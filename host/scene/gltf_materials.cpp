@@ -1,6 +1,7 @@
-// import_materials: the core material (alpha included) and its extensions (volume
-// attenuation included) (emissive strength, specular,
-// transmission, ior, volume), the texture of each slot, then the range check.
+// import_materials: the core material (alpha included), its extensions (emissive
+// strength, specular, transmission, ior (0 included), volume with attenuation, unlit; a
+// pbrSpecularGlossiness material replaces the metallic-roughness part), the texture of
+// each slot, then the range check.
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
