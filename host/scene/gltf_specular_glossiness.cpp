@@ -44,9 +44,6 @@ void import_specular_glossiness(const tinygltf::Value& sg, SceneMaterial& out, T
     out.transmission = defaults.transmission;
     out.thin_walled = defaults.thin_walled;
     out.absorption = defaults.absorption;
-    for (int slot = 0; slot < TEXTURE_SLOT_COUNT; ++slot)
-        if (specular_glossiness_replaces(slot))
-            out.textures[static_cast<std::size_t>(slot)] = SceneTexture{};
     if (sg.Has("diffuseTexture"))
         out.textures[TEXTURE_SLOT_BASE_COLOR] = textures.read(sg.Get("diffuseTexture"), where + " diffuseTexture");
     if (sg.Has("specularGlossinessTexture")) {

@@ -20,11 +20,12 @@ namespace pathcl {
 class TextureImporter;
 
 // Whether the extension replaces the metallic-roughness texture of `slot` (its own
-// textures or none take that slot's place).
+// textures or none take that slot's place): the material importer reads no texture into
+// such a slot (nor decodes the fallback's images).
 bool specular_glossiness_replaces(int slot);
 
-// Sets `out`'s metallic-roughness factors and the replaced slots from the extension
-// object `sg`. Throws pathcl::Error("SOURCE: material N (name): ...") for a factor
+// Sets `out`'s metallic-roughness factors, and the replaced slots it has textures for,
+// from the extension object `sg`. Throws pathcl::Error("SOURCE: material N (name): ...") for a factor
 // outside its range.
 void import_specular_glossiness(const tinygltf::Value& sg, SceneMaterial& out, TextureImporter& textures,
                                 const std::string& source, const std::string& where);
