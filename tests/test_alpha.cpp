@@ -38,8 +38,7 @@ using test::slanted_down;
 int add_card(test::GltfBuilder& b, float y, float albedo, int* mesh_out = nullptr)
 {
     int mat = b.add_material(glm::vec3(albedo), glm::vec3(0.0f), true);
-    int mesh = b.add_mesh(b.add_positions({{-1, y, -1}, {-1, y, 1}, {1, y, 1}, {1, y, -1}}),
-                          b.add_indices({0, 1, 2, 0, 2, 3}, kU16), mat);
+    int mesh = b.add_quad_mesh({{-1, y, -1}, {-1, y, 1}, {1, y, 1}, {1, y, -1}}, mat);
     b.set_attribute(mesh, "TEXCOORD_0", b.add_texcoords({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));
     b.add_root(b.add_node(mesh));
     if (mesh_out)
@@ -262,11 +261,9 @@ TEST(Alpha, CutEmitterBehindASheetRendersTheSameByEveryStrategy)
     // samples ignoring the emitter's cut-outs (nee, mis); shadow rays blocked by the sheet.
     test::GltfBuilder b;
     int floor_mat = b.add_material(glm::vec3(0.7f));
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), floor_mat)));
+    b.add_root(b.add_node(b.add_quad_mesh({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}, floor_mat)));
     int light_mat = b.add_material(glm::vec3(0.0f), glm::vec3(1.0f), false, 4.0);
-    int light = b.add_mesh(b.add_positions({{-1, 1.5, 1}, {-1, 1.5, -1}, {1, 1.5, -1}, {1, 1.5, 1}}),
-                           b.add_indices({0, 1, 2, 0, 2, 3}, kU16), light_mat);
+    int light = b.add_quad_mesh({{-1, 1.5, 1}, {-1, 1.5, -1}, {1, 1.5, -1}, {1, 1.5, 1}}, light_mat);
     b.set_attribute(light, "TEXCOORD_0", b.add_texcoords({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));
     std::vector<std::uint8_t> checker;
     for (int y = 0; y < 4; ++y)
@@ -279,8 +276,7 @@ TEST(Alpha, CutEmitterBehindASheetRendersTheSameByEveryStrategy)
     int sheet_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), true);
     material(b, sheet_mat).alphaMode = "BLEND";
     material(b, sheet_mat).pbrMetallicRoughness.baseColorFactor[3] = 0.4;
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-2, 0.7f, 2}, {0, 0.7f, 2}, {0, 0.7f, -2}, {-2, 0.7f, -2}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), sheet_mat)));
+    b.add_root(b.add_node(b.add_quad_mesh({{-2, 0.7f, 2}, {0, 0.7f, 2}, {0, 0.7f, -2}, {-2, 0.7f, -2}}, sheet_mat)));
     b.add_camera_node(b.add_perspective_camera(1.2), {0.0, 0.9, 3.0}, {-0.1305, 0.0, 0.0, 0.9914});
     Scene scene = import_gltf(b.model, "cut-emitter.gltf");
 

@@ -24,16 +24,9 @@ using test::contains;
 using test::error_of;
 using test::GltfBuilder;
 using test::import;
+using test::json_numbers;
 using test::kTilted;
 using test::one_triangle;
-
-tinygltf::Value numbers(std::vector<double> v)
-{
-    tinygltf::Value::Array a;
-    for (double x : v)
-        a.emplace_back(x);
-    return tinygltf::Value(a);
-}
 
 // One triangle whose material `edit` changes; the scene it loads to.
 GltfBuilder triangle_with(const std::function<void(tinygltf::Material&)>& edit)
@@ -94,8 +87,8 @@ TEST(GltfMaterialExtensions, SpecularGlossinessFactorsBecomeTheIorZeroMaterial)
         m.pbrMetallicRoughness.roughnessFactor = 0.1;
         m.pbrMetallicRoughness.baseColorFactor = {0.1, 0.1, 0.1, 1.0};
         tinygltf::Value::Object sg;
-        sg["diffuseFactor"] = numbers({0.8, 0.6, 0.4, 0.5});
-        sg["specularFactor"] = numbers({0.3, 0.2, 0.1});
+        sg["diffuseFactor"] = json_numbers({0.8, 0.6, 0.4, 0.5});
+        sg["specularFactor"] = json_numbers({0.3, 0.2, 0.1});
         sg["glossinessFactor"] = tinygltf::Value(0.75);
         m.extensions["KHR_materials_pbrSpecularGlossiness"] = tinygltf::Value(sg);
     });
@@ -133,9 +126,9 @@ TEST(GltfMaterialExtensions, SpecularGlossinessValuesOutOfRangeAreOneLineErrors)
         const char* member;
         tinygltf::Value value;
     };
-    const Case cases[] = {{"diffuseFactor", numbers({1.2, 0.5, 0.5, 1.0})},
-                          {"diffuseFactor", numbers({0.5, 0.5, 0.5})},
-                          {"specularFactor", numbers({0.5, -0.1, 0.5})},
+    const Case cases[] = {{"diffuseFactor", json_numbers({1.2, 0.5, 0.5, 1.0})},
+                          {"diffuseFactor", json_numbers({0.5, 0.5, 0.5})},
+                          {"specularFactor", json_numbers({0.5, -0.1, 0.5})},
                           {"glossinessFactor", tinygltf::Value(1.5)},
                           {"glossinessFactor", tinygltf::Value(std::string("high"))}};
     for (const Case& c : cases) {

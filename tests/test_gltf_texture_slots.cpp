@@ -23,15 +23,8 @@ using test::kNearest;
 using test::kRepeat;
 using test::Quad;
 using test::quad;
+using test::texture_info;
 using test::white_texture;
-
-tinygltf::Value texture_info(int index, int texcoord = 0)
-{
-    tinygltf::Value::Object o;
-    o["index"] = tinygltf::Value(index);
-    o["texCoord"] = tinygltf::Value(texcoord);
-    return tinygltf::Value(o);
-}
 
 // ---------------------------------------------------------------------------------------
 // What the loader reads

@@ -201,8 +201,7 @@ TEST(DirectionalLight, AnOccluderOutOfViewCastsAShadow)
         b.add_light_node(b.add_light("directional", glm::vec3(1.0f), 1.0), {0.0, 5.0, 0.0}, slanted_down(kPi / 4));
         std::vector<glm::vec3> sq = {{-1.1f, 1, -0.1f}, {-0.9f, 1, -0.1f}, {-0.9f, 1, 0.1f}, {-1.1f, 1, 0.1f}};
         int mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), true);
-        b.add_root(b.add_node(b.add_mesh(
-            b.add_positions(sq), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
+        b.add_root(b.add_node(b.add_quad_mesh(sq, mat)));
         return b;
     };
     EXPECT_EQ(radiance_at(scene_with_blocker(), 0.0, 0.0, 1.0).mean, 0.0) << "in the shadow";

@@ -75,20 +75,14 @@ Scene textured_quad(const QuadOptions& o)
     m.normalTexture.index = b.add_texture(b.add_png_image(1, 1, o.normal_texel));
     m.normalTexture.scale = o.normal_scale;
     // KHR_materials_specular and _transmission textures (factors 0.8, (1, 0.5, 1), 0.6).
-    auto info = [](int index) {
-        tinygltf::Value::Object obj;
-        obj["index"] = tinygltf::Value(index);
-        return tinygltf::Value(obj);
-    };
     tinygltf::Value::Object spec, trans;
     spec["specularFactor"] = tinygltf::Value(0.8);
-    spec["specularColorFactor"] =
-        tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(1.0), tinygltf::Value(0.5), tinygltf::Value(1.0)});
-    spec["specularTexture"] = info(b.add_texture(b.add_png_image(1, 1, {10, 20, 30, 153})));
-    spec["specularColorTexture"] = info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 255})));
+    spec["specularColorFactor"] = test::json_numbers({1.0, 0.5, 1.0});
+    spec["specularTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {10, 20, 30, 153})));
+    spec["specularColorTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 255})));
     m.extensions["KHR_materials_specular"] = tinygltf::Value(spec);
     trans["transmissionFactor"] = tinygltf::Value(0.6);
-    trans["transmissionTexture"] = info(b.add_texture(b.add_png_image(1, 1, {51, 200, 200, 255})));
+    trans["transmissionTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {51, 200, 200, 255})));
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
     if (o.edit)
         o.edit(b, m);
@@ -167,23 +161,12 @@ TEST(MaterialInputs, SpecularGlossinessTexturesGiveDiffuseSpecularColourAndRough
     // fallback metallic-roughness texture kept.
     QuadOptions o;
     o.edit = [](test::GltfBuilder& b, tinygltf::Material& m) {
-        auto info = [](int index) {
-            tinygltf::Value::Object obj;
-            obj["index"] = tinygltf::Value(index);
-            return tinygltf::Value(obj);
-        };
-        auto numbers = [](std::vector<double> v) {
-            tinygltf::Value::Array a;
-            for (double x : v)
-                a.emplace_back(x);
-            return tinygltf::Value(a);
-        };
         tinygltf::Value::Object sg;
-        sg["diffuseFactor"] = numbers({0.8, 0.6, 0.4, 1.0});
-        sg["diffuseTexture"] = info(b.add_texture(b.add_png_image(1, 1, {128, 188, 255, 255})));
-        sg["specularFactor"] = numbers({0.5, 0.4, 0.3});
+        sg["diffuseFactor"] = test::json_numbers({0.8, 0.6, 0.4, 1.0});
+        sg["diffuseTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {128, 188, 255, 255})));
+        sg["specularFactor"] = test::json_numbers({0.5, 0.4, 0.3});
         sg["glossinessFactor"] = tinygltf::Value(0.8);
-        sg["specularGlossinessTexture"] = info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 102})));
+        sg["specularGlossinessTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {255, 188, 64, 102})));
         m.extensions["KHR_materials_pbrSpecularGlossiness"] = tinygltf::Value(sg);
     };
     MaterialProbe p = probe(textured_quad(o), {{0.2f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});

@@ -137,12 +137,10 @@ Scene sphere_scene(const std::vector<std::uint8_t>& normal_texel)
         b.model.materials.back().normalTexture.index = b.add_texture(b.add_png_image(1, 1, normal_texel));
     b.add_root(b.add_node(sphere, {}, {0.0, 1.0, 0.0}));
     int floor_mat = b.add_material(glm::vec3(0.6f));
-    int floor = b.add_mesh(b.add_positions({{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}}),
-                           b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT), floor_mat);
+    int floor = b.add_quad_mesh({{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}}, floor_mat);
     b.add_root(b.add_node(floor));
     int light_mat = b.add_material(glm::vec3(0.0f), glm::vec3(6.0f));
-    int light = b.add_mesh(b.add_positions({{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}}),
-                           b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT), light_mat);
+    int light = b.add_quad_mesh({{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}}, light_mat);
     b.add_root(b.add_node(light, {}, {1.0, 0.0, 1.0}));
     b.add_camera_node(b.add_perspective_camera(0.7), {0.0, 1.2, 4.0});
     return import_gltf(b.model, "sphere.gltf");
@@ -171,13 +169,11 @@ Scene textured_emitter_scene()
 {
     test::GltfBuilder b;
     int floor_mat = b.add_material(glm::vec3(0.7f));
-    int floor = b.add_mesh(b.add_positions({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}),
-                           b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT), floor_mat);
+    int floor = b.add_quad_mesh({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}, floor_mat);
     b.add_root(b.add_node(floor));
     int light_mat = b.add_material(glm::vec3(0.0f), glm::vec3(1.0f), false, 4.0);
     std::vector<glm::vec3> lp = {{-1, 1.5, 1}, {-1, 1.5, -1}, {1, 1.5, -1}, {1, 1.5, 1}}; // faces down
-    int light = b.add_mesh(b.add_positions(lp),
-                           b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT), light_mat);
+    int light = b.add_quad_mesh(lp, light_mat);
     b.set_attribute(light, "TEXCOORD_0", b.add_texcoords({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));
     std::vector<std::uint8_t> checker;
     for (int y = 0; y < 4; ++y)

@@ -45,10 +45,7 @@ std::vector<float> thin_gap_view(double x)
     test::GltfBuilder b;
     int floor_mat = b.add_material(glm::vec3(0.5f));
     int slab_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), /*double_sided=*/true);
-    auto quad = [&](std::vector<glm::vec3> q, int mat) {
-        b.add_root(b.add_node(b.add_mesh(
-            b.add_positions(q), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
-    };
+    auto quad = [&](std::vector<glm::vec3> q, int mat) { b.add_root(b.add_node(b.add_quad_mesh(q, mat))); };
     quad({{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, floor_mat);                // faces +y
     quad({{-1, 1e-4f, -1}, {-1, 1e-4f, 1}, {0, 1e-4f, 1}, {0, 1e-4f, -1}}, slab_mat); // the gap's roof
     const double a = std::acos(-1.0) / 4.0;
@@ -319,10 +316,7 @@ TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
     test::GltfBuilder b;
     int floor_mat = b.add_material(glm::vec3(0.5f));
     int shade_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), /*double_sided=*/true);
-    auto quad = [&](std::vector<glm::vec3> q, int mat) {
-        b.add_root(b.add_node(b.add_mesh(
-            b.add_positions(q), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat)));
-    };
+    auto quad = [&](std::vector<glm::vec3> q, int mat) { b.add_root(b.add_node(b.add_quad_mesh(q, mat))); };
     quad({{-200, 0, -200}, {-200, 0, 200}, {200, 0, 200}, {200, 0, -200}}, floor_mat);
     quad({{-0.01f, 99.995f, -0.01f}, {-0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, 0.01f}, {0.01f, 99.995f, -0.01f}},
          shade_mat);

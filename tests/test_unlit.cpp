@@ -31,8 +31,7 @@ int add_unlit_quad(test::GltfBuilder& b, float y, bool facing_down)
     tinygltf::Material& m = b.model.materials[static_cast<std::size_t>(mat)];
     m.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object{});
     m.emissiveFactor = {5.0, 5.0, 5.0}; // ignored: an unlit material is no light
-    int mesh = b.add_mesh(b.add_positions(facing_down ? down : up),
-                          b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat);
+    int mesh = b.add_quad_mesh(facing_down ? down : up, mat);
     b.add_root(b.add_node(mesh));
     return mat;
 }
@@ -68,9 +67,7 @@ test::ChannelMean floor_under_unlit_quad(const test::GltfBuilder::Pbr& floor)
     test::GltfBuilder b;
     add_unlit_quad(b, 5.0f, true);
     std::vector<glm::vec3> quad = {{-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50}};
-    int mesh =
-        b.add_mesh(b.add_positions(quad), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT),
-                   b.add_pbr_material(floor));
+    int mesh = b.add_quad_mesh(quad, b.add_pbr_material(floor));
     b.add_root(b.add_node(mesh));
     b.add_camera_node(b.add_perspective_camera(1e-3), {0.0, 3.0, 0.0}, test::kLookDown);
     RenderOptions o = test::independent_options();

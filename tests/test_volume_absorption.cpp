@@ -51,8 +51,7 @@ int add_absorbing_glass(test::GltfBuilder& b, double ior, glm::dvec3 color, doub
 void add_panel_and_camera(test::GltfBuilder& b, double x)
 {
     int mat = b.add_material(glm::vec3(0.0f), glm::vec3(1.0f));
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-20, -20, -3}, {20, -20, -3}, {20, 20, -3}, {-20, 20, -3}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), mat)));
+    b.add_root(b.add_node(b.add_quad_mesh({{-20, -20, -3}, {20, -20, -3}, {20, 20, -3}, {-20, 20, -3}}, mat)));
     b.add_camera_node(b.add_perspective_camera(1e-4), {x, 0.0, 5.0});
 }
 
@@ -166,11 +165,9 @@ TEST(VolumeAbsorption, RoughAbsorbingSphereRendersTheSameByBsdfSamplingAndMis)
     // segment whenever the path is inside.
     test::GltfBuilder b;
     int floor_mat = b.add_material(glm::vec3(0.7f));
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), floor_mat)));
+    b.add_root(b.add_node(b.add_quad_mesh({{-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}}, floor_mat)));
     int light_mat = b.add_material(glm::vec3(0.0f), glm::vec3(1.0f), false, 4.0);
-    b.add_root(b.add_node(b.add_mesh(b.add_positions({{-1, 2.5, 1}, {-1, 2.5, -1}, {1, 2.5, -1}, {1, 2.5, 1}}),
-                                     b.add_indices({0, 1, 2, 0, 2, 3}, kU16), light_mat)));
+    b.add_root(b.add_node(b.add_quad_mesh({{-1, 2.5, 1}, {-1, 2.5, -1}, {1, 2.5, -1}, {1, 2.5, 1}}, light_mat)));
     int glass = add_absorbing_glass(b, 1.5, {0.3, 0.6, 0.9}, 1.0, false, 0.3);
     b.add_root(b.add_node(b.add_sphere_mesh(0.6, 24, 48, glass, false, true), {}, {0.0, 0.6, 0.0}));
     b.add_camera_node(b.add_perspective_camera(0.6), {0.0, 0.6, 2.5}); // the sphere fills most of the view

@@ -41,8 +41,7 @@ inline ChannelMean floor_radiance_at(GltfBuilder b, double x, double z, double h
     double s = 50.0 * height_scale;
     std::vector<glm::vec3> quad = {{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}; // normal +Y
     int mat = b.add_material(glm::vec3(static_cast<float>(kFloorAlbedo)));
-    int mesh =
-        b.add_mesh(b.add_positions(quad), b.add_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT), mat);
+    int mesh = b.add_quad_mesh(quad, mat);
     b.add_root(b.add_node(mesh));
     b.add_camera_node(b.add_perspective_camera(1e-3), {x, 3.0 * height_scale, z}, kLookDown);
     RenderOptions o = independent_options();

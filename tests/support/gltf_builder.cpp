@@ -191,6 +191,27 @@ void GltfBuilder::add_root(int node)
     model.scenes[0].nodes.push_back(node);
 }
 
+tinygltf::Value json_numbers(const std::vector<double>& values)
+{
+    tinygltf::Value::Array a;
+    for (double v : values)
+        a.emplace_back(v);
+    return tinygltf::Value(a);
+}
+
+tinygltf::Value texture_info(int index, int texcoord)
+{
+    tinygltf::Value::Object o;
+    o["index"] = tinygltf::Value(index);
+    o["texCoord"] = tinygltf::Value(texcoord);
+    return tinygltf::Value(o);
+}
+
+int GltfBuilder::add_quad_mesh(const std::vector<glm::vec3>& corners, int material)
+{
+    return add_mesh(add_positions(corners), add_indices({0, 1, 2, 0, 2, 3}, kU16), material);
+}
+
 int GltfBuilder::add_box_mesh(glm::vec3 h, int material)
 {
     std::vector<glm::vec3> p;

@@ -60,6 +60,9 @@ public:
     // `inward` (the front face then faces the centre). smooth_normals: a NORMAL
     // attribute with the sphere's own (radial) normals, for smooth shading.
     int add_sphere_mesh(double radius, int stacks, int slices, int material, bool inward, bool smooth_normals = false);
+    // A quad mesh: the triangles (0, 1, 2) and (0, 2, 3) of its four corners (give them
+    // counter-clockwise seen from the front).
+    int add_quad_mesh(const std::vector<glm::vec3>& corners, int material);
     // A closed box mesh (12 triangles, counter-clockwise seen from outside) with the given
     // half extents, centred at the origin.
     int add_box_mesh(glm::vec3 half, int material);
@@ -81,5 +84,10 @@ public:
 
     tinygltf::Model model;
 };
+
+// JSON values for the extension objects tinygltf leaves untyped: an array of numbers, and
+// a textureInfo {"index": index, "texCoord": texcoord}.
+tinygltf::Value json_numbers(const std::vector<double>& values);
+tinygltf::Value texture_info(int index, int texcoord = 0);
 
 } // namespace pathcl::test
