@@ -6,7 +6,7 @@
  *   L += beta * f cos Le / p_light * w_light next event estimation (a shadow ray)
  *   beta *= f cos / p_bsdf                   continue the path by BSDF sampling
  * with the weights of the strategy (integrator/mis.cl). Emission seen by camera rays (or
- * after a delta BSDF) always has weight 1. Russian roulette after 3 bounces is unbiased.
+ * after a delta BSDF) always has weight 1. Russian roulette from the fifth bounce on is unbiased.
  * Code for features a scene lacks is not compiled (features.h). */
 #include "bvh/traversal.cl"
 #include "features.h"

@@ -1,5 +1,5 @@
 /* Continuing a path: sample the BSDF for the next direction, update the throughput, and
- * after RR_START_BOUNCE bounces play Russian roulette on the energy the path carries. */
+ * from bounce RR_START_BOUNCE on play Russian roulette on the energy the path carries. */
 #include "closure/bsdf.cl"
 #include "geom/ray_offset.cl"
 #include "integrator/absorption.cl"
@@ -9,7 +9,12 @@
 #include "sample/sampler.cl"
 #include "util/math.cl"
 
-#define RR_START_BOUNCE 3
+/* Roulette from the fifth bounce on (Mitsuba 3's rr_depth default). Measured against a
+ * 16384-spp reference (256x256, 64 spp, 7 bounces, 6 seeds), efficiency 1 / (error x
+ * time) over starting after 3 bounces: Cornell box 1.07x (RMSE^2) and 1.25x (relMSE),
+ * glass-and-mirror box 1.10x and 1.07x; after 4 bounces gained less, and no roulette at
+ * all (up to 7 bounces) lost on the Cornell box's RMSE. */
+#define RR_START_BOUNCE 5
 
 /* Samples the next direction; false when the BSDF gives none (the path ends). */
 static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 wo, bool technique_light, uint dims,
