@@ -11,9 +11,9 @@
 
 /* Roulette from the fifth bounce on (Mitsuba 3's rr_depth default). Measured against a
  * 16384-spp reference (256x256, 64 spp, 7 bounces, 6 seeds), efficiency 1 / (error x
- * time) over starting after 3 bounces: Cornell box 1.07x (RMSE^2) and 1.25x (relMSE),
- * glass-and-mirror box 1.10x and 1.07x; after 4 bounces gained less, and no roulette at
- * all (up to 7 bounces) lost on the Cornell box's RMSE. */
+ * time) over starting at the third: Cornell box 1.07x (RMSE^2) and 1.25x (relMSE),
+ * glass-and-mirror box 1.10x and 1.07x; starting at the fourth gained less, and no
+ * roulette at all (up to 7 bounces) lost on the Cornell box's RMSE. */
 #define RR_START_BOUNCE 5
 
 /* Samples the next direction; false when the BSDF gives none (the path ends). */
