@@ -171,7 +171,9 @@ TEST(Budgets, AdaptiveSamplingConvergesToTheUniformImage)
 {
     RenderOptions o = cornell_options(SamplerType::Independent);
     o.spp = 512;
-    o.target_error = 4e-3;
+    // Low enough that pixels stop before the image does (roulette from the fifth bounce
+    // reaches 4e-3 at 64 spp, before any pixel stops).
+    o.target_error = 2.5e-3;
     o.adaptive = true;
     RenderResult r = Renderer(cornell_box(), o).render(11);
     ASSERT_EQ(r.image.samples.size(), 64u * 64u);
