@@ -27,14 +27,7 @@ using test::import;
 using test::json_numbers;
 using test::kTilted;
 using test::one_triangle;
-
-// One triangle whose material `edit` changes; the scene it loads to.
-GltfBuilder triangle_with(const std::function<void(tinygltf::Material&)>& edit)
-{
-    GltfBuilder b = one_triangle(kTilted);
-    edit(b.model.materials[0]);
-    return b;
-}
+using test::tilted_triangle_with;
 
 void set_ior(tinygltf::Material& m, double ior)
 {
@@ -47,12 +40,12 @@ TEST(GltfMaterialExtensions, IorZeroIsTheSpecularGlossinessModeAndOtherIorsBelow
 {
     // ior 0 is valid (the schema's special value) and compiles the Schlick layer; 0.5 and
     // -1 are errors naming the field. Broken variant seen to fail: the old check (ior >= 1).
-    Scene s = import(triangle_with([](tinygltf::Material& m) { set_ior(m, 0.0); }));
+    Scene s = import(tilted_triangle_with([](tinygltf::Material& m) { set_ior(m, 0.0); }));
     EXPECT_EQ(s.materials[0].ior, 0.0f);
     EXPECT_TRUE(kernel_features(s, RenderOptions{}).has(FEATURE_SCHLICK_LAYER));
     EXPECT_FALSE(kernel_features(import(one_triangle(kTilted)), RenderOptions{}).has(FEATURE_SCHLICK_LAYER));
     for (double bad : {0.5, -1.0}) {
-        std::string e = error_of([&] { import(triangle_with([&](tinygltf::Material& m) { set_ior(m, bad); }));
+        std::string e = error_of([&] { import(tilted_triangle_with([&](tinygltf::Material& m) { set_ior(m, bad); }));
     });
     EXPECT_TRUE(contains(e, "test.gltf: material 0") && contains(e, "KHR_materials_ior ior must be")) << e;
 }
@@ -62,7 +55,7 @@ TEST(GltfMaterialExtensions, IorZeroTransmitsNothingAndSaysSo)
 {
     // The Fresnel term of ior 0 is 1: transmission is dropped with one warning line.
     // Broken variant seen to fail: transmission kept (refraction at eta 0 is undefined).
-    GltfBuilder b = triangle_with([](tinygltf::Material& m) {
+    GltfBuilder b = tilted_triangle_with([](tinygltf::Material& m) {
         set_ior(m, 0.0);
         tinygltf::Value::Object t;
         t["transmissionFactor"] = tinygltf::Value(0.7);
@@ -82,7 +75,7 @@ TEST(GltfMaterialExtensions, SpecularGlossinessFactorsBecomeTheIorZeroMaterial)
     // 1), glossiness -> 1 - roughness, metallic 0, ior 0; the metallic-roughness fallback
     // and a file-level requirement of the extension are accepted. Broken variants seen to
     // fail: the fallback's metallic kept; roughness = glossiness.
-    GltfBuilder b = triangle_with([](tinygltf::Material& m) {
+    GltfBuilder b = tilted_triangle_with([](tinygltf::Material& m) {
         m.pbrMetallicRoughness.metallicFactor = 1.0;
         m.pbrMetallicRoughness.roughnessFactor = 0.1;
         m.pbrMetallicRoughness.baseColorFactor = {0.1, 0.1, 0.1, 1.0};
@@ -109,7 +102,7 @@ TEST(GltfMaterialExtensions, SpecularGlossinessFactorsBecomeTheIorZeroMaterial)
 
     // An empty extension object: the extension's defaults (white diffuse, white specular,
     // glossiness 1: a smooth white mirror-like layer over white).
-    Scene d = import(triangle_with([](tinygltf::Material& mat) {
+    Scene d = import(tilted_triangle_with([](tinygltf::Material& mat) {
         mat.extensions["KHR_materials_pbrSpecularGlossiness"] = tinygltf::Value(tinygltf::Value::Object{});
     }));
     EXPECT_EQ(d.materials[0].base_color, glm::vec3(1.0f));
@@ -133,7 +126,7 @@ TEST(GltfMaterialExtensions, SpecularGlossinessValuesOutOfRangeAreOneLineErrors)
                           {"glossinessFactor", tinygltf::Value(std::string("high"))}};
     for (const Case& c : cases) {
         std::string e = error_of([&] {
-            import(triangle_with([&](tinygltf::Material& m) {
+            import(tilted_triangle_with([&](tinygltf::Material& m) {
                 tinygltf::Value::Object sg;
             sg[c.member] = c.value;
             m.extensions["KHR_materials_pbrSpecularGlossiness"] = tinygltf::Value(sg);

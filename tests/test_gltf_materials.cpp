@@ -25,13 +25,12 @@ using test::kTilted;
 using test::near_rel;
 using test::one_triangle;
 using test::str;
+using test::tilted_triangle_with;
 
 // One triangle with material `m` (edited by the caller); returns the triangle's material.
 SceneMaterial material_of(const std::function<void(tinygltf::Material&)>& edit)
 {
-    GltfBuilder b = one_triangle(kTilted);
-    edit(b.model.materials[0]);
-    Scene scene = import(b);
+    Scene scene = import(tilted_triangle_with(edit));
     EXPECT_EQ(scene.triangles.size(), 1u);
     if (scene.triangles.empty())
         return {};

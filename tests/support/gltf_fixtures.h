@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,14 @@ inline GltfBuilder one_triangle(const std::vector<glm::vec3>& p, const std::vect
     int mat = b.add_material(glm::vec3(0.5f));
     int mesh = b.add_mesh(pos, -1, mat, 4, nrm);
     b.add_root(b.add_node(mesh, {}, translation, rotation, scale));
+    return b;
+}
+
+// The tilted triangle with its material changed by `edit` (the material tests' model).
+inline GltfBuilder tilted_triangle_with(const std::function<void(tinygltf::Material&)>& edit)
+{
+    GltfBuilder b = one_triangle(kTilted);
+    edit(b.model.materials[0]);
     return b;
 }
 
