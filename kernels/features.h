@@ -29,7 +29,8 @@
 #define FEATURE_VOLUME_ABSORPTION (1u << 14) /* a solid transmissive material with KHR_materials_volume attenuation */
 #define FEATURE_SCHLICK_LAYER (1u << 15)     /* a material with KHR_materials_ior ior 0 (specular-glossiness mode) */
 #define FEATURE_UNLIT (1u << 16)             /* a KHR_materials_unlit material */
-#define FEATURE_ALL ((1u << 17) - 1u)
+#define FEATURE_CLEARCOAT (1u << 17)         /* a material with KHR_materials_clearcoat clearcoatFactor > 0 */
+#define FEATURE_ALL ((1u << 18) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -88,13 +89,16 @@
 #if PATHCL_FEATURES & FEATURE_UNLIT
 #define PATHCL_HAS_UNLIT
 #endif
+#if PATHCL_FEATURES & FEATURE_CLEARCOAT
+#define PATHCL_HAS_CLEARCOAT
+#endif
 
 /* Derived guards. */
 #if PATHCL_FEATURES & (FEATURE_AREA_LIGHTS | FEATURE_POINT_LIGHTS | FEATURE_SPOT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS | \
                        FEATURE_SPHERE_LIGHTS | FEATURE_ENVIRONMENT)
 #define PATHCL_HAS_LIGHTS /* next event estimation */
 #endif
-#if PATHCL_FEATURES & (FEATURE_GLOSSY | FEATURE_TRANSMISSION)
+#if PATHCL_FEATURES & (FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_CLEARCOAT)
 #define PATHCL_FULL_BSDF /* the whole glTF BSDF; else Lambertian only */
 #endif
 #if PATHCL_FEATURES & (FEATURE_TEXTURES | FEATURE_VERTEX_COLORS)

@@ -125,8 +125,9 @@ typedef struct {
 /* No texture (a texture field's value when the material has none). */
 #define TEXTURE_NONE (-1)
 
-/* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
- * _volume, as the kernels read it (see kernels/closure/bsdf.cl for the model): 128 bytes.
+/* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
+ * _volume and _clearcoat, as the kernels read it (see kernels/closure/bsdf.cl for the
+ * model): 144 bytes.
  * Each texture slot indexes the TextureView array (TEXTURE_NONE when absent); a texture
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
@@ -145,6 +146,8 @@ typedef struct {
     pcl_int textures[TEXTURE_SLOT_COUNT]; /* TextureView per slot (texture/texture_slots.h) */
     pcl_float smooth_layer_average;       /* 2 int s(mu, ior) mu dmu, see layer_albedo.h */
     pcl_float alpha_cutoff;               /* glTF alphaCutoff (MATERIAL_ALPHA_MASK) */
+    pcl_float clearcoat;                  /* KHR_materials_clearcoat clearcoatFactor (0: no coat) */
+    pcl_float clearcoat_roughness;        /* clearcoatRoughnessFactor, perceptual */
     pcl_int pad2;
 } Material;
 

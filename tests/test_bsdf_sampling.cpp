@@ -175,5 +175,34 @@ TEST(BsdfSampling, GltfMixturesMatchTheirPdf)
     expect_sampling_matches(full_program(), coated, 0.5, true, "diffuse under a smooth coat");
 }
 
+TEST(BsdfSampling, ClearcoatMatchesItsPdf)
+{
+    // The coat is a fourth lobe, sampled in the same frame here: its selection
+    // probability and the base's scaled ones must be in the pdf. Broken variant seen
+    // failing: the coat's pdf left out of bsdf_eval (chi-square and pdf checks).
+    MaterialSpec plastic = lambertian({0.7f, 0.3f, 0.1f});
+    plastic.specular = 1.0f;
+    plastic.roughness = 0.5f;
+    plastic.clearcoat = 1.0f;
+    plastic.clearcoat_roughness = 0.2f;
+    expect_sampling_matches(full_program(), plastic, 0.6, true, "rough coat over a plastic");
+    expect_sampling_matches(full_program(), plastic, 0.1, true, "rough coat over a plastic, grazing");
+
+    MaterialSpec metal = conductor(0.4f, {0.95f, 0.7f, 0.4f});
+    metal.clearcoat = 0.5f;
+    metal.clearcoat_roughness = 0.6f;
+    expect_sampling_matches(full_program(), metal, 0.8, true, "part coat over a rough metal");
+
+    MaterialSpec glass = dielectric(0.4f);
+    glass.clearcoat = 1.0f;
+    glass.clearcoat_roughness = 0.25f;
+    expect_sampling_matches(full_program(), glass, 0.7, true, "rough coat over rough glass, outside");
+    expect_sampling_matches(full_program(), glass, 0.7, false, "rough coat over rough glass, inside");
+
+    MaterialSpec lacquer = plastic; // a delta coat: only the base is sampled continuously
+    lacquer.clearcoat_roughness = 0.0f;
+    expect_sampling_matches(full_program(), lacquer, 0.5, true, "smooth coat over a plastic");
+}
+
 } // namespace
 } // namespace pathcl

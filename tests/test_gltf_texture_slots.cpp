@@ -35,8 +35,8 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     // read. Broken variant seen to fail: the normal texture read from the emissive slot.
     Quad q = quad();
     std::vector<int> tex;
-    for (int i = 0; i < 7; ++i)
-        tex.push_back(q.b.add_texture(q.b.add_png_image(1, 1, {static_cast<std::uint8_t>(i * 30), 0, 0, 255})));
+    for (int i = 0; i < 9; ++i)
+        tex.push_back(q.b.add_texture(q.b.add_png_image(1, 1, {static_cast<std::uint8_t>(i * 25), 0, 0, 255})));
     tinygltf::Material& m = q.mat();
     m.pbrMetallicRoughness.baseColorTexture.index = tex[0];
     m.pbrMetallicRoughness.baseColorTexture.texCoord = 1;
@@ -54,18 +54,24 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     trans["transmissionFactor"] = tinygltf::Value(0.5);
     trans["transmissionTexture"] = texture_info(tex[6]);
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
+    tinygltf::Value::Object coat;
+    coat["clearcoatFactor"] = tinygltf::Value(1.0);
+    coat["clearcoatTexture"] = texture_info(tex[7], 1);
+    coat["clearcoatRoughnessTexture"] = texture_info(tex[8]);
+    m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(coat);
     Scene s = import_gltf(q.b.model, "slots.gltf");
     const SceneMaterial& sm = s.materials[0];
-    const SceneTexture* slots[7] = {
-        &sm.textures[TEXTURE_SLOT_BASE_COLOR],  &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS],
-        &sm.textures[TEXTURE_SLOT_EMISSIVE],    &sm.textures[TEXTURE_SLOT_NORMAL],
-        &sm.textures[TEXTURE_SLOT_SPECULAR],    &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
-        &sm.textures[TEXTURE_SLOT_TRANSMISSION]};
-    const int sets[7] = {1, 0, 0, 0, 1, 0, 0};
-    ASSERT_EQ(s.images.size(), 7u);
-    for (int i = 0; i < 7; ++i) {
+    const SceneTexture* slots[9] = {
+        &sm.textures[TEXTURE_SLOT_BASE_COLOR],         &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS],
+        &sm.textures[TEXTURE_SLOT_EMISSIVE],           &sm.textures[TEXTURE_SLOT_NORMAL],
+        &sm.textures[TEXTURE_SLOT_SPECULAR],           &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
+        &sm.textures[TEXTURE_SLOT_TRANSMISSION],       &sm.textures[TEXTURE_SLOT_CLEARCOAT],
+        &sm.textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS]};
+    const int sets[9] = {1, 0, 0, 0, 1, 0, 0, 1, 0};
+    ASSERT_EQ(s.images.size(), 9u);
+    for (int i = 0; i < 9; ++i) {
         ASSERT_TRUE(slots[i]->present()) << "slot " << i;
-        EXPECT_EQ(s.images[static_cast<std::size_t>(slots[i]->image)].rgba8[0], i * 30) << "slot " << i;
+        EXPECT_EQ(s.images[static_cast<std::size_t>(slots[i]->image)].rgba8[0], i * 25) << "slot " << i;
         EXPECT_EQ(slots[i]->texcoord, sets[i]) << "slot " << i;
     }
     EXPECT_FLOAT_EQ(sm.normal_scale, 0.7f);

@@ -84,6 +84,13 @@ Scene textured_quad(const QuadOptions& o)
     trans["transmissionFactor"] = tinygltf::Value(0.6);
     trans["transmissionTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {51, 200, 200, 255})));
     m.extensions["KHR_materials_transmission"] = tinygltf::Value(trans);
+    // KHR_materials_clearcoat textures (factors 0.9 and 0.5).
+    tinygltf::Value::Object coat;
+    coat["clearcoatFactor"] = tinygltf::Value(0.9);
+    coat["clearcoatRoughnessFactor"] = tinygltf::Value(0.5);
+    coat["clearcoatTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {102, 0, 0, 255})));
+    coat["clearcoatRoughnessTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {0, 204, 0, 255})));
+    m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(coat);
     if (o.edit)
         o.edit(b, m);
     b.add_root(b.add_node(mesh));
@@ -91,7 +98,7 @@ Scene textured_quad(const QuadOptions& o)
 }
 
 struct MaterialProbe {
-    std::vector<pcl_float4> normal, base_color, emission, specular_color, params;
+    std::vector<pcl_float4> normal, base_color, emission, specular_color, params, coat;
 };
 
 // test_material_inputs at barycentrics (b1, b2) of scene triangle 0, seen along -wo.
@@ -113,13 +120,13 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
     DeviceArrays arrays = upload_arrays(dev, cs.arrays, 1);
     std::size_t n = hits.size();
     std::vector<cl::Buffer> outs;
-    for (int i = 0; i < 5; ++i)
+    for (int i = 0; i < 6; ++i)
         outs.emplace_back(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer hit_buffer = upload(hits), wo_buffer = upload(wos); // alive until the kernel has run
-    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4]);
+    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4], outs[5]);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n),
-            read_back(outs[4], n)};
+    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n),
+            read_back(outs[3], n), read_back(outs[4], n), read_back(outs[5], n)};
 }
 
 glm::vec3 v3(const pcl_float4& p)
@@ -149,6 +156,20 @@ TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(v3(p.specular_color[0])[c], specular_color[c], 1e-6f) << "specular colour channel " << c;
     EXPECT_NEAR(p.params[0].w, 0.6f * 51.0f / 255.0f, 1e-6f) << "transmission";
+    EXPECT_NEAR(p.coat[0].x, 0.9f * 102.0f / 255.0f, 1e-6f) << "clearcoat";
+    EXPECT_NEAR(p.coat[0].y, 0.5f * 204.0f / 255.0f, 1e-6f) << "clearcoat roughness";
+}
+
+TEST(MaterialInputs, TheBasesNormalMapDoesNotBendTheClearCoat)
+{
+    // KHR_materials_clearcoat: without clearcoatNormalTexture the coat keeps the
+    // interpolated normal (+z here) while the base's normal map tilts the shading normal.
+    // Broken variant seen to fail: the coat normal taken after the normal map.
+    QuadOptions o;
+    o.normal_texel = {200, 128, 200, 255};
+    MaterialProbe p = probe(textured_quad(o), {{0.2f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
+    EXPECT_LT(p.normal[0].w, 0.95f) << "the base's normal is tilted";
+    EXPECT_FLOAT_EQ(p.coat[0].z, 1.0f) << "the coat's is not";
 }
 
 TEST(MaterialInputs, SpecularGlossinessTexturesGiveDiffuseSpecularColourAndRoughness)

@@ -38,6 +38,12 @@ TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows)
     s.camera.yfov *= 1.01;
     EXPECT_NE(scene_fingerprint(s), f) << "camera";
     s = base;
+    s.materials[0].clearcoat = 0.5f;
+    const std::uint64_t coated = scene_fingerprint(s);
+    EXPECT_NE(coated, f) << "clear coat";
+    s.materials[0].clearcoat_roughness = 0.25f;
+    EXPECT_NE(scene_fingerprint(s), coated) << "clear coat roughness";
+    s = base;
     s.materials[0].name = "renamed"; // names do not change a render
     EXPECT_EQ(scene_fingerprint(s), f);
 }

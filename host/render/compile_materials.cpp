@@ -1,6 +1,6 @@
 // Materials for the device: one Material record per scene material (factors; the texture
 // slots are filled by compile_textures), and the layer albedo tables when a material has
-// a specular layer or transmission.
+// a specular layer, transmission or a clear coat.
 #include "render/compile_scene.h"
 #include "render/layer_albedo.h"
 
@@ -23,13 +23,15 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
                    (m.alpha_mode == AlphaMode::Blend ? MATERIAL_ALPHA_BLEND : 0u) |
                    (m.glossiness_texture ? MATERIAL_GLOSSINESS : 0u) | (m.unlit ? MATERIAL_UNLIT : 0u);
         dm.alpha_cutoff = m.alpha_cutoff;
+        dm.clearcoat = m.clearcoat;
+        dm.clearcoat_roughness = m.clearcoat_roughness;
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
         dm.normal_scale = m.normal_scale;
         arrays.materials.push_back(dm);
     }
-    if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION))
+    if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION) || features.has(FEATURE_CLEARCOAT))
         arrays.layer_albedo = layer_albedo_table();
 }
 

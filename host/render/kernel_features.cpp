@@ -27,6 +27,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_VOLUME_ABSORPTION, m.absorbs());
         set(FEATURE_SCHLICK_LAYER, m.ior == 0.0f);
         set(FEATURE_UNLIT, m.unlit);
+        set(FEATURE_CLEARCOAT, m.clearcoat > 0.0f);
         set(FEATURE_TEXTURES, m.has_textures());
         set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
     }
@@ -73,10 +74,11 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "alpha",
                                         "volume-absorption",
                                         "schlick-layer",
-                                        "unlit"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 17 && FEATURE_ALL == (1u << 17) - 1u);
+                                        "unlit",
+                                        "clearcoat"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 18 && FEATURE_ALL == (1u << 18) - 1u);
     std::vector<std::string> out;
-    for (std::uint32_t b = 0; b < 17; ++b)
+    for (std::uint32_t b = 0; b < 18; ++b)
         if (mask & (1u << b))
             out.push_back(names[b]);
     return out;

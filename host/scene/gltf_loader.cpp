@@ -68,6 +68,7 @@ struct Importer {
     {
         static const std::set<std::string> supported = {"KHR_materials_emissive_strength",
                                                         "KHR_materials_specular",
+                                                        "KHR_materials_clearcoat",
                                                         "KHR_materials_transmission",
                                                         "KHR_materials_ior",
                                                         "KHR_materials_pbrSpecularGlossiness",

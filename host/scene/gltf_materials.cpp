@@ -1,5 +1,5 @@
 // import_materials: the core material (alpha included), its extensions (emissive
-// strength, specular, transmission, ior (0 included), volume with attenuation, unlit; a
+// strength, specular, transmission, clearcoat, ior (0 included), volume with attenuation, unlit; a
 // pbrSpecularGlossiness material replaces the metallic-roughness part), the texture of
 // each slot, then the range check.
 #include "scene/gltf_materials.h"
@@ -41,6 +41,10 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_specular specularFactor must lie in [0, 1]");
     if (!in01(m.transmission))
         fail("KHR_materials_transmission transmissionFactor must lie in [0, 1]");
+    if (!in01(m.clearcoat))
+        fail("KHR_materials_clearcoat clearcoatFactor must lie in [0, 1]");
+    if (!in01(m.clearcoat_roughness))
+        fail("KHR_materials_clearcoat clearcoatRoughnessFactor must lie in [0, 1]");
     if (!(m.ior >= 1.0f || m.ior == 0.0f) || !std::isfinite(m.ior))
         fail("KHR_materials_ior ior must be finite and >= 1, or 0");
     if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
@@ -112,6 +116,13 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     }
     if (auto e = m.extensions.find("KHR_materials_transmission"); e != m.extensions.end()) {
         out.transmission = static_cast<float>(number_or(e->second, "transmissionFactor", 0.0));
+    }
+    if (auto e = m.extensions.find("KHR_materials_clearcoat"); e != m.extensions.end()) {
+        out.clearcoat = static_cast<float>(number_or(e->second, "clearcoatFactor", 0.0));
+        out.clearcoat_roughness = static_cast<float>(number_or(e->second, "clearcoatRoughnessFactor", 0.0));
+        if (e->second.Has("clearcoatNormalTexture"))
+            warn(source + ": " + where +
+                 ": KHR_materials_clearcoat clearcoatNormalTexture is not read; the coat uses the interpolated normal");
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));

@@ -73,7 +73,15 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(1);
             f.add(m.glossiness);
         }
-        for (const SceneTexture& t : m.textures) {
+        if (m.clearcoat > 0.0f) {
+            f.add(3);
+            f.add(m.clearcoat);
+            f.add(m.clearcoat_roughness);
+        }
+        for (std::size_t slot = 0; slot < m.textures.size(); ++slot) {
+            const SceneTexture& t = m.textures[slot];
+            if (slot >= TEXTURE_SLOT_CLEARCOAT && !t.present())
+                continue; // slots added later count only when used, so older fingerprints stand
             f.add(t.image);
             f.add(t.texcoord);
             f.add(static_cast<int>(t.wrap_s));

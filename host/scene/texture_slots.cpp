@@ -12,6 +12,8 @@ const std::array<TextureSlot, TEXTURE_SLOT_COUNT>& texture_slot_table()
         {TEXTURE_SLOT_SPECULAR, "specularTexture", "KHR_materials_specular", false},
         {TEXTURE_SLOT_SPECULAR_COLOR, "specularColorTexture", "KHR_materials_specular", true},
         {TEXTURE_SLOT_TRANSMISSION, "transmissionTexture", "KHR_materials_transmission", false},
+        {TEXTURE_SLOT_CLEARCOAT, "clearcoatTexture", "KHR_materials_clearcoat", false},
+        {TEXTURE_SLOT_CLEARCOAT_ROUGHNESS, "clearcoatRoughnessTexture", "KHR_materials_clearcoat", false},
     }};
     return table;
 }

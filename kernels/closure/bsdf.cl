@@ -9,7 +9,7 @@
  * geometry.
  *
  * The material model is glTF's metallic-roughness BSDF (glTF 2.0 appendix B) with
- * KHR_materials_specular, _transmission, _ior and _volume:
+ * KHR_materials_specular, _transmission, _ior and _volume (and _clearcoat, below):
  *
  *   f = metallic       * F_schlick(base_color, wo.h) * spec
  *     + (1 - metallic) * [ F_d(wo.h) * spec
@@ -49,6 +49,21 @@
  * reflection and refraction divided by its energy albedo G(cos_o) from the side of wo
  * (Turquin 2019; tabulated, LAYER_TABLE_GLASS_*). FEATURE_SINGLE_SCATTERING turns this
  * off (pbrt's and Mitsuba's model, for cross-checks).
+ *
+ * KHR_materials_clearcoat puts a dielectric coat of ior 1.5 over all of this: a GGX
+ * reflection lobe with the exact Fresnel curve, its own roughness and its own normal (the
+ * interpolated one, which the base's normal map does not bend), weighted by
+ * clearcoatFactor c. The base keeps what the coat does not reflect, as a reciprocal
+ * albedo scaling:
+ *
+ *   f = c F_c(wo.h_c) spec_c + (1 - c max(E_c(cos_o), E_c(|cos_i|))) f_base
+ *
+ * with E_c the coat's directional albedo (the B table at ior 1.5). The extension's own
+ * weight 1 - c F(cos_o) is not reciprocal; with max the coat and base together reflect at
+ * most what the base alone would, exactly so at the mirror direction, and a white
+ * Lambertian base under a smooth full coat reflects 0.948 of the light at normal
+ * incidence (the internal reflections that would return the rest are not modelled). Inside a solid the
+ * coat reflects nothing but still scales the base, so transmission stays reciprocal.
  *
  * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
  * the interface with probabilities estimated from their albedos at the macro normal
@@ -120,6 +135,13 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
             p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
         }
     }
+#endif
+#ifdef PATHCL_HAS_CLEARCOAT
+    p.coat = m->clearcoat;
+    p.coat_alpha = m->clearcoat_roughness * m->clearcoat_roughness;
+    p.coat_r = m->clearcoat_roughness * (float)(LAYER_ROUGH_RES - 1);
+    p.coat_n = sp->n_coat;
+    p.coat_e_o = p.coat > 0.0f ? p.coat * coat_albedo(&p, clamp(dot(wo, p.coat_n), 0.0f, 1.0f)) : 0.0f;
 #endif
     p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
     float3 one_minus_avg = 1.0f - layer_average(&p, m);

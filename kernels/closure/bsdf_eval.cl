@@ -83,7 +83,8 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
 
 #endif /* PATHCL_FULL_BSDF */
 
-static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
+/* The base material's lobes (everything but the clear coat). */
+static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
 {
     BsdfEval e;
     e.f_cos = (float3)(0.0f);
@@ -105,4 +106,44 @@ static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, fl
     make_basis(sp->ns, &t, &b);
     return bsdf_eval_local(p, to_local(wo, t, b, sp->ns), to_local(wi, t, b, sp->ns), reflect);
 #endif
+}
+
+#ifdef PATHCL_HAS_CLEARCOAT
+
+/* The clear coat over the base's f_cos and pdf: the base scaled by what the coat passes
+ * (coat_base_scale), plus the coat's own GGX reflection in its frame (rough coats; a
+ * smooth coat is a delta lobe). The coat reflects only from outside a solid. */
+static inline void coat_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi, BsdfEval* e)
+{
+    if (!(p->coat > 0.0f))
+        return;
+    e->f_cos *= coat_base_scale(p, wi);
+    float3 t, b;
+    make_basis(p->coat_n, &t, &b);
+    float3 wo_c = to_local(wo, t, b, p->coat_n), wi_c = to_local(wi, t, b, p->coat_n);
+    if (p->inside || p->coat_alpha < ALPHA_DELTA || !(wo_c.z > 0.0f) || !(wi_c.z > 0.0f) ||
+        !above_surface(sp, dot(wi, sp->ng)))
+        return;
+    float3 h = wo_c + wi_c;
+    float len = length(h);
+    if (!(len > 0.0f))
+        return;
+    h /= len;
+    float cos_h = dot(wo_c, h);
+    float a2 = p->coat_alpha * p->coat_alpha;
+    float fr = p->coat * fresnel_dielectric(cos_h, COAT_IOR);
+    e->f_cos += (float3)(fr * ggx_d(h, a2) * ggx_g1(wo_c, a2) * ggx_g1(wi_c, a2) / (4.0f * wo_c.z));
+    e->pdf += p->lobes.coat * ggx_visible_pdf(wo_c, h, a2) / (4.0f * cos_h);
+}
+
+#endif /* PATHCL_HAS_CLEARCOAT */
+
+/* f cos theta_i and the pdf of sampling wi, over every non-delta lobe. */
+static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
+{
+    BsdfEval e = bsdf_eval_base(p, sp, wo, wi);
+#ifdef PATHCL_HAS_CLEARCOAT
+    coat_eval(p, sp, wo, wi, &e);
+#endif
+    return e;
 }

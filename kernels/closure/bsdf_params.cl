@@ -25,10 +25,14 @@ typedef struct {
 } BsdfEval;
 
 /* Lobe selection probabilities for sampling: the diffuse base (with the conductor's
- * multiple-scattering lobe), the conductor's GGX reflection, and the dielectric interface
- * (its reflection and refraction, split per facet by interface_split). */
+ * multiple-scattering lobe), the conductor's GGX reflection, the dielectric interface
+ * (its reflection and refraction, split per facet by interface_split), and the clear
+ * coat. */
 typedef struct {
     float diffuse, conductor, interface;
+#ifdef PATHCL_HAS_CLEARCOAT
+    float coat; /* the clear coat's reflection, sampled in its own frame */
+#endif
 } LobeChoice;
 
 /* The material at one shading point, for one wo (textures, when present, are applied
@@ -54,6 +58,13 @@ typedef struct {
     float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
     float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
     float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
+#ifdef PATHCL_HAS_CLEARCOAT
+    float coat;       /* clearcoatFactor (0: no coat) */
+    float coat_alpha; /* the coat's GGX alpha = clearcoatRoughness^2 */
+    float coat_r;     /* its continuous roughness table coordinate */
+    float3 coat_n;    /* its normal (SurfacePoint.n_coat) */
+    float coat_e_o;   /* coat x the coat's albedo E_c(cos_o): what it reflects from wo */
+#endif
     LobeChoice lobes;
 #endif
 } BsdfParams;
@@ -62,7 +73,11 @@ typedef struct {
 static inline bool bsdf_is_delta(const BsdfParams* p)
 {
 #ifdef PATHCL_FULL_BSDF
-    return p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
+    bool delta = p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
+#ifdef PATHCL_HAS_CLEARCOAT
+    delta = delta && !(p->coat > 0.0f && p->coat_alpha >= ALPHA_DELTA);
+#endif
+    return delta;
 #else
     return false;
 #endif

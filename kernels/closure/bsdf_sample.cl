@@ -1,14 +1,54 @@
 /* BSDF sampling: a lobe by its estimated albedo, then a direction (cosine-weighted for the
- * diffuse base, a visible GGX facet for the specular lobes, reflection or refraction by
- * the facet's own Fresnel split), with weight f cos / pdf over every non-delta lobe. */
+ * diffuse base, a visible GGX facet for the specular lobes and the clear coat, reflection
+ * or refraction by the facet's own Fresnel split), with weight f cos / pdf over every
+ * non-delta lobe. */
 #include "closure/bsdf_eval.cl"
 #include "closure/bsdf_params.cl"
 #include "closure/fresnel_layer.cl"
+#include "closure/layer_albedo.cl"
 #include "closure/microfacet.cl"
 #include "features.h"
 #include "geom/ray_offset.cl"
 #include "sample/warp.cl"
 #include "util/math.cl"
+
+#ifdef PATHCL_HAS_CLEARCOAT
+
+/* A sample of the clear coat's reflection: a visible facet of the coat in its own frame
+ * (the mirror direction when smooth). */
+static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float2 u)
+{
+    BsdfSample s;
+    s.delta = false;
+    s.pdf = 0.0f;
+    s.eta2 = 1.0f;
+    s.weight = (float3)(0.0f);
+    float3 t, b;
+    make_basis(p->coat_n, &t, &b);
+    float3 wo_c = to_local(wo, t, b, p->coat_n);
+    if (!(wo_c.z > 0.0f))
+        return s;
+    bool smooth = p->coat_alpha < ALPHA_DELTA;
+    float3 wm = smooth ? (float3)(0.0f, 0.0f, 1.0f) : ggx_sample_visible(wo_c, p->coat_alpha, u);
+    float3 wi_c = 2.0f * dot(wo_c, wm) * wm - wo_c;
+    s.wi = to_world(wi_c, t, b, p->coat_n);
+    if (!(wi_c.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
+        return s;
+    if (smooth) {
+        s.delta = true;
+        s.pdf = p->lobes.coat;
+        s.weight = (float3)(p->coat * fresnel_dielectric(wo_c.z, COAT_IOR) / s.pdf);
+        return s;
+    }
+    BsdfEval e = bsdf_eval(p, sp, wo, s.wi);
+    if (!(e.pdf > 0.0f))
+        return s;
+    s.pdf = e.pdf;
+    s.weight = e.f_cos / e.pdf;
+    return s;
+}
+
+#endif /* PATHCL_HAS_CLEARCOAT */
 
 /* u_lobe picks the lobe, u samples it. */
 static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
@@ -31,6 +71,10 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
 #else
     float3 wo_l = to_local(wo, t, b, sp->ns);
     const LobeChoice lobes = p->lobes;
+#ifdef PATHCL_HAS_CLEARCOAT
+    if (lobes.coat > 0.0f && u_lobe >= 1.0f - lobes.coat)
+        return coat_sample(p, sp, wo, u);
+#endif
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 wi;
     bool reflect = true;
@@ -46,6 +90,10 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
             s.delta = true;
             s.pdf = lobes.conductor;
             s.weight = p->metallic * fresnel_schlick(p->base_color, p->cos_o) / lobes.conductor;
+#ifdef PATHCL_HAS_CLEARCOAT
+            if (p->coat > 0.0f)
+                s.weight *= coat_base_scale(p, s.wi);
+#endif
             return s;
         }
         if (!(wo_l.z > 0.0f))
@@ -91,6 +139,10 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
                 s.pdf = lobes.interface * (1.0f - split);
                 s.weight = p->base_color * (tw / s.pdf);
             }
+#ifdef PATHCL_HAS_CLEARCOAT
+            if (p->coat > 0.0f)
+                s.weight *= coat_base_scale(p, s.wi);
+#endif
             return s;
         }
     }
@@ -99,6 +151,9 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
         return s;
     BsdfEval e = bsdf_eval_local(p, wo_l, wi, reflect);
+#ifdef PATHCL_HAS_CLEARCOAT
+    coat_eval(p, sp, wo, s.wi, &e); /* the coat's lobe too */
+#endif
     if (!(e.pdf > 0.0f))
         return s;
     s.pdf = e.pdf;

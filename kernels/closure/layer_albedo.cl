@@ -2,6 +2,7 @@
  * rough dielectric interface's energy albedo, and the dielectric layer's directional
  * albedo E and its average, linear in sqrt(cos theta), roughness and ior. */
 #include "closure/bsdf_params.cl"
+#include "closure/fresnel.h"
 #include "closure/fresnel_layer.cl"
 #include "closure/layer_table.h"
 #include "features.h"
@@ -88,5 +89,38 @@ static inline float3 layer_average(const BsdfParams* p, const Material* m)
     }
     return p->specular * (p->f0c * (e_ss - b) + b);
 }
+
+#ifdef PATHCL_HAS_CLEARCOAT
+
+/* The clear coat is a dielectric layer of ior 1.5 (KHR_materials_clearcoat), F0 = 0.04. */
+#define COAT_IOR 1.5f
+#define COAT_F0 0.04f
+
+/* The coat's directional albedo E_c(cos theta) with factor 1: its GGX reflection with the
+ * exact Fresnel curve of ior 1.5, exact when smooth, else from the B table at x = 0.2. */
+static inline float coat_albedo(const BsdfParams* p, float mu)
+{
+    if (p->coat_alpha < ALPHA_DELTA)
+        return fresnel_dielectric(mu, COAT_IOR);
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    const float x = (0.2f / LAYER_X_MAX) * (float)(LAYER_ETA_RES - 1); /* (ior - 1) / (ior + 1) = 0.2 */
+    const int x0 = (int)x;
+    float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
+    float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
+    float b = mix(b0, b1, x - (float)x0);
+    return COAT_F0 * (e_ss - b) + b;
+}
+
+/* What the coat leaves the base lobes between wo and wi: 1 - coat max(E_c(cos_o),
+ * E_c(|cos_i|)). Reciprocal, and never more than 1 - coat E_c(cos_o), so the coat and the
+ * base together reflect at most what the base alone would. */
+static inline float coat_base_scale(const BsdfParams* p, float3 wi)
+{
+    return 1.0f - fmax(p->coat_e_o, p->coat * coat_albedo(p, fabs(dot(wi, p->coat_n))));
+}
+
+#endif /* PATHCL_HAS_CLEARCOAT */
 
 #endif /* PATHCL_FULL_BSDF */

@@ -10,7 +10,8 @@
 
 /* Lobe probabilities from each lobe's albedo as seen from wo at the macro normal. A rough
  * lobe that exists gets at least LOBE_ESTIMATE_FLOOR of its weight, since its facets can
- * reflect where the macro surface barely does (a black conductor at normal incidence). */
+ * reflect where the macro surface barely does (a black conductor at normal incidence).
+ * Under a clear coat the base lobes' estimates are scaled by what the coat passes. */
 static inline LobeChoice choose_lobes(const BsdfParams* p)
 {
     bool rough = p->alpha >= ALPHA_DELTA;
@@ -31,7 +32,21 @@ static inline LobeChoice choose_lobes(const BsdfParams* p)
         if (has_interface)
             c.interface = fmax(c.interface, LOBE_ESTIMATE_FLOOR * (1.0f - p->metallic));
     }
+#ifdef PATHCL_HAS_CLEARCOAT
+    /* The base lobes see what the coat does not reflect; the coat reflects from outside. */
+    float base = 1.0f - p->coat_e_o;
+    c.diffuse *= base;
+    c.conductor *= base;
+    c.interface *= base;
+    c.coat = p->inside ? 0.0f : p->coat_e_o;
+    if (!p->inside && p->coat_alpha >= ALPHA_DELTA)
+        c.coat = fmax(c.coat, LOBE_ESTIMATE_FLOOR * p->coat);
+    float sum = c.diffuse + c.conductor + c.interface + c.coat;
+    if (sum > 0.0f)
+        c.coat /= sum;
+#else
     float sum = c.diffuse + c.conductor + c.interface;
+#endif
     if (sum > 0.0f) {
         c.diffuse /= sum;
         c.conductor /= sum;

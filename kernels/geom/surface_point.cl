@@ -3,6 +3,7 @@
  * smooth surface the vertex normals describe (Hanika 2021), from where reflected rays
  * leave so that coarse meshes with smooth normals have no dark terminator band. */
 #include "bvh/traversal.cl"
+#include "features.h"
 #include "types.h"
 #include "util/math.cl"
 
@@ -15,6 +16,10 @@ typedef struct {
     bool lifted;     /* p_smooth is clearly above the triangle (beyond rounding) */
     float3 ng;       /* geometric normal, flipped to the side the ray came from */
     float3 ns;       /* shading normal, in the same hemisphere as ng */
+#ifdef PATHCL_HAS_CLEARCOAT
+    float3 n_coat; /* the clear coat's normal: the interpolated one, which the base's normal
+                    * map does not bend (KHR_materials_clearcoat) */
+#endif
     bool front_face; /* the ray hit the counter-clockwise (emitting) side */
     float area;
     int material;
@@ -54,6 +59,9 @@ static inline SurfacePoint surface_point(__global const Triangle* triangles, __g
     }
     sp.ng = ng;
     sp.ns = ns;
+#ifdef PATHCL_HAS_CLEARCOAT
+    sp.n_coat = ns;
+#endif
     /* Hanika's terminator offset: for each vertex, the part of p below the plane through
      * that vertex perpendicular to its normal (on wo's side), lifted out of it, weighted
      * by the barycentrics. Zero on flat triangles and wherever the mesh is concave. */

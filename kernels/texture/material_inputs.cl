@@ -48,6 +48,12 @@ static inline void apply_material_inputs(Material* m, SurfacePoint* sp, float3 w
         m->specular_color.xyz *= texture_at(kd, m->textures[TEXTURE_SLOT_SPECULAR_COLOR], tri, hit.b1, hit.b2).xyz;
     if (m->textures[TEXTURE_SLOT_TRANSMISSION] != TEXTURE_NONE)
         m->transmission *= texture_at(kd, m->textures[TEXTURE_SLOT_TRANSMISSION], tri, hit.b1, hit.b2).x;
+#ifdef PATHCL_HAS_CLEARCOAT
+    if (m->textures[TEXTURE_SLOT_CLEARCOAT] != TEXTURE_NONE)
+        m->clearcoat *= texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT], tri, hit.b1, hit.b2).x;
+    if (m->textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS] != TEXTURE_NONE)
+        m->clearcoat_roughness *= texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS], tri, hit.b1, hit.b2).y;
+#endif
 #ifdef PATHCL_HAS_NORMAL_MAPS
     if (m->textures[TEXTURE_SLOT_NORMAL] != TEXTURE_NONE) {
         /* The tangent frame belongs to the front (counter-clockwise) side; map there, then

@@ -5,13 +5,15 @@
 #ifndef PATHCL_TEXTURE_TEXTURE_SLOTS_H
 #define PATHCL_TEXTURE_TEXTURE_SLOTS_H
 
-#define TEXTURE_SLOT_BASE_COLOR 0         /* RGB (sRGB) scales baseColorFactor */
-#define TEXTURE_SLOT_METALLIC_ROUGHNESS 1 /* B scales metallicFactor, G roughnessFactor */
-#define TEXTURE_SLOT_EMISSIVE 2           /* RGB (sRGB) scales the emission */
-#define TEXTURE_SLOT_NORMAL 3             /* tangent-space normal, scaled by normal_scale */
-#define TEXTURE_SLOT_SPECULAR 4           /* A scales specularFactor */
-#define TEXTURE_SLOT_SPECULAR_COLOR 5     /* RGB (sRGB) scales specularColorFactor */
-#define TEXTURE_SLOT_TRANSMISSION 6       /* R scales transmissionFactor */
-#define TEXTURE_SLOT_COUNT 7
+#define TEXTURE_SLOT_BASE_COLOR 0          /* RGB (sRGB) scales baseColorFactor */
+#define TEXTURE_SLOT_METALLIC_ROUGHNESS 1  /* B scales metallicFactor, G roughnessFactor */
+#define TEXTURE_SLOT_EMISSIVE 2            /* RGB (sRGB) scales the emission */
+#define TEXTURE_SLOT_NORMAL 3              /* tangent-space normal, scaled by normal_scale */
+#define TEXTURE_SLOT_SPECULAR 4            /* A scales specularFactor */
+#define TEXTURE_SLOT_SPECULAR_COLOR 5      /* RGB (sRGB) scales specularColorFactor */
+#define TEXTURE_SLOT_TRANSMISSION 6        /* R scales transmissionFactor */
+#define TEXTURE_SLOT_CLEARCOAT 7           /* R scales clearcoatFactor */
+#define TEXTURE_SLOT_CLEARCOAT_ROUGHNESS 8 /* G scales clearcoatRoughnessFactor */
+#define TEXTURE_SLOT_COUNT 9
 
 #endif

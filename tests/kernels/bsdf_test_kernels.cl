@@ -13,6 +13,9 @@ static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
     sp.lifted = false;
     sp.ng = normal;
     sp.ns = normal;
+#ifdef PATHCL_HAS_CLEARCOAT
+    sp.n_coat = normal;
+#endif
     sp.front_face = front_face != 0u;
     sp.area = 1.0f;
     sp.material = 0;

@@ -22,7 +22,7 @@ __kernel void test_texture_sample(PATHCL_KERNEL_PARAMS __global const float4* qu
 __kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* hits, __global const float4* wos,
                                    __global float4* out_normal, __global float4* out_base_color,
                                    __global float4* out_emission, __global float4* out_specular_color,
-                                   __global float4* out_params)
+                                   __global float4* out_params, __global float4* out_coat)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -40,4 +40,5 @@ __kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* h
     out_emission[i] = m.emission;
     out_specular_color[i] = m.specular_color;
     out_params[i] = (float4)(m.metallic, m.roughness, m.specular_color.w, m.transmission);
+    out_coat[i] = (float4)(m.clearcoat, m.clearcoat_roughness, dot(sp.n_coat, sp.ng), 0.0f);
 }

@@ -21,8 +21,8 @@ pcl_float4 f4(const glm::dvec3& v)
 
 const cl::Program& full_program()
 {
-    static cl::Program p =
-        test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER);
+    static cl::Program p = test::build_test_program(
+        "bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER | FEATURE_CLEARCOAT);
     return p;
 }
 
@@ -46,6 +46,8 @@ Material make_material(const MaterialSpec& s)
     for (pcl_int& t : m.textures)
         t = TEXTURE_NONE;
     m.smooth_layer_average = static_cast<float>(smooth_layer_average(s.ior));
+    m.clearcoat = s.clearcoat;
+    m.clearcoat_roughness = s.clearcoat_roughness;
     return m;
 }
 
@@ -93,13 +95,26 @@ std::vector<MaterialSpec> reflective_materials()
     spec_gloss.specular_color = {0.5f, 0.3f, 0.1f};
     spec_gloss.ior = 0.0f;
     spec_gloss.roughness = 0.5f;
+    // KHR_materials_clearcoat: a rough coat over a plastic, a smoother part coat over a
+    // rough metal, and a smooth (delta) coat over a rough plastic.
+    MaterialSpec coated_plastic = plastic;
+    coated_plastic.clearcoat = 1.0f;
+    coated_plastic.clearcoat_roughness = 0.3f;
+    MaterialSpec coated_metal = conductor(0.6f, {0.9f, 0.6f, 0.3f});
+    coated_metal.clearcoat = 0.6f;
+    coated_metal.clearcoat_roughness = 0.15f;
+    MaterialSpec lacquer = plastic;
+    lacquer.clearcoat = 0.8f;
     return {lambertian({0.5f, 0.6f, 0.7f}),
             conductor(0.2f),
             conductor(0.8f, {0.9f, 0.6f, 0.3f}),
             plastic,
             tinted,
             half,
-            spec_gloss};
+            spec_gloss,
+            coated_plastic,
+            coated_metal,
+            lacquer};
 }
 
 glm::dvec3 incident(double c)

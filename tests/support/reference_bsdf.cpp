@@ -70,6 +70,8 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
     // The kernel's own float 1/ior: near the critical angle F depends on eta so steeply
     // that the double quotient alone moves it by a percent.
     r.eta = r.inside ? static_cast<double>(1.0f / m.ior) : m.ior;
+    r.coat = m.clearcoat;
+    r.coat_alpha = static_cast<double>(m.clearcoat_roughness) * m.clearcoat_roughness;
     return r;
 }
 
@@ -238,9 +240,9 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
         l.diffuse += mean3(metallic * f_ms * (1.0 - ess(cos_o)));
     }
     l.conductor = metallic * mean3(schlick);
-    double coat = mean3(inside ? layer : e_o);
+    double dielectric_coat = mean3(inside ? layer : e_o);
     double glass = mean3(layer) + (1.0 - max3(layer)) * mean3(base_color);
-    l.interface = (1.0 - metallic) * ((1.0 - transmission) * coat + transmission * glass);
+    l.interface = (1.0 - metallic) * ((1.0 - transmission) * dielectric_coat + transmission * glass);
     const double floor = 0.02; // kernels/bsdf.cl LOBE_ESTIMATE_FLOOR
     bool has_interface = (specular > 0.0 && eta != 1.0) || transmission > 0.0;
     if (rough()) {
@@ -248,11 +250,21 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
         if (has_interface)
             l.interface = std::max(l.interface, floor * (1.0 - metallic));
     }
-    double sum = l.diffuse + l.conductor + l.interface;
+    // Under a coat the base lobes see what it does not reflect from wo; the coat reflects
+    // only from outside.
+    double coat_o = coat > 0.0 ? coat * coat_albedo(cos_o) : 0.0;
+    l.diffuse *= 1.0 - coat_o;
+    l.conductor *= 1.0 - coat_o;
+    l.interface *= 1.0 - coat_o;
+    l.coat = inside ? 0.0 : coat_o;
+    if (!inside && coat > 0.0 && coat_alpha >= kAlphaDelta)
+        l.coat = std::max(l.coat, floor * coat);
+    double sum = l.diffuse + l.conductor + l.interface + l.coat;
     if (sum > 0.0) {
         l.diffuse /= sum;
         l.conductor /= sum;
         l.interface /= sum;
+        l.coat /= sum;
     }
     cached_cos_o_ = cos_o;
     cached_lobes_ = l;
@@ -268,7 +280,43 @@ double ReferenceBsdf::interface_split(double c, double cos_o) const
     return r + t > 0.0 ? r / (r + t) : 1.0;
 }
 
+double ReferenceBsdf::coat_albedo(double mu) const
+{
+    const double coat_ior = 1.5, r = (coat_ior - 1.0) / (coat_ior + 1.0), f0 = r * r;
+    if (coat_alpha < kAlphaDelta)
+        return fresnel_dielectric(mu, coat_ior);
+    const std::vector<float>& t = layer_albedo_table();
+    double row = std::sqrt(coat_alpha) * (LAYER_ROUGH_RES - 1), col = mu_col(mu);
+    double x = r / LAYER_X_MAX * (LAYER_ETA_RES - 1);
+    int x0 = static_cast<int>(x);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    double e_ss = table_at(t, LAYER_TABLE_ESS, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b = b0 + (x - x0) * (b1 - b0);
+    return f0 * (e_ss - b) + b;
+}
+
+double ReferenceBsdf::coat_scale(double cos_o, double cos_i) const
+{
+    if (coat <= 0.0)
+        return 1.0;
+    return 1.0 - coat * std::max(coat_albedo(std::abs(cos_o)), coat_albedo(std::abs(cos_i)));
+}
+
 glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
+{
+    glm::dvec3 f = base_f_cos(wo, wi) * coat_scale(std::max(wo.z, 0.0), wi.z);
+    if (coat > 0.0 && coat_alpha >= kAlphaDelta && !inside && wo.z > 0.0 && wi.z > 0.0) {
+        glm::dvec3 h = glm::normalize(wo + wi);
+        double c = glm::dot(wo, h);
+        f += glm::dvec3(coat * fresnel_dielectric(c, 1.5) * ggx_d(h, coat_alpha) * ggx_g1(wo, coat_alpha) *
+                        ggx_g1(wi, coat_alpha) / (4.0 * wo.z));
+    }
+    return f;
+}
+
+glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
 {
     if (wi.z > 0.0) {
         glm::dvec3 h = glm::normalize(wo + wi);
@@ -317,6 +365,10 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     Lobes l = lobes(std::max(wo.z, 0.0));
     if (wi.z > 0.0) {
         double p = l.diffuse * wi.z / kPi; // diffuse and multiple-scattering lobes
+        if (l.coat > 0.0 && coat_alpha >= kAlphaDelta && wo.z > 0.0) {
+            glm::dvec3 h = glm::normalize(wo + wi);
+            p += l.coat * visible_normal_pdf(wo, h, coat_alpha) / (4.0 * glm::dot(wo, h));
+        }
         if (rough() && wo.z > 0.0) {
             glm::dvec3 h = glm::normalize(wo + wi);
             double c = std::abs(glm::dot(wo, h));

@@ -24,7 +24,8 @@ struct ReferenceBsdf {
     double eta = 1.5; // ior of the side wi refracts into over the ior of wo's side
     double ior = 1.5;
     bool thin = true;
-    bool inside = false; // wo inside a solid: no diffuse base
+    bool inside = false;                 // wo inside a solid: no diffuse base
+    double coat = 0.0, coat_alpha = 0.0; // KHR_materials_clearcoat factor and GGX alpha
 
     // The material as the kernel reads it, hit from the front (eta = ior) or the back.
     static ReferenceBsdf from_material(const Material& m, bool front_face);
@@ -39,7 +40,7 @@ struct ReferenceBsdf {
     // Lobe selection probabilities at cos theta_o (delta lobes included): the diffuse
     // base (with the conductor's multiple scattering), the conductor, the interface.
     struct Lobes {
-        double diffuse, conductor, interface;
+        double diffuse, conductor, interface, coat;
     };
     Lobes lobes(double cos_o) const;
     // Probability that the interface reflects (not refracts) at a facet seen at cos c.
@@ -71,6 +72,16 @@ public:
     // rough layer, exact for a smooth one.
     glm::dvec3 layer_albedo(double cos_theta) const;
     glm::dvec3 layer_average() const;
+
+    // The clear coat: its directional albedo with factor 1 (ior 1.5; from the table when
+    // rough, exact when smooth), and the factor 1 - coat max(E_c(|cos_o|), E_c(|cos_i|))
+    // that scales every base lobe.
+    double coat_albedo(double cos_theta) const;
+    double coat_scale(double cos_o, double cos_i) const;
+
+private:
+    // Everything but the coat (the base material's lobes, unscaled).
+    glm::dvec3 base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const;
 };
 
 } // namespace pathcl::test
