@@ -28,6 +28,7 @@ using test::import;
 using test::json_numbers;
 using test::kTilted;
 using test::one_triangle;
+using test::set_clearcoat;
 using test::tilted_triangle_with;
 
 void set_ior(tinygltf::Material& m, double ior)
@@ -68,14 +69,6 @@ TEST(GltfMaterialExtensions, IorZeroTransmitsNothingAndSaysSo)
     EXPECT_EQ(s.materials[0].transmission, 0.0f);
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_TRUE(contains(err, "test.gltf: material 0") && contains(err, "transmission is not rendered")) << err;
-}
-
-void set_clearcoat(tinygltf::Material& m, double factor, double roughness)
-{
-    tinygltf::Value::Object o;
-    o["clearcoatFactor"] = tinygltf::Value(factor);
-    o["clearcoatRoughnessFactor"] = tinygltf::Value(roughness);
-    m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(o);
 }
 
 TEST(GltfMaterialExtensions, ClearcoatFactorsAreReadAndCompileTheCoat)

@@ -16,14 +16,6 @@
 namespace pathcl {
 namespace {
 
-void add_clearcoat(tinygltf::Material& m, double factor, double roughness)
-{
-    tinygltf::Value::Object o;
-    o["clearcoatFactor"] = tinygltf::Value(factor);
-    o["clearcoatRoughnessFactor"] = tinygltf::Value(roughness);
-    m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(o);
-}
-
 TEST(RenderClearcoat, CoatedSpheresRenderTheSameByBsdfSamplingAndMis)
 {
     // Broken variant seen to fail: the coat's pdf left out of bsdf_eval (BSDF sampling
@@ -37,13 +29,13 @@ TEST(RenderClearcoat, CoatedSpheresRenderTheSameByBsdfSamplingAndMis)
     plastic.base_color = {0.8f, 0.15f, 0.1f};
     plastic.roughness = 0.6;
     int coated_plastic = b.add_pbr_material(plastic);
-    add_clearcoat(b.model.materials[static_cast<std::size_t>(coated_plastic)], 1.0, 0.25);
+    test::set_clearcoat(b.model.materials[static_cast<std::size_t>(coated_plastic)], 1.0, 0.25);
     test::GltfBuilder::Pbr gold;
     gold.base_color = {0.95f, 0.7f, 0.3f};
     gold.metallic = 1.0;
     gold.roughness = 0.5;
     int lacquered_gold = b.add_pbr_material(gold);
-    add_clearcoat(b.model.materials[static_cast<std::size_t>(lacquered_gold)], 0.8, 0.0);
+    test::set_clearcoat(b.model.materials[static_cast<std::size_t>(lacquered_gold)], 0.8, 0.0);
     b.add_root(b.add_node(b.add_sphere_mesh(0.45, 24, 48, coated_plastic, false, true), {}, {-0.5, 0.45, 0.0}));
     b.add_root(b.add_node(b.add_sphere_mesh(0.45, 24, 48, lacquered_gold, false, true), {}, {0.5, 0.45, 0.0}));
     b.add_camera_node(b.add_perspective_camera(0.8), {0.0, 0.6, 2.5});

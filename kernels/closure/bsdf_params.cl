@@ -19,6 +19,17 @@ typedef struct {
     bool delta;
 } BsdfSample;
 
+/* No sample (pdf 0): what a sampler returns before it has one. */
+static inline BsdfSample no_bsdf_sample(void)
+{
+    BsdfSample s;
+    s.delta = false;
+    s.pdf = 0.0f;
+    s.eta2 = 1.0f;
+    s.weight = (float3)(0.0f);
+    return s;
+}
+
 typedef struct {
     float3 f_cos; /* f * |cos theta_i|, non-delta lobes only */
     float pdf;    /* of bsdf_sample producing wi */

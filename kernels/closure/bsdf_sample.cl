@@ -18,11 +18,7 @@
  * (the mirror direction when smooth). */
 static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float2 u)
 {
-    BsdfSample s;
-    s.delta = false;
-    s.pdf = 0.0f;
-    s.eta2 = 1.0f;
-    s.weight = (float3)(0.0f);
+    BsdfSample s = no_bsdf_sample();
     float3 t, b;
     make_basis(p->coat_n, &t, &b);
     float3 wo_c = to_local(wo, t, b, p->coat_n);
@@ -53,11 +49,7 @@ static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp
 /* u_lobe picks the lobe, u samples it. */
 static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
 {
-    BsdfSample s;
-    s.delta = false;
-    s.pdf = 0.0f;
-    s.eta2 = 1.0f;
-    s.weight = (float3)(0.0f);
+    BsdfSample s = no_bsdf_sample();
     float3 t, b;
     make_basis(sp->ns, &t, &b);
 #ifndef PATHCL_FULL_BSDF

@@ -330,4 +330,12 @@ void GltfBuilder::set_attribute(int mesh, const std::string& name, int accessor)
     model.meshes[static_cast<std::size_t>(mesh)].primitives[0].attributes[name] = accessor;
 }
 
+void set_clearcoat(tinygltf::Material& m, double factor, double roughness)
+{
+    tinygltf::Value::Object o;
+    o["clearcoatFactor"] = tinygltf::Value(factor);
+    o["clearcoatRoughnessFactor"] = tinygltf::Value(roughness);
+    m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(o);
+}
+
 } // namespace pathcl::test

@@ -89,5 +89,7 @@ public:
 // a textureInfo {"index": index, "texCoord": texcoord}.
 tinygltf::Value json_numbers(const std::vector<double>& values);
 tinygltf::Value texture_info(int index, int texcoord = 0);
+// Gives material `m` KHR_materials_clearcoat with these factors.
+void set_clearcoat(tinygltf::Material& m, double factor, double roughness);
 
 } // namespace pathcl::test
