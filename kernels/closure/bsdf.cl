@@ -62,8 +62,9 @@
  * weight 1 - c F(cos_o) is not reciprocal; with max the coat and base together reflect at
  * most what the base alone would, exactly so at the mirror direction, and a white
  * Lambertian base under a smooth full coat reflects 0.948 of the light at normal
- * incidence (the internal reflections that would return the rest are not modelled). Inside a solid the
- * coat reflects nothing but still scales the base, so transmission stays reciprocal.
+ * incidence (the internal reflections that would return the rest are not modelled).
+ * Inside a solid the coat reflects nothing but still scales the base, so transmission
+ * stays reciprocal.
  *
  * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
  * the interface with probabilities estimated from their albedos at the macro normal
