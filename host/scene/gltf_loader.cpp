@@ -17,6 +17,7 @@
 #include "scene/confined_files.h"
 #include "scene/gltf_camera.h"
 #include "scene/gltf_container.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_environment.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_lights.h"
@@ -77,7 +78,8 @@ struct Importer {
                                                         "KHR_materials_volume",
                                                         "KHR_lights_punctual",
                                                         "KHR_texture_transform",
-                                                        "KHR_mesh_quantization"};
+                                                        "KHR_mesh_quantization",
+                                                        "KHR_draco_mesh_compression"};
         for (const std::string& ext : model.extensionsRequired)
             if (!supported.count(ext))
                 throw Error(source + ": requires the unsupported extension " + ext);
@@ -215,6 +217,11 @@ struct Importer {
 Scene import_gltf(const tinygltf::Model& model, const std::string& source, const std::string& base_dir,
                   const SceneChoice& choice)
 {
+    if (has_draco_primitives(model)) { // decoded into a copy: the caller's model stays as it is
+        tinygltf::Model decoded = model;
+        decode_draco_primitives(decoded, source);
+        return import_gltf(decoded, source, base_dir, choice);
+    }
     Importer importer(model, source, base_dir);
     importer.choice = choice;
     importer.run();
@@ -235,6 +242,10 @@ Scene load_gltf(const std::string& path, const SceneChoice& choice)
     else
         check_json_nesting(bytes.data(), bytes.size(), path);
     check_gltf_schema(json, path);
+    DracoIndices draco_indices;
+    if (std::vector<unsigned char> detached = detach_draco_indices(bytes, binary, json, draco_indices);
+        !detached.empty())
+        bytes = std::move(detached); // `json` is not used below
     std::string base_dir = std::filesystem::path(path).parent_path().string();
     ConfinedFiles files(base_dir);
     tinygltf::TinyGLTF loader;
@@ -250,6 +261,7 @@ Scene load_gltf(const std::string& path, const SceneChoice& choice)
         throw Error(path + ": " + files.refusals().front());
     if (!ok)
         throw Error(path + ": cannot load glTF: " + one_line(err.empty() ? warning : err));
+    decode_draco_primitives(model, path, draco_indices);
     Importer importer(model, path, base_dir);
     importer.choice = choice;
     importer.textures.set_refusals(&files.refusals());
