@@ -127,7 +127,7 @@ typedef struct {
 
 /* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
  * _volume and _clearcoat, as the kernels read it (see kernels/closure/bsdf.cl for the
- * model): 144 bytes.
+ * model): 160 bytes.
  * Each texture slot indexes the TextureView array (TEXTURE_NONE when absent); a texture
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
@@ -148,7 +148,8 @@ typedef struct {
     pcl_float alpha_cutoff;               /* glTF alphaCutoff (MATERIAL_ALPHA_MASK) */
     pcl_float clearcoat;                  /* KHR_materials_clearcoat clearcoatFactor (0: no coat) */
     pcl_float clearcoat_roughness;        /* clearcoatRoughnessFactor, perceptual */
-    pcl_int pad2;
+    pcl_float clearcoat_normal_scale;     /* clearcoatNormalTexture.scale */
+    pcl_int pad0, pad1, pad2;
 } Material;
 
 /* Light types */

@@ -35,7 +35,7 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     // read. Broken variant seen to fail: the normal texture read from the emissive slot.
     Quad q = quad();
     std::vector<int> tex;
-    for (int i = 0; i < 9; ++i)
+    for (int i = 0; i < 10; ++i)
         tex.push_back(q.b.add_texture(q.b.add_png_image(1, 1, {static_cast<std::uint8_t>(i * 25), 0, 0, 255})));
     tinygltf::Material& m = q.mat();
     m.pbrMetallicRoughness.baseColorTexture.index = tex[0];
@@ -58,18 +58,23 @@ TEST(GltfTextures, EverySlotReadsItsTextureAndTexcoordSet)
     coat["clearcoatFactor"] = tinygltf::Value(1.0);
     coat["clearcoatTexture"] = texture_info(tex[7], 1);
     coat["clearcoatRoughnessTexture"] = texture_info(tex[8]);
+    coat["clearcoatNormalTexture"] = texture_info(tex[9]);
     m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(coat);
     Scene s = import_gltf(q.b.model, "slots.gltf");
     const SceneMaterial& sm = s.materials[0];
-    const SceneTexture* slots[9] = {
-        &sm.textures[TEXTURE_SLOT_BASE_COLOR],         &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS],
-        &sm.textures[TEXTURE_SLOT_EMISSIVE],           &sm.textures[TEXTURE_SLOT_NORMAL],
-        &sm.textures[TEXTURE_SLOT_SPECULAR],           &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
-        &sm.textures[TEXTURE_SLOT_TRANSMISSION],       &sm.textures[TEXTURE_SLOT_CLEARCOAT],
-        &sm.textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS]};
-    const int sets[9] = {1, 0, 0, 0, 1, 0, 0, 1, 0};
-    ASSERT_EQ(s.images.size(), 9u);
-    for (int i = 0; i < 9; ++i) {
+    const SceneTexture* slots[10] = {&sm.textures[TEXTURE_SLOT_BASE_COLOR],
+                                     &sm.textures[TEXTURE_SLOT_METALLIC_ROUGHNESS],
+                                     &sm.textures[TEXTURE_SLOT_EMISSIVE],
+                                     &sm.textures[TEXTURE_SLOT_NORMAL],
+                                     &sm.textures[TEXTURE_SLOT_SPECULAR],
+                                     &sm.textures[TEXTURE_SLOT_SPECULAR_COLOR],
+                                     &sm.textures[TEXTURE_SLOT_TRANSMISSION],
+                                     &sm.textures[TEXTURE_SLOT_CLEARCOAT],
+                                     &sm.textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS],
+                                     &sm.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL]};
+    const int sets[10] = {1, 0, 0, 0, 1, 0, 0, 1, 0, 0};
+    ASSERT_EQ(s.images.size(), 10u);
+    for (int i = 0; i < 10; ++i) {
         ASSERT_TRUE(slots[i]->present()) << "slot " << i;
         EXPECT_EQ(s.images[static_cast<std::size_t>(slots[i]->image)].rgba8[0], i * 25) << "slot " << i;
         EXPECT_EQ(slots[i]->texcoord, sets[i]) << "slot " << i;

@@ -98,7 +98,7 @@ Scene textured_quad(const QuadOptions& o)
 }
 
 struct MaterialProbe {
-    std::vector<pcl_float4> normal, base_color, emission, specular_color, params, coat;
+    std::vector<pcl_float4> normal, base_color, emission, specular_color, params, coat, coat_normal;
 };
 
 // test_material_inputs at barycentrics (b1, b2) of scene triangle 0, seen along -wo.
@@ -120,13 +120,13 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
     DeviceArrays arrays = upload_arrays(dev, cs.arrays, 1);
     std::size_t n = hits.size();
     std::vector<cl::Buffer> outs;
-    for (int i = 0; i < 6; ++i)
+    for (int i = 0; i < 7; ++i)
         outs.emplace_back(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer hit_buffer = upload(hits), wo_buffer = upload(wos); // alive until the kernel has run
-    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4], outs[5]);
+    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4], outs[5], outs[6]);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n),
-            read_back(outs[3], n), read_back(outs[4], n), read_back(outs[5], n)};
+    return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n),
+            read_back(outs[4], n), read_back(outs[5], n), read_back(outs[6], n)};
 }
 
 glm::vec3 v3(const pcl_float4& p)
@@ -170,6 +170,52 @@ TEST(MaterialInputs, TheBasesNormalMapDoesNotBendTheClearCoat)
     MaterialProbe p = probe(textured_quad(o), {{0.2f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
     EXPECT_LT(p.normal[0].w, 0.95f) << "the base's normal is tilted";
     EXPECT_FLOAT_EQ(p.coat[0].z, 1.0f) << "the coat's is not";
+}
+
+// Gives the quad's coat a clearcoatNormalTexture of one texel, with `scale`.
+std::function<void(test::GltfBuilder&, tinygltf::Material&)> coat_normal_map(std::vector<std::uint8_t> texel,
+                                                                             double scale)
+{
+    return [texel, scale](test::GltfBuilder& b, tinygltf::Material& m) {
+        tinygltf::Value::Object coat = m.extensions["KHR_materials_clearcoat"].Get<tinygltf::Value::Object>();
+        tinygltf::Value info = test::texture_info(b.add_texture(b.add_png_image(1, 1, texel)));
+        info.Get<tinygltf::Value::Object>()["scale"] = tinygltf::Value(scale);
+        coat["clearcoatNormalTexture"] = info;
+        m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(coat);
+    };
+}
+
+TEST(MaterialInputs, TheClearcoatNormalMapBendsOnlyTheCoat)
+{
+    // clearcoatNormalTexture tilts the coat's normal in the tangent frame, with its own
+    // scale, from the interpolated normal: not from the base's mapped one, which it leaves
+    // as it is. Texel (255, 0, 255), scale 0.5: n_t = (0.5, -0.5, 1); the base's texel
+    // (64, 128, 255) tilts the base towards -x. With mirrored UVs the tangent is -x. Without
+    // a normalTexture the tangents follow the coat's texture coordinates (computed here).
+    // Broken variants seen to fail: the coat map applied to the base's mapped normal; the
+    // base's scale used for the coat; no tangents without a normalTexture.
+    for (bool mirrored : {false, true})
+        for (bool base_map : {true, false}) {
+            SCOPED_TRACE(std::string(mirrored ? "mirrored UVs" : "upright UVs") +
+                         (base_map ? ", with a base normal map" : ", no base normal map"));
+            QuadOptions o;
+            o.mirrored_uv = mirrored;
+            o.normal_texel = {64, 128, 255, 255};
+            auto coat_map = coat_normal_map({255, 0, 255, 255}, 0.5);
+            o.edit = [&](test::GltfBuilder& b, tinygltf::Material& m) {
+                coat_map(b, m);
+                if (!base_map)
+                    m.normalTexture = tinygltf::NormalTextureInfo{};
+            };
+            MaterialProbe p = probe(textured_quad(o), {{0.3f, 0.3f}}, {{0.0f, 0.0f, 1.0f}});
+            glm::dvec3 coat = glm::normalize(glm::dvec3(mirrored ? -0.5 : 0.5, -0.5, 1.0));
+            glm::dvec3 got(v3(p.coat_normal[0]));
+            EXPECT_LT(glm::length(got - coat), 1e-5) << got.x << " " << got.y << " " << got.z;
+            double bx = 2.0 * 64.0 / 255.0 - 1.0, by = 2.0 * 128.0 / 255.0 - 1.0;
+            glm::dvec3 base = base_map ? glm::normalize(glm::dvec3(mirrored ? -bx : bx, by, 1.0)) : glm::dvec3(0, 0, 1);
+            glm::dvec3 ns(v3(p.normal[0]));
+            EXPECT_LT(glm::length(ns - base), 1e-5) << ns.x << " " << ns.y << " " << ns.z;
+        }
 }
 
 TEST(MaterialInputs, SpecularGlossinessTexturesGiveDiffuseSpecularColourAndRoughness)

@@ -43,6 +43,11 @@ TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows)
     EXPECT_NE(coated, f) << "clear coat";
     s.materials[0].clearcoat_roughness = 0.25f;
     EXPECT_NE(scene_fingerprint(s), coated) << "clear coat roughness";
+    s.materials[0].textures[TEXTURE_SLOT_CLEARCOAT_NORMAL].image = 0;
+    const std::uint64_t coat_mapped = scene_fingerprint(s);
+    EXPECT_NE(coat_mapped, coated) << "clear coat normal texture";
+    s.materials[0].clearcoat_normal_scale = 0.5f;
+    EXPECT_NE(scene_fingerprint(s), coat_mapped) << "clear coat normal scale";
     s = base;
     s.materials[0].name = "renamed"; // names do not change a render
     EXPECT_EQ(scene_fingerprint(s), f);

@@ -25,6 +25,7 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.alpha_cutoff = m.alpha_cutoff;
         dm.clearcoat = m.clearcoat;
         dm.clearcoat_roughness = m.clearcoat_roughness;
+        dm.clearcoat_normal_scale = m.clearcoat_normal_scale;
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));

@@ -29,7 +29,8 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_UNLIT, m.unlit);
         set(FEATURE_CLEARCOAT, m.clearcoat > 0.0f);
         set(FEATURE_TEXTURES, m.has_textures());
-        set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present());
+        set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present() ||
+                                     (m.clearcoat > 0.0f && m.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL].present()));
     }
     set(FEATURE_VERTEX_COLORS, !scene.colors.empty());
     std::vector<bool> alpha_tested = alpha_tested_triangles(scene);

@@ -120,9 +120,13 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     if (auto e = m.extensions.find("KHR_materials_clearcoat"); e != m.extensions.end()) {
         out.clearcoat = static_cast<float>(number_or(e->second, "clearcoatFactor", 0.0));
         out.clearcoat_roughness = static_cast<float>(number_or(e->second, "clearcoatRoughnessFactor", 0.0));
-        if (e->second.Has("clearcoatNormalTexture"))
-            warn(source + ": " + where +
-                 ": KHR_materials_clearcoat clearcoatNormalTexture is not read; the coat uses the interpolated normal");
+        if (e->second.Has("clearcoatNormalTexture")) {
+            out.clearcoat_normal_scale =
+                static_cast<float>(number_or(e->second.Get("clearcoatNormalTexture"), "scale", 1.0));
+            if (!std::isfinite(out.clearcoat_normal_scale))
+                throw Error(source + ": " + where +
+                            ": KHR_materials_clearcoat clearcoatNormalTexture scale must be finite");
+        }
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
@@ -165,6 +169,13 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
             out.textures[static_cast<std::size_t>(ts.slot)] =
                 textures.read(info.index, info.texcoord, texture_transform(*info.extensions), slot_where);
     }
+    const SceneTexture& coat_normal = out.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL];
+    if (coat_normal.present() && out.textures[TEXTURE_SLOT_NORMAL].present() &&
+        coat_normal.texcoord != out.textures[TEXTURE_SLOT_NORMAL].texcoord)
+        warn(source + ": " + where + ": clearcoatNormalTexture reads TEXCOORD_" + std::to_string(coat_normal.texcoord) +
+             " but the tangents follow normalTexture's TEXCOORD_" +
+             std::to_string(out.textures[TEXTURE_SLOT_NORMAL].texcoord) +
+             " (one tangent frame per triangle): the coat's normal map is approximate");
     if (m.normalTexture.index >= 0) {
         out.normal_scale = static_cast<float>(m.normalTexture.scale);
         if (!std::isfinite(out.normal_scale))

@@ -25,6 +25,14 @@ constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 
 } // namespace
 
+int normal_map_texcoord(const SceneMaterial& material)
+{
+    for (int slot : {TEXTURE_SLOT_NORMAL, TEXTURE_SLOT_CLEARCOAT_NORMAL})
+        if (material.textures[static_cast<std::size_t>(slot)].present())
+            return material.textures[static_cast<std::size_t>(slot)].texcoord;
+    return -1;
+}
+
 void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometry& geometry)
 {
     for (const SceneMaterial& material : materials) {
@@ -36,7 +44,7 @@ void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometr
                 geometry.texcoord_used.resize(set + 1, false);
             geometry.texcoord_used[set] = true;
         }
-        geometry.tangents_used = geometry.tangents_used || material.textures[TEXTURE_SLOT_NORMAL].present();
+        geometry.tangents_used = geometry.tangents_used || normal_map_texcoord(material) >= 0;
     }
     geometry.texcoords.resize(geometry.texcoord_used.size());
 }
@@ -264,8 +272,8 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(co
             attr.colors[i] = glm::vec4(c);
         }
     }
-    if (mat.textures[TEXTURE_SLOT_NORMAL].present())
-        attr.tangents = object_tangents(prim, mat.textures[TEXTURE_SLOT_NORMAL].texcoord, pos, tris, what);
+    if (int set = normal_map_texcoord(mat); set >= 0)
+        attr.tangents = object_tangents(prim, set, pos, tris, what);
     return attr;
 }
 

@@ -24,6 +24,11 @@ namespace pathcl {
 
 class AccessorReader;
 
+// The texture coordinate set a material's tangents follow: its normal texture's, else its
+// clear coat's normal texture's (one tangent frame per triangle serves both maps); -1 when
+// it has neither.
+int normal_map_texcoord(const SceneMaterial& material);
+
 // Decides which attributes the pending triangles carry: each TEXCOORD_n set that a
 // texture of `materials` reads, and tangents when one of them has a normal texture.
 // Called once, with all of the file's materials, before the first primitive.

@@ -66,8 +66,9 @@ struct SceneMaterial {
     // Inside a solid (not thin-walled): Beer-Lambert absorption per unit length,
     // -ln(attenuationColor) / attenuationDistance (0: clear; at most FLT_MAX).
     glm::vec3 absorption{0.0f};
-    float clearcoat = 0.0f;           // KHR_materials_clearcoat clearcoatFactor (0: no coat)
-    float clearcoat_roughness = 0.0f; // clearcoatRoughnessFactor
+    float clearcoat = 0.0f;              // KHR_materials_clearcoat clearcoatFactor (0: no coat)
+    float clearcoat_roughness = 0.0f;    // clearcoatRoughnessFactor
+    float clearcoat_normal_scale = 1.0f; // clearcoatNormalTexture.scale
 
     // Textures, one per slot (TEXTURE_SLOT_*, the table in scene/texture_slots.h); each
     // value multiplies its factor.

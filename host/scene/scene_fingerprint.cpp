@@ -77,6 +77,8 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(3);
             f.add(m.clearcoat);
             f.add(m.clearcoat_roughness);
+            if (m.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL].present())
+                f.add(m.clearcoat_normal_scale);
         }
         for (std::size_t slot = 0; slot < m.textures.size(); ++slot) {
             const SceneTexture& t = m.textures[slot];

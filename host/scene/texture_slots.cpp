@@ -14,6 +14,7 @@ const std::array<TextureSlot, TEXTURE_SLOT_COUNT>& texture_slot_table()
         {TEXTURE_SLOT_TRANSMISSION, "transmissionTexture", "KHR_materials_transmission", false},
         {TEXTURE_SLOT_CLEARCOAT, "clearcoatTexture", "KHR_materials_clearcoat", false},
         {TEXTURE_SLOT_CLEARCOAT_ROUGHNESS, "clearcoatRoughnessTexture", "KHR_materials_clearcoat", false},
+        {TEXTURE_SLOT_CLEARCOAT_NORMAL, "clearcoatNormalTexture", "KHR_materials_clearcoat", false},
     }};
     return table;
 }

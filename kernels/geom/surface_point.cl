@@ -18,7 +18,7 @@ typedef struct {
     float3 ns;       /* shading normal, in the same hemisphere as ng */
 #ifdef PATHCL_HAS_CLEARCOAT
     float3 n_coat; /* the clear coat's normal: the interpolated one, which the base's normal
-                    * map does not bend (KHR_materials_clearcoat) */
+                    * map does not bend, bent by the coat's own (KHR_materials_clearcoat) */
 #endif
     bool front_face; /* the ray hit the counter-clockwise (emitting) side */
     float area;

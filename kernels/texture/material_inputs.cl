@@ -55,10 +55,20 @@ static inline void apply_material_inputs(Material* m, SurfacePoint* sp, float3 w
         m->clearcoat_roughness *= texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS], tri, hit.b1, hit.b2).y;
 #endif
 #ifdef PATHCL_HAS_NORMAL_MAPS
+    /* The tangent frame belongs to the front (counter-clockwise) side; map there, then turn
+     * the result to wo's side like the interpolated normal. */
+    float side = sp->front_face ? 1.0f : -1.0f;
+#ifdef PATHCL_HAS_CLEARCOAT
+    /* The coat's own normal map bends the interpolated normal (sp->n_coat), not the base's
+     * mapped one. */
+    if (m->textures[TEXTURE_SLOT_CLEARCOAT_NORMAL] != TEXTURE_NONE) {
+        float3 texel = texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT_NORMAL], tri, hit.b1, hit.b2).xyz;
+        float3 mapped =
+            normal_from_map(side * sp->n_coat, kd->tangents[tri], hit.b1, hit.b2, texel, m->clearcoat_normal_scale);
+        sp->n_coat = keep_reflection_above_surface(sp->ng, wo, side * mapped);
+    }
+#endif
     if (m->textures[TEXTURE_SLOT_NORMAL] != TEXTURE_NONE) {
-        /* The tangent frame belongs to the front (counter-clockwise) side; map there, then
-         * turn the result to wo's side like the interpolated normal. */
-        float side = sp->front_face ? 1.0f : -1.0f;
         float3 texel = texture_at(kd, m->textures[TEXTURE_SLOT_NORMAL], tri, hit.b1, hit.b2).xyz;
         float3 mapped = normal_from_map(side * sp->ns, kd->tangents[tri], hit.b1, hit.b2, texel, m->normal_scale);
         sp->ns = keep_reflection_above_surface(sp->ng, wo, side * mapped);

@@ -14,6 +14,7 @@
 #define TEXTURE_SLOT_TRANSMISSION 6        /* R scales transmissionFactor */
 #define TEXTURE_SLOT_CLEARCOAT 7           /* R scales clearcoatFactor */
 #define TEXTURE_SLOT_CLEARCOAT_ROUGHNESS 8 /* G scales clearcoatRoughnessFactor */
-#define TEXTURE_SLOT_COUNT 9
+#define TEXTURE_SLOT_CLEARCOAT_NORMAL 9    /* the coat's tangent-space normal, scaled by clearcoat_normal_scale */
+#define TEXTURE_SLOT_COUNT 10
 
 #endif
