@@ -14,14 +14,18 @@ With --light KIND the ceiling light is replaced by a KHR_lights_punctual light o
 kind (point, sphere, spot, rect-spot, directional) and the ceiling is closed: one test scene per
 light type (scenes/cornell-box-KIND.gltf, written by tools/make_scenes.sh). With
 --variant glass-mirror the tall block is an ideal mirror and the short block gives way
-to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf). With --variant dense the
+to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf). With --variant features
+the short block gives way to a sphere of coloured glass (KHR_materials_volume
+attenuation), the tall block is clear-coated red plastic (KHR_materials_clearcoat) and a
+leaf cut out of a card by its texture's alpha (alphaMode MASK) hangs in front of the back
+wall (scenes/cornell-box-features.gltf). With --variant dense the
 short block gives way to a displaced, flat-shaded white blob of 1,048,576 triangles: the
 million-triangle scene of the speed comparison (tools/compare_mitsuba.sh writes it; 32 MB,
 not committed).
 
-Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror|dense] [OUT.gltf]
+Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror|features|dense] [OUT.gltf]
 """
-import base64, json, math, struct, sys
+import base64, json, math, struct, sys, zlib
 
 MM = 0.001
 
@@ -219,6 +223,68 @@ GLASS = {"name": "glass", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0,
                         "KHR_materials_volume": {"thicknessFactor": 0.2}}}
 GLASS_SPHERE = (185.0, 100.5, 169.0, 100.0)  # centre and radius, mm: 0.5 mm above the floor
 
+# --variant features: glass tinted by absorption (what is left after 10 cm: the
+# attenuation colour), a red plastic under a smooth clear coat, and a leaf card.
+TINTED_GLASS = {"name": "tinted_glass", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+                "metallicFactor": 0.0, "roughnessFactor": 0.0},
+                "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                               "KHR_materials_ior": {"ior": 1.5},
+                               "KHR_materials_volume": {"thicknessFactor": 0.2, "attenuationDistance": 0.1,
+                                                        "attenuationColor": [0.35, 0.75, 0.95]}}}
+COATED = {"name": "coated_red", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.08, 0.05, 1.0],
+          "metallicFactor": 0.0, "roughnessFactor": 0.6},
+          "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.08}}}
+# The leaf card (mm): upright, facing the camera (-z), in front of the back wall, above the
+# tall block; its texture's alpha cuts the leaf out (alphaCutoff 0.5).
+LEAF_CARD = [(320, 300, 500), (520, 300, 500), (520, 520, 500), (320, 520, 500)]
+
+def png_bytes(width, height, rgba):
+    """An 8-bit RGBA PNG of rows (top first) of (r, g, b, a) tuples."""
+    raw = b"".join(b"\x00" + b"".join(struct.pack("4B", *px) for px in row) for row in rgba)
+    def chunk(tag, data):
+        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+def leaf_texels(size=64):
+    """A leaf along the texture's diagonal: opaque green inside, alpha 0 outside, with a
+    lighter midrib. Texel (i, j) is column i from the left, row j from the top."""
+    rows = []
+    for j in range(size):
+        row = []
+        for i in range(size):
+            u, v = (i + 0.5) / size, 1.0 - (j + 0.5) / size  # v up
+            t = (u + v) / 2.0                                  # along the leaf, stem at (0, 0)
+            s = (u - v) / math.sqrt(2.0)                       # across it
+            half_width = 0.28 * math.sin(math.pi * min(max((t - 0.08) / 0.88, 0.0), 1.0)) ** 0.8
+            inside = abs(s) < half_width or (t < 0.1 and abs(s) < 0.015)  # blade, or stem
+            rib = abs(s) < 0.012 and t < 0.9
+            row.append((120, 200, 90, 255) if inside and rib else (40, 120, 30, 255) if inside else (40, 120, 30, 0))
+        rows.append(row)
+    return rows
+
+def add_leaf_card(b, material):
+    """The leaf card: a quad with texture coordinates, and its PNG in the buffer."""
+    corners = [tuple(c * MM for c in v) for v in LEAF_CARD]
+    uvs = [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0), (0.0, 0.0)]  # the image upright, seen from -z
+    pv = b.add_view(b"".join(struct.pack("<3f", *p) for p in corners), 34962)
+    f32 = lambda x: struct.unpack("<f", struct.pack("<f", x))[0]
+    b.accessors.append({"bufferView": pv, "componentType": 5126, "count": 4, "type": "VEC3",
+                        "min": [f32(min(p[i] for p in corners)) for i in range(3)],
+                        "max": [f32(max(p[i] for p in corners)) for i in range(3)]})
+    tv = b.add_view(b"".join(struct.pack("<2f", *t) for t in uvs), 34962)
+    b.accessors.append({"bufferView": tv, "componentType": 5126, "count": 4, "type": "VEC2"})
+    iv = b.add_view(struct.pack("<6H", 0, 2, 1, 0, 3, 2), 34963)  # counter-clockwise from -z
+    b.accessors.append({"bufferView": iv, "componentType": 5123, "count": 6, "type": "SCALAR"})
+    n = len(b.accessors)
+    b.meshes.append({"name": "leaf_card", "primitives": [{
+        "attributes": {"POSITION": n - 3, "TEXCOORD_0": n - 2}, "indices": n - 1,
+        "material": material, "mode": 4}]})
+    b.nodes.append({"name": "leaf_card", "mesh": len(b.meshes) - 1})
+    image_view = b.add_view(png_bytes(64, 64, leaf_texels()), None)
+    del b.views[image_view]["target"]
+    return image_view
+
 def blob_quads(cx, cy, cz, r, stacks=512, slices=1024):
     """A sphere displaced by a few ridges (up to 9 % of r), as sphere_quads: stacks x slices
     quads, 2 * stacks * slices triangles (the displacement keeps the pole rows from
@@ -242,8 +308,8 @@ def main():
                 sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
         else:
             variant = args[1]
-            if variant not in ("glass-mirror", "dense"):
-                sys.exit("make_cornell_box.py: --variant must be glass-mirror or dense")
+            if variant not in ("glass-mirror", "features", "dense"):
+                sys.exit("make_cornell_box.py: --variant must be glass-mirror, features or dense")
         args = args[2:]
     name = "cornell-box" + (f"-{light_kind}" if light_kind else "") + (f"-{variant}" if variant else "")
     out = args[0] if args else f"scenes/{name}.gltf"
@@ -274,6 +340,19 @@ def main():
         b.add_mesh("glass_sphere", quads, glass_m, normals=sphere_normals(quads, *GLASS_SPHERE[:3]))
         b.add_mesh("tall_block_mirror", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], mirror_m)
         extensions_used += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"]
+    elif variant == "features":
+        materials += [TINTED_GLASS, COATED, {
+            "name": "leaf", "doubleSided": True, "alphaMode": "MASK", "alphaCutoff": 0.5,
+            "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "baseColorTexture": {"index": 0},
+                                     "metallicFactor": 0.0, "roughnessFactor": 1.0},
+            "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}]
+        glass_m, coated_m, leaf_m = len(materials) - 3, len(materials) - 2, len(materials) - 1
+        quads = sphere_quads(*GLASS_SPHERE, stacks=32, slices=64)
+        b.add_mesh("tinted_glass_sphere", quads, glass_m, normals=sphere_normals(quads, *GLASS_SPHERE[:3]))
+        b.add_mesh("tall_block_coated", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], coated_m)
+        leaf_image = add_leaf_card(b, leaf_m)
+        extensions_used += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume",
+                            "KHR_materials_clearcoat"]
     elif variant == "dense":
         b.add_mesh("blob", blob_quads(*GLASS_SPHERE), WHITE)
         b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)
@@ -304,6 +383,9 @@ def main():
                       materials, yfov, extensions_used)
     if lights:
         gltf["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
+    if variant == "features":
+        gltf["images"] = [{"name": "leaf", "bufferView": leaf_image, "mimeType": "image/png"}]
+        gltf["textures"] = [{"source": 0}]
     write_gltf(out, gltf)
 
 if __name__ == "__main__":

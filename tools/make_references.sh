@@ -6,7 +6,7 @@ set -eu
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 [ $# -gt 0 ] && shift
-SCENES=${*:-"cornell-box cornell-box-point cornell-box-sphere cornell-box-spot cornell-box-rect-spot cornell-box-directional sky-spheres cornell-box-glass-mirror material-spheres textured"}
+SCENES=${*:-"cornell-box cornell-box-point cornell-box-sphere cornell-box-spot cornell-box-rect-spot cornell-box-directional sky-spheres cornell-box-glass-mirror cornell-box-features material-spheres textured"}
 for scene in $SCENES; do
     "$BUILD/pathcl" render "scenes/$scene.gltf" -o "tests/references/$scene-64.exr" \
         --width 64 --height 64 --spp 8192 --max-bounces 8 --seed 12345 --sampler independent
