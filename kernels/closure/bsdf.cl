@@ -53,8 +53,8 @@
  * KHR_materials_clearcoat puts a dielectric coat of ior 1.5 over all of this: a GGX
  * reflection lobe with the exact Fresnel curve, its own roughness and its own normal (the
  * interpolated one, which the base's normal map does not bend, bent by the coat's own
- * clearcoatNormalTexture), weighted by clearcoatFactor c. The base keeps what the coat does not reflect, as a reciprocal
- * albedo scaling:
+ * clearcoatNormalTexture), weighted by clearcoatFactor c. The base keeps what the coat
+ * does not reflect, as a reciprocal albedo scaling:
  *
  *   f = c F_c(wo.h_c) spec_c + (1 - c max(E_c(cos_o), E_c(|cos_i|))) f_base
  *
