@@ -261,6 +261,23 @@ TEST_F(Cli, OutputEqualToAnInputIsRefused)
     EXPECT_EQ(read_file(work_ / "env.exr"), env);
 }
 
+// A scene with nothing to light it renders black, as it should, but says so in one warning
+// line; light from the command line (--background) silences it. Broken variant seen to
+// fail: no warning (the black image came without a word).
+TEST_F(Cli, SceneWithoutLightWarnsThatTheImageIsBlack)
+{
+    write_file(work_ / "dark.gltf", gltf_with_external_buffer("tri.bin"));
+    const float tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    write_file(work_ / "tri.bin", std::string(reinterpret_cast<const char*>(tri), sizeof tri));
+    RunResult r = run("render dark.gltf -o dark.exr" + kTiny);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "pathcl: warning: dark.gltf: has no light (no emissive material, punctual light or environment) "
+                     "and no unlit material: the image is black (--background R,G,B or --env FILE adds light)\n");
+    r = run("render dark.gltf -o lit.exr --background 1,1,1" + kTiny);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
 // An image that does not fit the device is refused before anything is allocated, naming
 // what it needs and the device's limit (it was OpenCL error -61 from clCreateBuffer, or a
 // crash inside the driver).

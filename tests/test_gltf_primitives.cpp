@@ -199,7 +199,29 @@ TEST(GltfModes, PointsAndLinesAreSkipped)
     b.add_root(b.add_node(tri));
     b.add_root(b.add_node(b.add_mesh(pos, -1, mat, 0)));
     b.add_root(b.add_node(b.add_mesh(pos, -1, mat, 1)));
+    ::testing::internal::CaptureStderr();
     EXPECT_EQ(import(b).triangles.size(), 1u);
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("test.gltf: skipped 2 point and line primitives (only triangles are rendered)"),
+              std::string::npos)
+        << err;
+}
+
+TEST(GltfModes, IndicesBeyondTheLastWholeTriangleAreDroppedWithAWarning)
+{
+    // A triangle list of 7 indices and one of 5 vertices: 2 + 1 triangles, one warning line
+    // counting both primitives. Broken variant seen to fail: no warning (it was silent).
+    GltfBuilder b;
+    int mat = b.add_material(glm::vec3(0.5f));
+    int pos = b.add_positions(kQuad);
+    b.add_root(b.add_node(b.add_mesh(pos, b.add_indices({0, 1, 2, 0, 2, 3, 1}, kU16), mat)));
+    std::vector<glm::vec3> five = {kQuad[0], kQuad[1], kQuad[2], kQuad[0], kQuad[2]};
+    b.add_root(b.add_node(b.add_mesh(b.add_positions(five), -1, mat)));
+    ::testing::internal::CaptureStderr();
+    EXPECT_EQ(import(b).triangles.size(), 3u);
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(err, "pathcl: warning: test.gltf: ignored the last one or two indices of 2 triangle primitives whose "
+                   "index count is not a multiple of 3\n");
 }
 
 // ---------------------------------------------------------------------------------------

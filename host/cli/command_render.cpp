@@ -32,6 +32,19 @@ struct EnvironmentFlags {
     std::vector<float> background; // empty or R, G, B
 };
 
+// Whether anything can be seen: a light, an environment, or an unlit surface.
+bool shows_anything(const Scene& scene)
+{
+    if (!scene.lights.empty() || scene.environment.present)
+        return true;
+    for (const SceneTriangle& t : scene.triangles) {
+        const SceneMaterial& m = scene.materials[static_cast<std::size_t>(t.material)];
+        if (m.emits() || m.unlit)
+            return true;
+    }
+    return false;
+}
+
 void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
 {
     SceneEnvironment& env = scene.environment;
@@ -165,6 +178,9 @@ int run_render(RenderRequest rq)
         throw Error("--camera must be >= 0");
     Scene scene = load_gltf(rq.scene_path, {rq.camera.camera, rq.variant});
     apply_environment_flags(scene, rq.environment);
+    if (!shows_anything(scene))
+        warn(rq.scene_path + ": has no light (no emissive material, punctual light or environment) and no unlit "
+                             "material: the image is black (--background R,G,B or --env FILE adds light)");
     apply_camera_overrides(scene, rq.camera.overrides());
     std::vector<std::string> inputs = scene.input_files;
     if (scene.environment.present && !scene.environment.path.empty())

@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "common/error.h"
@@ -51,6 +52,50 @@ glm::dmat4 local_transform(const tinygltf::Node& node)
     return m;
 }
 
+// The extensions pathcl reads; a file that requires any other is refused.
+const std::set<std::string>& supported_extensions()
+{
+    static const std::set<std::string> supported = {"KHR_materials_emissive_strength",
+                                                    "KHR_materials_specular",
+                                                    "KHR_materials_clearcoat",
+                                                    "KHR_materials_transmission",
+                                                    "KHR_materials_ior",
+                                                    "KHR_materials_pbrSpecularGlossiness",
+                                                    "KHR_materials_variants",
+                                                    "KHR_materials_unlit",
+                                                    "KHR_materials_volume",
+                                                    "KHR_lights_punctual",
+                                                    "KHR_texture_transform",
+                                                    "KHR_mesh_quantization",
+                                                    "KHR_draco_mesh_compression"};
+    return supported;
+}
+
+void check_required_extensions(const std::vector<std::string>& required, const std::string& source)
+{
+    for (const std::string& ext : required)
+        if (!supported_extensions().count(ext))
+            throw Error(source + ": requires the unsupported extension " + ext);
+}
+
+// extensionsRequired read from the JSON text, before tinygltf parses the file: an
+// extension such as EXT_meshopt_compression makes buffers that tinygltf would refuse with
+// a message about byte lengths instead (the schema check has parsed the text already).
+void check_required_extensions(std::string_view json, const std::string& source)
+{
+    if (json.find("extensionsRequired") == std::string_view::npos)
+        return;
+    nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+    auto required = doc.find("extensionsRequired");
+    if (required == doc.end() || !required->is_array())
+        return;
+    std::vector<std::string> names;
+    for (const nlohmann::json& name : *required)
+        if (name.is_string())
+            names.push_back(name.get<std::string>());
+    check_required_extensions(names, source);
+}
+
 struct Importer {
     Importer(const tinygltf::Model& m, const std::string& src, const std::string& dir)
         : model(m), source(src), base_dir(dir), textures(m, src, dir), primitives(m, src, scene.materials, geometry)
@@ -67,26 +112,11 @@ struct Importer {
 
     void run()
     {
-        static const std::set<std::string> supported = {"KHR_materials_emissive_strength",
-                                                        "KHR_materials_specular",
-                                                        "KHR_materials_clearcoat",
-                                                        "KHR_materials_transmission",
-                                                        "KHR_materials_ior",
-                                                        "KHR_materials_pbrSpecularGlossiness",
-                                                        "KHR_materials_variants",
-                                                        "KHR_materials_unlit",
-                                                        "KHR_materials_volume",
-                                                        "KHR_lights_punctual",
-                                                        "KHR_texture_transform",
-                                                        "KHR_mesh_quantization",
-                                                        "KHR_draco_mesh_compression"};
-        for (const std::string& ext : model.extensionsRequired)
-            if (!supported.count(ext))
-                throw Error(source + ": requires the unsupported extension " + ext);
+        check_required_extensions(model.extensionsRequired, source);
         // One line per extension the file uses and pathcl does not read: the image may
         // differ from what its author meant (an alpha cut-out, a clear coat, a variant).
         for (const std::string& ext : std::set<std::string>(model.extensionsUsed.begin(), model.extensionsUsed.end()))
-            if (!supported.count(ext))
+            if (!supported_extensions().count(ext))
                 warn(source + ": ignores the extension " + ext + " (what it adds is not rendered)");
 
         scene.material_variants = material_variants(model, source);
@@ -109,9 +139,13 @@ struct Importer {
         scene.images = textures.take_images();
         if (scene.materials.empty())
             scene.materials.push_back(SceneMaterial{});
-        if (primitives.skipped_points_lines())
-            warn(source + ": skipped " + std::to_string(primitives.skipped_points_lines()) +
-                 " point and line primitives (only triangles are rendered)");
+        if (std::size_t n = primitives.skipped_points_lines(); n > 0)
+            warn(source + ": skipped " + std::to_string(n) +
+                 (n == 1 ? " point or line primitive" : " point and line primitives") +
+                 " (only triangles are rendered)");
+        if (std::size_t n = primitives.incomplete_triangle_lists(); n > 0)
+            warn(source + ": ignored the last one or two indices of " + std::to_string(n) + " triangle primitive" +
+                 (n == 1 ? "" : "s") + " whose index count is not a multiple of 3");
         if (primitives.ignored_morph_attributes())
             warn(source + ": ignores " + std::to_string(primitives.ignored_morph_attributes()) +
                  " morph targets of attributes other than POSITION, NORMAL and TANGENT");
@@ -242,6 +276,7 @@ Scene load_gltf(const std::string& path, const SceneChoice& choice)
     else
         check_json_nesting(bytes.data(), bytes.size(), path);
     check_gltf_schema(json, path);
+    check_required_extensions(json, path);
     DracoIndices draco_indices;
     if (std::vector<unsigned char> detached = detach_draco_indices(bytes, binary, json, draco_indices);
         !detached.empty())

@@ -210,6 +210,7 @@ std::vector<std::uint32_t> PrimitiveImporter::triangle_indices(const tinygltf::P
     }
     std::vector<std::uint32_t> tris;
     if (prim.mode == kModeTriangles) {
+        incomplete_triangle_lists_ += idx.size() % 3 != 0;
         tris.assign(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(idx.size() / 3 * 3));
     } else if (prim.mode == kModeStrip) {
         for (std::size_t i = 2; i < idx.size(); ++i) {

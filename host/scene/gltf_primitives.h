@@ -49,6 +49,8 @@ public:
                           const std::vector<double>& morph_weights = {});
 
     std::size_t skipped_points_lines() const { return skipped_points_lines_; }
+    // Triangle-list primitives whose index (or vertex) count is not a multiple of 3.
+    std::size_t incomplete_triangle_lists() const { return incomplete_triangle_lists_; }
     // Morph targets of attributes other than POSITION, NORMAL and TANGENT, not applied.
     std::size_t ignored_morph_attributes() const { return ignored_morph_attributes_; }
 
@@ -85,6 +87,7 @@ private:
     int variant_ = -1;
     std::size_t variant_count_ = 0;
     std::size_t skipped_points_lines_ = 0;
+    std::size_t incomplete_triangle_lists_ = 0;
     std::size_t ignored_morph_attributes_ = 0;
     MorphDeltas morph_; // the primitive being imported's
 };

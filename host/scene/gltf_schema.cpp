@@ -23,6 +23,7 @@ public:
     {
         if (!root_.is_object())
             fail("the document", "is not a JSON object");
+        asset_version();
         lights_ = count_extension_array("KHR_lights_punctual", "lights");
         index(root_, "scene", "scene", "scenes");
         each(root_, "scenes", "scenes",
@@ -59,6 +60,21 @@ public:
     }
 
 private:
+    // A major version other than 2 (glTF 1.0 has another schema) is refused before any of
+    // its members is misread. (A missing asset or version is tinygltf's error.)
+    void asset_version() const
+    {
+        auto asset = root_.find("asset");
+        if (asset == root_.end() || !asset->is_object())
+            return;
+        auto version = asset->find("version");
+        if (version == asset->end() || !version->is_string())
+            return;
+        const std::string& v = version->get_ref<const std::string&>();
+        if (v.rfind("2.", 0) != 0)
+            fail("asset.version", "is \"" + v + "\": only glTF 2.0 files are read");
+    }
+
     [[noreturn]] void fail(const std::string& at, const std::string& problem) const
     {
         throw Error(what_ + ": " + at + " " + problem);
