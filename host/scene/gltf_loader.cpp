@@ -21,6 +21,7 @@
 #include "scene/gltf_draco.h"
 #include "scene/gltf_environment.h"
 #include "scene/gltf_images.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_primitives.h"
@@ -67,7 +68,8 @@ const std::set<std::string>& supported_extensions()
                                                     "KHR_lights_punctual",
                                                     "KHR_texture_transform",
                                                     "KHR_mesh_quantization",
-                                                    "KHR_draco_mesh_compression"};
+                                                    "KHR_draco_mesh_compression",
+                                                    "EXT_mesh_gpu_instancing"};
     return supported;
 }
 
@@ -157,6 +159,12 @@ struct Importer {
                  " zero-length or NaN normals by the geometric normal");
     }
 
+    bool quantized() const
+    {
+        return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization") !=
+               model.extensionsUsed.end();
+    }
+
     // glTF nodes form disjoint trees: a node has at most one parent and a scene's roots
     // have none. Checked before the walk, which could otherwise loop forever (a cycle) or
     // visit a node exponentially often (a chain of nodes that each list the next twice).
@@ -217,11 +225,13 @@ struct Importer {
                 if (node.mesh >= static_cast<int>(model.meshes.size()))
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");
                 const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
-                for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
-                    primitives.import_primitive(mesh.primitives[i], world,
-                                                what + " mesh " + std::to_string(node.mesh) + " primitive " +
-                                                    std::to_string(i),
-                                                node.weights.empty() ? mesh.weights : node.weights);
+                // EXT_mesh_gpu_instancing: one copy of the mesh per instance.
+                for (const glm::dmat4& instance : instance_transforms(model, node, world, quantized(), source, what))
+                    for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
+                        primitives.import_primitive(mesh.primitives[i], instance,
+                                                    what + " mesh " + std::to_string(node.mesh) + " primitive " +
+                                                        std::to_string(i),
+                                                    node.weights.empty() ? mesh.weights : node.weights);
             }
             auto light_ext = node.extensions.find("KHR_lights_punctual");
             if (light_ext != node.extensions.end() && light_ext->second.Has("light"))
