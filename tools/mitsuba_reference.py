@@ -104,6 +104,122 @@ TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
 
 # ---------------------------------------------------------------------------------------
+# Images: PNG decoded here (zlib + numpy, no extra package); JPEG through Pillow or
+# OpenImageIO if one is importable.
+
+def decode_png(data):
+    """An 8- or 16-bit PNG as an (H, W, C) uint8 / uint16 array, rows top first, C = 1
+    (grey), 2 (grey, alpha), 3 (RGB) or 4 (RGBA); palette images become RGB(A), sub-byte
+    grey is scaled to 8 bits. Interlaced (Adam7) PNGs are refused."""
+    import struct
+    import zlib
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise ValueError("not a PNG file")
+    pos, idat, palette, trns, ihdr = 8, [], None, None, None
+    while pos + 8 <= len(data):
+        length, tag = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+        if tag == b"IHDR":
+            ihdr = struct.unpack(">IIBBBBB", body)
+        elif tag == b"PLTE":
+            palette = np.frombuffer(body, np.uint8).reshape(-1, 3)
+        elif tag == b"tRNS":
+            trns = body
+        elif tag == b"IDAT":
+            idat.append(body)
+        elif tag == b"IEND":
+            break
+    if ihdr is None:
+        raise ValueError("PNG without IHDR")
+    w, h, depth, ctype, _, _, interlace = ihdr
+    if interlace:
+        raise ValueError("interlaced PNGs are not supported")
+    chans = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype]
+    bits = chans * depth
+    bpp = max(1, bits // 8)                      # filter unit: bytes per pixel, >= 1
+    stride = (w * bits + 7) // 8
+    raw = np.frombuffer(zlib.decompress(b"".join(idat)), np.uint8)
+    if len(raw) < h * (stride + 1):
+        raise ValueError("PNG image data too short")
+    rows = raw[:h * (stride + 1)].reshape(h, stride + 1)
+    out = np.zeros((h, stride), np.uint8)
+    prev = np.zeros(stride, np.int32)
+    for y in range(h):
+        f, line = rows[y, 0], rows[y, 1:].astype(np.int32)
+        if f == 1:    # Sub: a running sum per byte of the pixel, mod 256
+            line = np.cumsum(np.pad(line, (0, -stride % bpp)).reshape(-1, bpp), axis=0).reshape(-1)[:stride] & 255
+        elif f == 2:  # Up
+            line = (line + prev) & 255
+        elif f in (3, 4):  # Average, Paeth: sequential along the row
+            cur = np.zeros(stride + bpp, np.int32)
+            up = np.concatenate([np.zeros(bpp, np.int32), prev])
+            for i in range(stride):
+                a, b, c = cur[i], up[i + bpp], up[i]
+                if f == 3:
+                    pred = (a + b) >> 1
+                else:
+                    p = a + b - c
+                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                    pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
+                cur[i + bpp] = (line[i] + pred) & 255
+            line = cur[bpp:]
+        elif f != 0:
+            raise ValueError(f"PNG filter type {f}")
+        out[y] = line
+        prev = line
+    if depth == 16:
+        img = out.view(">u2").astype(np.uint16).reshape(h, w, chans)
+    elif depth == 8:
+        img = out.reshape(h, w, chans)
+    else:  # 1, 2, 4 bits: grey or palette indices
+        img = np.unpackbits(out, axis=1).reshape(h, stride * 8 // depth, depth)[:, :w]
+        img = (img * (1 << np.arange(depth - 1, -1, -1))).sum(-1).astype(np.uint8)[..., None]
+        if ctype == 0:
+            img = (img.astype(np.uint32) * 255 // ((1 << depth) - 1)).astype(np.uint8)
+    if ctype == 3:
+        if palette is None:
+            raise ValueError("palette PNG without PLTE")
+        idx = img[..., 0]
+        rgb = palette[idx]
+        if trns is not None:
+            alpha = np.full(256, 255, np.uint8)
+            alpha[:len(trns)] = np.frombuffer(trns, np.uint8)
+            return np.concatenate([rgb, alpha[idx][..., None]], -1)
+        return rgb
+    if trns is not None and ctype in (0, 2):  # a colour key: that colour is transparent
+        key = np.frombuffer(trns, ">u2")[:chans].astype(img.dtype)
+        opaque = np.iinfo(img.dtype).max
+        alpha = np.where(np.all(img == key, axis=-1), 0, opaque).astype(img.dtype)
+        return np.concatenate([img, alpha[..., None]], -1)
+    return img
+
+
+def decode_image(data, mime):
+    """Image bytes as an (H, W, C) uint8 / uint16 array (see decode_png)."""
+    if data[:8] == b"\x89PNG\r\n\x1a\n":
+        return decode_png(data)
+    try:
+        from PIL import Image
+        import io
+        return np.array(Image.open(io.BytesIO(data)))
+    except ImportError:
+        pass
+    try:
+        import OpenImageIO as oiio
+        import tempfile
+        with tempfile.NamedTemporaryFile(suffix=".jpg") as f:
+            f.write(data)
+            f.flush()
+            inp = oiio.ImageInput.open(f.name)
+            img = inp.read_image(oiio.UINT8)
+            inp.close()
+            return np.asarray(img)
+    except ImportError:
+        raise ValueError(f"cannot decode a {mime or 'non-PNG'} image: pip install pillow (PNG needs nothing)")
+
+
+# ---------------------------------------------------------------------------------------
 # Minimal glTF 2.0 reader.
 
 class Gltf:
@@ -130,6 +246,21 @@ class Gltf:
         if len(data) < buf["byteLength"]:
             raise ValueError(f"buffer shorter than its byteLength {buf['byteLength']}")
         return data
+
+    def image(self, index):
+        """Image `index` of the document as an (H, W, C) uint8 / uint16 array."""
+        img = self.doc["images"][index]
+        if "bufferView" in img:
+            view = self.doc["bufferViews"][img["bufferView"]]
+            start = view.get("byteOffset", 0)
+            data = self.buffers[view["buffer"]][start:start + view["byteLength"]]
+        elif img["uri"].startswith("data:"):
+            data = base64.b64decode(img["uri"].partition(",")[2])
+        else:
+            from urllib.parse import unquote
+            with open(os.path.join(self.dir, unquote(img["uri"])), "rb") as f:
+                data = f.read()
+        return decode_image(bytes(data), img.get("mimeType"))
 
     def accessor(self, index):
         """Returns accessor `index` as a (count, components) numpy array."""
@@ -194,9 +325,13 @@ def material_params(doc, index):
     transmission); a white metal (metallic 1, white base: Schlick's F is then 1, Mitsuba's
     conductor / roughconductor with material "none"); solid glass (transmission 1,
     metallic 0, white base, specular 1, KHR_materials_volume: exact Fresnel, Mitsuba's
-    dielectric / roughdielectric). Rough lobes: GGX with alpha = roughness^2, separable
+    dielectric / roughdielectric; KHR_materials_volume thicknessFactor > 0, else pathcl's
+    glass is a thin-walled sheet). Rough lobes: GGX with alpha = roughness^2, separable
     Smith G and visible-normal sampling, as in pathcl; below alpha 1e-3 pathcl's lobes are
-    delta functions. Anything else is an error."""
+    delta functions. Glass kind is ("glass", ior, alpha, sigma): sigma the per-channel
+    Beer-Lambert coefficient -ln(attenuationColor) / attenuationDistance of the solid's
+    interior (None without an attenuationDistance: clear glass). Anything else is an
+    error. Textures and alpha are material_texture's."""
     if index is None:  # glTF default material: metallic 1, roughness 1: no equivalent
         raise ValueError("a primitive without a material (glTF default: rough metal) has no Mitsuba equivalent")
     mat = doc["materials"][index]
@@ -214,11 +349,113 @@ def material_params(doc, index):
         kind = "diffuse"
     elif metallic == 1.0 and white:
         kind = ("metal", alpha)
-    elif transmission == 1.0 and metallic == 0.0 and white and specular == 1.0 and "KHR_materials_volume" in ext:
-        kind = ("glass", ext.get("KHR_materials_ior", {}).get("ior", 1.5), alpha)
+    elif (transmission == 1.0 and metallic == 0.0 and white and specular == 1.0
+          and ext.get("KHR_materials_volume", {}).get("thicknessFactor", 0.0) > 0.0):
+        volume = ext["KHR_materials_volume"]
+        sigma = None
+        if "attenuationDistance" in volume:  # glTF default: +infinity, no absorption
+            colour = np.array(volume.get("attenuationColor", [1.0, 1.0, 1.0]), np.float64)
+            dist = float(volume["attenuationDistance"])
+            if not (dist > 0.0) or np.any(colour <= 0.0) or np.any(colour > 1.0):
+                raise ValueError(f"material {index}: attenuationDistance must be > 0 and "
+                                 "attenuationColor in (0, 1]")
+            if np.any(colour < 1.0):
+                sigma = tuple(float(x) for x in -np.log(colour) / dist)
+        kind = ("glass", ext.get("KHR_materials_ior", {}).get("ior", 1.5), alpha, sigma)
     else:
         raise ValueError(f"material {index} ({mat.get('name', '')}) has no like-for-like Mitsuba BSDF here")
     return tuple(base), tuple(emissive), bool(mat.get("doubleSided", False)), kind
+
+
+GL_NEAREST, GL_LINEAR = 9728, 9729
+GL_WRAP = {10497: "repeat", 33071: "clamp", 33648: "mirror"}
+
+
+def srgb_to_linear(c):
+    """The sRGB transfer function's inverse (IEC 61966-2-1), c in [0, 1], float64."""
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def material_texture(g, index, kind):
+    """What material `index` needs beyond material_params: None for a plain material, or
+    {"rgb": HxWx3 float32 linear base colour (texel x baseColorFactor) or None,
+     "opacity": HxWx1 float32 of exactly 0 or 1 or None, "filter": "nearest"|"bilinear",
+     "wrap": Mitsuba wrap_mode, "texcoord": set n}; "cut": True when the whole material
+    is cut away (MASK with a constant alpha below the cutoff).
+    pathcl's model (README "Textures"): the base colour is baseColorFactor x the texture's
+    RGB decoded from sRGB (8-bit: the exact formula, per texel, before filtering); alpha
+    = baseColorFactor's alpha x the texel's (linear) alpha; alphaMode MASK: no surface
+    where alpha < alphaCutoff (default 0.5), an opaque one elsewhere. The cutoff is applied
+    per texel here, so MASK needs a NEAREST magFilter (pathcl thresholds the bilinearly
+    filtered alpha, which no 0/1 Mitsuba opacity map reproduces). BLEND, COLOR_0,
+    KHR_texture_transform and the other texture slots are errors (occlusionTexture,
+    which pathcl does not read, is ignored)."""
+    if index is None:
+        return None
+    mat = g.doc["materials"][index]
+    pbr = mat.get("pbrMetallicRoughness", {})
+    name = f"material {index} ({mat.get('name', '')})"
+    others = [k for k in ("metallicRoughnessTexture",) if k in pbr]
+    others += [k for k in ("normalTexture", "emissiveTexture") if k in mat]
+    for ext_name, ext in mat.get("extensions", {}).items():
+        others += [f"{ext_name}.{k}" for k in ext if k.endswith("Texture")]
+    if others:
+        raise ValueError(f"{name}: {', '.join(others)} has no Mitsuba equivalent here")
+    mode = mat.get("alphaMode", "OPAQUE")
+    if mode not in ("OPAQUE", "MASK"):
+        raise ValueError(f"{name}: alphaMode {mode} is not supported here (OPAQUE, MASK)")
+    info = pbr.get("baseColorTexture")
+    factor = np.array(pbr.get("baseColorFactor", [1, 1, 1, 1]), np.float64)
+    cutoff = np.float32(mat.get("alphaCutoff", 0.5))
+    if info is None:
+        if mode == "MASK":  # a constant alpha: all or nothing
+            return {"cut": True} if np.float32(factor[3]) < cutoff else None
+        return None
+    if kind != "diffuse":
+        raise ValueError(f"{name}: a baseColorTexture is supported on Lambertian materials only")
+    if "KHR_texture_transform" in info.get("extensions", {}):
+        raise ValueError(f"{name}: KHR_texture_transform is not supported here")
+    tex = g.doc["textures"][info["index"]]
+    if "source" not in tex:
+        raise ValueError(f"{name}: texture {info['index']} has no source image")
+    sampler = g.doc.get("samplers", [])[tex["sampler"]] if "sampler" in tex else {}
+    wrap_s, wrap_t = sampler.get("wrapS", 10497), sampler.get("wrapT", 10497)
+    if wrap_s != wrap_t:
+        raise ValueError(f"{name}: wrapS != wrapT has no Mitsuba equivalent (one wrap_mode)")
+    nearest = sampler.get("magFilter") == GL_NEAREST
+    if mode == "MASK" and not nearest:
+        raise ValueError(f"{name}: alphaMode MASK with a texture needs a sampler with magFilter "
+                         "NEAREST (9728) here: the cutoff of bilinearly filtered alpha has no "
+                         "0/1 Mitsuba opacity map")
+    img = g.image(tex["source"])
+    scale = float(np.iinfo(img.dtype).max)
+    texel = img.astype(np.float64) / scale
+    chans = img.shape[2]
+    rgb = texel[..., :3] if chans >= 3 else np.repeat(texel[..., :1], 3, axis=-1)
+    alpha = texel[..., 3] if chans == 4 else texel[..., 1] if chans == 2 else np.ones(img.shape[:2])
+    out = {"rgb": (srgb_to_linear(rgb) * factor[:3]).astype(np.float32), "opacity": None,
+           "filter": "nearest" if nearest else "bilinear", "wrap": GL_WRAP[wrap_s],
+           "texcoord": info.get("texCoord", 0)}
+    if mode == "MASK":  # in float32, as pathcl compares
+        a = np.float32(factor[3]) * alpha.astype(np.float32)
+        out["opacity"] = (a >= cutoff).astype(np.float32)[..., None]
+    return out
+
+
+def texcoords(g, prim, n):
+    """TEXCOORD_n of a primitive as (count, 2) float64: float, or normalized u8 / u16."""
+    key = f"TEXCOORD_{n}"
+    if key not in prim["attributes"]:
+        raise ValueError(f"a textured primitive has no {key}")
+    acc = g.doc["accessors"][prim["attributes"][key]]
+    uv = g.accessor(prim["attributes"][key])
+    if acc["type"] != "VEC2":
+        raise ValueError(f"{key} must be VEC2")
+    if acc["componentType"] == 5126:
+        return uv.astype(np.float64)
+    if acc.get("normalized") and acc["componentType"] in (5121, 5123):
+        return uv.astype(np.float64) / float(np.iinfo(uv.dtype).max)
+    raise ValueError(f"{key}: float or normalized unsigned byte / short only")
 
 
 def load_scene(path):
@@ -264,10 +501,17 @@ def load_scene(path):
             if mirrored:  # a mirroring transform flips which side is counter-clockwise
                 faces = faces[:, ::-1]
             pos = pos @ world[:3, :3].T + world[:3, 3]
+            if "COLOR_0" in p["attributes"]:
+                raise ValueError("COLOR_0 (vertex colours) has no Mitsuba equivalent here")
             base, emit, two_sided, kind = material_params(doc, p.get("material"))
+            texture = material_texture(g, p.get("material"), kind)
+            if texture is not None and texture.get("cut"):
+                continue  # alphaMode MASK, constant alpha below the cutoff: no surface
+            uv = texcoords(g, p, texture["texcoord"]) if texture is not None else None
             prims.append({"name": f"{node.get('name', 'node')}_{k}", "positions": pos,
                           "faces": np.ascontiguousarray(faces), "base": base,
-                          "emission": emit, "two_sided": two_sided, "kind": kind})
+                          "emission": emit, "two_sided": two_sided, "kind": kind,
+                          "texture": texture, "uv": uv})
     if camera is None:
         raise ValueError(f"{path}: no perspective camera node in the scene")
     return prims, camera, lights
@@ -276,10 +520,31 @@ def load_scene(path):
 # ---------------------------------------------------------------------------------------
 # Mitsuba scene.
 
+def bitmap_texture(mi, data, tex):
+    """A Mitsuba bitmap texture of linear float32 data (raw: no sRGB decoding or spectral
+    upsampling; pathcl's sRGB decoding is done by material_texture) with the glTF
+    sampler's filter and wrap mode. Mitsuba's uv = (0, 0) is the image's first row's first
+    texel, as glTF's."""
+    return {"type": "bitmap", "bitmap": mi.Bitmap(np.ascontiguousarray(data)), "raw": True,
+            "filter_type": tex["filter"], "wrap_mode": tex["wrap"]}
+
+
+def make_medium(mi, sigma):
+    """pathcl's Beer-Lambert absorption inside a solid: a homogeneous medium that only
+    absorbs (extinction sigma per channel, albedo 0, so no scattering). Mitsuba takes an
+    RGB sigma_t in [0, 1] only, so it gets sigma / max(sigma) and scale max(sigma)."""
+    peak = max(float(c) for c in sigma)
+    return mi.load_dict({"type": "homogeneous", "scale": peak,
+                         "sigma_t": {"type": "rgb", "value": [float(c) / peak for c in sigma]},
+                         "albedo": {"type": "rgb", "value": [0.0, 0.0, 0.0]}})
+
+
 def make_mesh(mi, prim):
-    """A Mitsuba mesh without vertex normals (flat shading) with its BSDF/emitter."""
+    """A Mitsuba mesh without vertex normals (flat shading) with its BSDF/emitter, its
+    texture coordinates when textured and, for absorbing glass, its interior medium."""
     props = mi.Properties()
     kind = prim["kind"]
+    texture = prim.get("texture")
     glass = isinstance(kind, tuple) and kind[0] == "glass"
     if isinstance(kind, tuple) and kind[0] == "metal":
         alpha = kind[1]
@@ -291,22 +556,35 @@ def make_mesh(mi, prim):
         bsdf = ({"type": "dielectric", "int_ior": ior, "ext_ior": 1.0} if alpha < 1e-3 else
                 {"type": "roughdielectric", "int_ior": ior, "ext_ior": 1.0, "distribution": "ggx",
                  "alpha": float(alpha), "sample_visible": True})
+    elif texture is not None:
+        bsdf = {"type": "diffuse", "reflectance": bitmap_texture(mi, texture["rgb"], texture)}
     else:
         bsdf = {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(prim["base"])}}
     if prim["two_sided"] and not glass:
         bsdf = {"type": "twosided", "material": bsdf}
+    if texture is not None and texture["opacity"] is not None:
+        # alphaMode MASK: opacity exactly 0 (a null interface: rays and shadow rays pass
+        # unchanged) or 1 (the surface) per texel.
+        bsdf = {"type": "mask", "opacity": bitmap_texture(mi, texture["opacity"], texture),
+                "material": bsdf}
     props["bsdf"] = mi.load_dict(bsdf)
+    if glass and kind[3] is not None:
+        # The faces' normals point out of the solid: its inside is Mitsuba's interior.
+        props["interior"] = make_medium(mi, kind[3])
     if any(c > 0 for c in prim["emission"]):
         # One-sided: radiance leaves along the face normal only.
         props["emitter"] = mi.load_dict(
             {"type": "area", "radiance": {"type": "rgb", "value": list(prim["emission"])}})
     pos, faces = prim["positions"], prim["faces"]
+    uv = prim.get("uv")
     mesh = mi.Mesh(prim["name"], len(pos), len(faces), props=props,
-                   has_vertex_normals=False, has_vertex_texcoords=False)
+                   has_vertex_normals=False, has_vertex_texcoords=uv is not None)
     params = mi.traverse(mesh)
     # Flat buffers of the variant's own array types (dynamic arrays in scalar_* too).
     params["vertex_positions"] = type(params["vertex_positions"])(pos.astype(np.float32).ravel())
     params["faces"] = type(params["faces"])(faces.astype(np.uint32).ravel())
+    if uv is not None:
+        params["vertex_texcoords"] = type(params["vertex_texcoords"])(uv.astype(np.float32).ravel())
     params.update()  # recomputes bounds/areas the emitter sampling needs
     return mesh
 
@@ -340,10 +618,22 @@ def make_light(mi, light):
     return {"type": "directional", "direction": [float(c) for c in d], "irradiance": rgb}
 
 
-def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=(), sampler="independent"):
+def needs_volpath(prims):
+    """Whether a scene needs Mitsuba's volpath: an absorbing solid (a medium) or an alpha
+    cut-out (a mask BSDF: the path integrator's shadow rays do not pass null surfaces)."""
+    return any((isinstance(p["kind"], tuple) and p["kind"][0] == "glass" and p["kind"][3] is not None)
+               or (p.get("texture") is not None and p["texture"]["opacity"] is not None) for p in prims)
+
+
+def build_scene(mi, prims, camera, width, height, spp, max_bounces, lights=(), sampler="independent",
+                integrator=None):
+    """integrator: "path", "volpath" or None (volpath where needs_volpath, else path)."""
+    integrator = integrator or ("volpath" if needs_volpath(prims) else "path")
+    if integrator == "path" and needs_volpath(prims):
+        raise ValueError("media and alpha cut-outs need the volpath integrator")
     scene = {
         "type": "scene",
-        "integrator": {"type": "path", "max_depth": max_bounces + 1, "hide_emitters": False},
+        "integrator": {"type": integrator, "max_depth": max_bounces + 1, "hide_emitters": False},
         "sensor": {
             "type": "perspective",
             "fov": math.degrees(camera["yfov"]),
@@ -400,6 +690,8 @@ def main():
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--variant",
                     help="Mitsuba variant (default scalar_rgb; see pick_variant for llvm_ad_rgb)")
+    ap.add_argument("--integrator", choices=("auto", "path", "volpath"), default="auto",
+                    help="Mitsuba integrator (auto: volpath for media and alpha cut-outs, else path)")
     args = ap.parse_args()
     if args.runs < 2:
         ap.error("--runs must be >= 2 to estimate a variance")
@@ -417,10 +709,15 @@ def main():
 
     variant = pick_variant(mi, args.variant)
     prims, camera, lights = load_scene(args.scene)
-    scene = build_scene(mi, prims, camera, args.width, args.height, args.spp,
-                        args.max_bounces, lights)
+    integrator = None if args.integrator == "auto" else args.integrator
+    try:
+        scene = build_scene(mi, prims, camera, args.width, args.height, args.spp,
+                            args.max_bounces, lights, integrator=integrator)
+    except ValueError as e:
+        sys.exit(f"mitsuba_reference.py: {e}")
+    integrator = integrator or ("volpath" if needs_volpath(prims) else "path")
     print(f"mitsuba {mi.__version__} variant {variant}, EXR via {backend}; "
-          f"{len(prims)} primitives, {args.width}x{args.height}, "
+          f"{len(prims)} primitives, {integrator}, {args.width}x{args.height}, "
           f"{args.runs} runs x {args.spp} spp, max_depth {args.max_bounces + 1}")
 
     # Welford over run means in float64: mean and spread of the K independent estimates.

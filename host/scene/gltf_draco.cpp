@@ -37,10 +37,10 @@ public:
             fail("is not a JSON object");
         if (prim_.mode >= 0 && prim_.mode != TINYGLTF_MODE_TRIANGLES)
             fail("compresses a primitive of mode " + std::to_string(prim_.mode) + " (only triangles are read)");
-        std::unique_ptr<draco::Mesh> mesh = decode(ext);
         const tinygltf::Value& attributes = ext.Get("attributes");
         if (!attributes.IsObject())
             fail("has no \"attributes\" object");
+        std::unique_ptr<draco::Mesh> mesh = decode(ext);
         buffer_ = static_cast<int>(model_.buffers.size());
         model_.buffers.emplace_back();
         write_indices(*mesh);

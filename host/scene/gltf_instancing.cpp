@@ -22,9 +22,10 @@ std::vector<glm::dmat4> instance_transforms(const tinygltf::Model& model, const 
     if (ext == node.extensions.end())
         return {node_world};
     const std::string at = what + " EXT_mesh_gpu_instancing";
-    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    const tinygltf::Value& attributes = ext->second.Get("attributes"); // tinygltf: {} is no object
+    auto none = [&] { return Error(source + ": " + at + ": has none of TRANSLATION, ROTATION and SCALE"); };
     if (!attributes.IsObject())
-        throw Error(source + ": " + at + ": has no \"attributes\" object");
+        throw none();
     std::optional<std::size_t> count;
     // One attribute's reader, its type checked and its count the same as the others'.
     auto reader = [&](const char* name, int components, bool rotation) -> std::optional<AccessorReader> {
@@ -49,7 +50,7 @@ std::vector<glm::dmat4> instance_transforms(const tinygltf::Model& model, const 
     std::optional<AccessorReader> rotation = reader("ROTATION", 4, true);
     std::optional<AccessorReader> scale = reader("SCALE", 3, false);
     if (!count)
-        throw Error(source + ": " + at + ": has none of TRANSLATION, ROTATION and SCALE");
+        throw none();
     std::vector<glm::dmat4> out(*count);
     for (std::size_t i = 0; i < *count; ++i) {
         glm::dmat4 m(1.0);

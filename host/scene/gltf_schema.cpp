@@ -57,6 +57,7 @@ public:
             index_array(s, "joints", at + ".joints", "nodes");
         });
         each(root_, "animations", "animations", [&](const Json& a, const std::string& at) { animation(a, at); });
+        extension_objects(root_, "");
     }
 
 private:
@@ -88,6 +89,34 @@ private:
         if (!root_[array].is_array())
             fail(array, "is not an array");
         return root_[array].size();
+    }
+
+    // Every "extensions" member anywhere in the document (outside extras, which are free
+    // form) is an object whose members are objects: tinygltf skips an extension given as
+    // a string or a number as if it were absent (a KHR_texture_transform that silently
+    // does nothing).
+    void extension_objects(const Json& v, const std::string& at) const
+    {
+        if (v.is_array()) {
+            for (std::size_t i = 0; i < v.size(); ++i)
+                extension_objects(v[i], at + "[" + std::to_string(i) + "]");
+            return;
+        }
+        if (!v.is_object())
+            return;
+        for (const auto& [key, member] : v.items()) {
+            const std::string member_at = at.empty() ? key : at + "." + key;
+            if (key == "extras")
+                continue;
+            if (key == "extensions") {
+                if (!member.is_object())
+                    fail(member_at, "is not an object");
+                for (const auto& [name, extension] : member.items())
+                    if (!extension.is_object())
+                        fail(member_at + "." + name, "is not an object");
+            }
+            extension_objects(member, member_at);
+        }
     }
 
     std::size_t count_extension_array(const char* extension, const char* array) const

@@ -693,6 +693,48 @@ def material_cases():
     material("material/texture-info-number.gltf", "material-texture-info-number",
              "baseColorTexture 0 instead of {\"index\": 0}",
              lambda mat: mat["pbrMetallicRoughness"].update(baseColorTexture=0))
+    material("material/extension-string.gltf", "material-extension-string",
+             "KHR_materials_specular \"none\" instead of an object (the glTF library skips it)",
+             ext("KHR_materials_specular", "none"))
+
+
+def extension_cases():
+    """Versions, required extensions and the mesh extensions (Draco, instancing)."""
+    m = base()
+    m["asset"]["version"] = "1.0"
+    model_case("ext/gltf-1.gltf", "ext-gltf-1-version", "error", "asset.version 1.0 (glTF 1.0)", m)
+    m = base()
+    m["extensionsUsed"].append("EXT_meshopt_compression")
+    m["extensionsRequired"] = ["EXT_meshopt_compression"]
+    m["buffers"].append({"byteLength": 100000, "extensions": {"EXT_meshopt_compression": {"fallback": True}}})
+    model_case("ext/meshopt-fallback.gltf", "ext-meshopt-required", "error",
+               "EXT_meshopt_compression required, with its data-less fallback buffer", m)
+
+    def draco(rel, name, what, edit):
+        m = base()
+        m["extensionsUsed"].append("KHR_draco_mesh_compression")
+        m["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+        prim = m["meshes"][0]["primitives"][0]
+        prim["extensions"] = {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}
+        edit(m, prim)
+        model_case(rel, name, "error", what, m)
+    draco("ext/draco-garbage.gltf", "ext-draco-garbage", "a Draco primitive whose bytes are not Draco data",
+          lambda m, prim: None)
+    draco("ext/draco-view-missing.gltf", "ext-draco-view-missing", "a Draco primitive naming bufferView 9",
+          lambda m, prim: prim["extensions"]["KHR_draco_mesh_compression"].update(bufferView=9))
+    draco("ext/draco-attributes-array.gltf", "ext-draco-attributes-array", "Draco attributes [0] (not an object)",
+          lambda m, prim: prim["extensions"]["KHR_draco_mesh_compression"].update(attributes=[0]))
+
+    def instanced(rel, name, what, attributes):
+        m = base()
+        m["extensionsUsed"].append("EXT_mesh_gpu_instancing")
+        m["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": attributes}}
+        model_case(rel, name, "error", what, m)
+    instanced("ext/instancing-none.gltf", "ext-instancing-none", "EXT_mesh_gpu_instancing without attributes", {})
+    instanced("ext/instancing-vec2.gltf", "ext-instancing-translation-vec2",
+              "instance TRANSLATION given the VEC2 texture coordinates", {"TRANSLATION": 1})
+    instanced("ext/instancing-index-out.gltf", "ext-instancing-index-out", "instance SCALE accessor 77",
+              {"SCALE": 77})
 
 
 def uri_cases():
@@ -1009,6 +1051,7 @@ def main():
     camera_cases()
     light_cases()
     material_cases()
+    extension_cases()
     uri_cases()
     image_cases()
     environment_cases()
