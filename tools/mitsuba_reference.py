@@ -2,7 +2,7 @@
 """Renders a glTF scene with Mitsuba 3 as an independent reference for pathcl.
 
     tools/mitsuba_reference.py SCENE.gltf -o OUT.exr --width W --height H --spp N \
-        --max-bounces B --runs K [--seed S] [--variant V]
+        --max-bounces B --runs K [--seed S] [--variant V] [--integrator auto|path|volpath]
 
 Writes OUT.exr with R, G, B = the mean over all K*N samples per pixel,
 variance.R/G/B = the estimated variance of ONE sample (variance across the K run means
@@ -15,15 +15,20 @@ Install (pip only; the Debian python3 has no numpy):
     /tmp/mivenv/bin/python tools/mitsuba_reference.py scenes/cornell-box.gltf -o ref.exr ...
 
 The glTF reader is our own (numpy only, no pathcl code) and covers what
-scenes/cornell-box.gltf uses: node TRS/matrix hierarchy, triangle primitives (mode 4)
-with float VEC3 POSITION and u8/u16/u32 indices, base64 data-URI or external buffers,
-baseColorFactor, emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual
-point (and sphere) and directional lights, and the first perspective camera. Materials
-with an exact Mitsuba equivalent: Lambertian (specularFactor 0), white metals (smooth or
-GGX-rough), solid glass (smooth or GGX-rough) (see material_params); any other is an
-error. Vertex normals and textures
-are ignored: every surface is flat-shaded, so compare with a pathcl render of the scene
-without its NORMAL attributes (see tools/strip_normals.py).
+scenes/cornell-box*.gltf use: node TRS/matrix hierarchy, triangle primitives (mode 4)
+with float VEC3 POSITION, TEXCOORD_n (float, or normalized u8/u16 VEC2) and u8/u16/u32
+indices, base64 data-URI or external buffers, images from a bufferView, a data URI or a
+file (PNG decoded here with zlib; JPEG needs Pillow or OpenImageIO), baseColorFactor,
+emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual point (and
+sphere) and directional lights, and the first perspective camera. Materials with an
+exact Mitsuba equivalent (see material_params, material_texture): Lambertian
+(specularFactor 0), optionally with a baseColorTexture and alphaMode MASK; white metals
+(smooth or GGX-rough); solid glass (smooth or GGX-rough, KHR_materials_volume
+thicknessFactor > 0), optionally absorbing (attenuationColor / attenuationDistance).
+Any other material, alphaMode BLEND, COLOR_0, KHR_texture_transform and any texture
+but baseColorTexture (occlusionTexture is ignored, as pathcl ignores it) are errors.
+Vertex normals are ignored: every surface is flat-shaded, so compare with a pathcl
+render of the scene without its NORMAL attributes (see tools/strip_normals.py).
 
 Conventions matched to pathcl:
   * --max-bounces B counts scattering events (B=0: emission only). Mitsuba's path
@@ -35,6 +40,32 @@ Conventions matched to pathcl:
   * glTF cameras look along local -Z with +Y up; the sensor is placed with
     look_at(origin, origin + forward, up) so no handedness flip is needed.
   * Film: box reconstruction filter, so each pixel is the plain mean of its samples.
+  * Absorbing glass (KHR_materials_volume): pathcl multiplies the throughput by
+    exp(-sigma t) over a length t inside the solid, sigma = -ln(attenuationColor) /
+    attenuationDistance per channel, and nothing scatters inside. Mitsuba: the glass
+    shape gets an `interior` homogeneous medium with sigma_t = sigma and albedo 0 (the
+    faces' normals point out of the solid, so the interior is the solid). Media need
+    the volpath integrator, which samples a free-flight distance in the medium: a
+    sampled medium event has albedo 0, so it ends the path with weight 0, and reaching
+    the surface first carries weight exp(-sigma t) / pdf: Beer-Lambert in expectation.
+    volpath's max_depth counts scattering events as path does (same B + 1; checked on
+    clear glass: path and volpath agree); media do not nest in either renderer here.
+  * Textures: Mitsuba's uv = (0, 0) is the first texel of the image's first row, as
+    glTF's. The base colour texture is decoded from sRGB here (exact formula, before
+    filtering, as pathcl's 8-bit table) and given to Mitsuba as raw linear floats, times
+    baseColorFactor; the sampler's magFilter picks Mitsuba's filter_type (NEAREST:
+    nearest, else bilinear between texel centres, as pathcl's) and wrapS (= wrapT) its
+    wrap_mode.
+  * alphaMode MASK: pathcl has no surface where alpha = baseColorFactor alpha x texel
+    alpha < alphaCutoff (default 0.5), for camera, bounce and shadow rays, and an opaque
+    one elsewhere. Mitsuba: a `mask` BSDF whose opacity bitmap is exactly 0 or 1 per
+    texel, thresholded here in float32, read nearest (so MASK with a texture needs a
+    NEAREST magFilter); a constant alpha below the cutoff drops the primitive. The mask's
+    null interface needs volpath too: path's shadow rays stop at it, volpath's pass it
+    (eval_null_transmission), and volpath does not count a null interaction as a bounce,
+    as pathcl does not count a cut-out.
+  * --integrator auto (the default) takes volpath for scenes with an absorbing solid or
+    an alpha cut-out and path otherwise, as before.
 """
 import argparse
 import base64

@@ -40,6 +40,18 @@ static inline float interface_albedo(const BsdfParams* p, float mu)
     return mix(g0, g1, x - (float)x0);
 }
 
+/* The B term of a rough dielectric layer (E = f0 (E_ss - B) + B) at roughness row r and
+ * ior coordinate x (continuous), from the table column t = sqrt(cos theta) (MU_RES - 1):
+ * shared by the specular layer and the clear coat. */
+static inline float layer_b(__global const float* table, float r, float x, float t)
+{
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    int x0 = min((int)x, LAYER_ETA_RES - 2);
+    float b0 = layer_bilinear(table, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, r, LAYER_ROUGH_RES, t);
+    float b1 = layer_bilinear(table, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, r, LAYER_ROUGH_RES, t);
+    return mix(b0, b1, x - (float)x0);
+}
+
 /* The dielectric layer's directional albedo E(cos theta), per channel: exact for a
  * smooth layer, else interpolated from the tables (linear in sqrt(cos), roughness, x). */
 static inline float3 layer_albedo(const BsdfParams* p, float mu)
@@ -50,19 +62,15 @@ static inline float3 layer_albedo(const BsdfParams* p, float mu)
         return fresnel_specular_layer(p, mu);
     float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
     float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
-    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
 #ifdef PATHCL_HAS_SCHLICK_LAYER
     if (p->eta == 0.0f) { /* ior 0: the Schlick row, after the ior grid */
+        const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
         float b = layer_bilinear(p->layer, LAYER_TABLE_B + LAYER_ETA_RES * block, LAYER_MU_RES, p->layer_r,
                                  LAYER_ROUGH_RES, t);
         return p->specular * (p->f0c * (e_ss - b) + b);
     }
 #endif
-    int x0 = min((int)p->layer_x, LAYER_ETA_RES - 2);
-    float fx = p->layer_x - (float)x0;
-    float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
-    float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->layer_r, LAYER_ROUGH_RES, t);
-    float b = mix(b0, b1, fx);
+    float b = layer_b(p->layer, p->layer_r, p->layer_x, t);
     return p->specular * (p->f0c * (e_ss - b) + b);
 }
 
@@ -104,12 +112,8 @@ static inline float coat_albedo(const BsdfParams* p, float mu)
         return fresnel_dielectric(mu, COAT_IOR);
     float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
     float e_ss = layer_bilinear(p->layer, LAYER_TABLE_ESS, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
-    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
     const float x = (0.2f / LAYER_X_MAX) * (float)(LAYER_ETA_RES - 1); /* (ior - 1) / (ior + 1) = 0.2 */
-    const int x0 = (int)x;
-    float b0 = layer_bilinear(p->layer, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
-    float b1 = layer_bilinear(p->layer, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, p->coat_r, LAYER_ROUGH_RES, t);
-    float b = mix(b0, b1, x - (float)x0);
+    float b = layer_b(p->layer, p->coat_r, x, t);
     return COAT_F0 * (e_ss - b) + b;
 }
 

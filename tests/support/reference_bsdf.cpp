@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -109,6 +110,20 @@ static double table_at(const std::vector<float>& t, int offset, int cols, double
            fr * ((1 - fc) * v(r0 + 1, c0) + fc * v(r0 + 1, c0 + 1));
 }
 
+// The tables' E_ss and B at roughness row `row` (continuous), ior coordinate x and column
+// `col` (sqrt(cos theta) on the grid): a rough dielectric layer reflects f0 (E_ss - B) + B.
+// Shared by the specular layer and the clear coat.
+static std::pair<double, double> ess_and_b(double row, double x, double col)
+{
+    const std::vector<float>& t = layer_albedo_table();
+    double e_ss = table_at(t, LAYER_TABLE_ESS, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    int x0 = std::min(static_cast<int>(x), LAYER_ETA_RES - 2);
+    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
+    double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+    return {e_ss, b0 + (x - x0) * (b1 - b0)};
+}
+
 static glm::dvec3 f0_colour(const ReferenceBsdf& b)
 {
     double r = (b.ior - 1.0) / (b.ior + 1.0);
@@ -122,18 +137,13 @@ glm::dvec3 ReferenceBsdf::layer_albedo(double mu) const
         double s = ior == 0.0 ? std::pow(1.0 - std::clamp(mu, 0.0, 1.0), 5.0) : normalized_fresnel(mu, eta);
         return specular * (f0c + (glm::dvec3(1.0) - f0c) * s);
     }
-    const std::vector<float>& t = layer_albedo_table();
     double roughness = std::sqrt(alpha), r = (ior - 1.0) / (ior + 1.0);
     double row = roughness * (LAYER_ROUGH_RES - 1), x = std::clamp(r / LAYER_X_MAX, 0.0, 1.0) * (LAYER_ETA_RES - 1);
     double col = std::sqrt(std::clamp(mu, 0.0, 1.0)) * (LAYER_MU_RES - 1);
-    double e_ss = table_at(t, LAYER_TABLE_ESS, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    int x0 = std::min(static_cast<int>(x), LAYER_ETA_RES - 2);
-    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
-    double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    double b = b0 + (x - x0) * (b1 - b0);
+    auto [e_ss, b] = ess_and_b(row, x, col);
     if (ior == 0.0) // the Schlick row after the ior grid
-        b = table_at(t, LAYER_TABLE_B + LAYER_ETA_RES * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
+        b = table_at(layer_albedo_table(), LAYER_TABLE_B + LAYER_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES, LAYER_MU_RES,
+                     row, LAYER_ROUGH_RES, col);
     return specular * (f0c * (e_ss - b) + b);
 }
 
@@ -285,15 +295,8 @@ double ReferenceBsdf::coat_albedo(double mu) const
     const double coat_ior = 1.5, r = (coat_ior - 1.0) / (coat_ior + 1.0), f0 = r * r;
     if (coat_alpha < kAlphaDelta)
         return fresnel_dielectric(mu, coat_ior);
-    const std::vector<float>& t = layer_albedo_table();
-    double row = std::sqrt(coat_alpha) * (LAYER_ROUGH_RES - 1), col = mu_col(mu);
-    double x = r / LAYER_X_MAX * (LAYER_ETA_RES - 1);
-    int x0 = static_cast<int>(x);
-    const int block = LAYER_ROUGH_RES * LAYER_MU_RES;
-    double e_ss = table_at(t, LAYER_TABLE_ESS, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    double b0 = table_at(t, LAYER_TABLE_B + x0 * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    double b1 = table_at(t, LAYER_TABLE_B + (x0 + 1) * block, LAYER_MU_RES, row, LAYER_ROUGH_RES, col);
-    double b = b0 + (x - x0) * (b1 - b0);
+    double row = std::sqrt(coat_alpha) * (LAYER_ROUGH_RES - 1);
+    auto [e_ss, b] = ess_and_b(row, r / LAYER_X_MAX * (LAYER_ETA_RES - 1), mu_col(mu));
     return f0 * (e_ss - b) + b;
 }
 
