@@ -130,6 +130,10 @@ TEST_F(GltfFiles, OtherMajorVersionsThanGltf2AreRefusedByName)
             contains(msg, "old.gltf: asset.version is \"" + std::string(version) + "\": only glTF 2.0 files are read"))
             << msg;
     }
+    fs::path number = dir_ / "number.gltf";
+    std::ofstream(number) << R"({"asset": {"version": 1}, "scenes": {"defaultScene": {"nodes": []}}})";
+    std::string msg = error_of([&] { load_gltf(number.string()); });
+    EXPECT_TRUE(contains(msg, "number.gltf: asset.version is 1, not a string \"2.x\"")) << msg;
     fs::path path = dir_ / "minor.gltf";
     std::ofstream(path) << R"({"asset": {"version": "2.1"}, "scene": 0, "scenes": [{"nodes": []}]})";
     EXPECT_EQ(load_gltf(path.string()).triangles.size(), 0u);

@@ -69,8 +69,10 @@ private:
         if (asset == root_.end() || !asset->is_object())
             return;
         auto version = asset->find("version");
-        if (version == asset->end() || !version->is_string())
+        if (version == asset->end())
             return;
+        if (!version->is_string()) // glTF 1.0 files have been written with "version": 1
+            fail("asset.version", "is " + version->dump() + ", not a string \"2.x\": only glTF 2.0 files are read");
         const std::string& v = version->get_ref<const std::string&>();
         if (v.rfind("2.", 0) != 0)
             fail("asset.version", "is \"" + v + "\": only glTF 2.0 files are read");
