@@ -18,7 +18,7 @@ The glTF reader is our own (numpy only, no pathcl code) and covers what
 scenes/cornell-box*.gltf use: node TRS/matrix hierarchy, triangle primitives (mode 4)
 with float VEC3 POSITION, TEXCOORD_n (float, or normalized u8/u16 VEC2) and u8/u16/u32
 indices, base64 data-URI or external buffers, images from a bufferView, a data URI or a
-file (PNG decoded here with zlib; JPEG needs Pillow or OpenImageIO), baseColorFactor,
+file (PNG or JPEG, decoded by Mitsuba's Bitmap), baseColorFactor,
 emissiveFactor x KHR_materials_emissive_strength, KHR_lights_punctual point (and
 sphere) and directional lights, and the first perspective camera. Materials with an
 exact Mitsuba equivalent (see material_params, material_texture): Lambertian
@@ -135,119 +135,19 @@ TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
 
 # ---------------------------------------------------------------------------------------
-# Images: PNG decoded here (zlib + numpy, no extra package); JPEG through Pillow or
-# OpenImageIO if one is importable.
-
-def decode_png(data):
-    """An 8- or 16-bit PNG as an (H, W, C) uint8 / uint16 array, rows top first, C = 1
-    (grey), 2 (grey, alpha), 3 (RGB) or 4 (RGBA); palette images become RGB(A), sub-byte
-    grey is scaled to 8 bits. Interlaced (Adam7) PNGs are refused."""
-    import struct
-    import zlib
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError("not a PNG file")
-    pos, idat, palette, trns, ihdr = 8, [], None, None, None
-    while pos + 8 <= len(data):
-        length, tag = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-        if tag == b"IHDR":
-            ihdr = struct.unpack(">IIBBBBB", body)
-        elif tag == b"PLTE":
-            palette = np.frombuffer(body, np.uint8).reshape(-1, 3)
-        elif tag == b"tRNS":
-            trns = body
-        elif tag == b"IDAT":
-            idat.append(body)
-        elif tag == b"IEND":
-            break
-    if ihdr is None:
-        raise ValueError("PNG without IHDR")
-    w, h, depth, ctype, _, _, interlace = ihdr
-    if interlace:
-        raise ValueError("interlaced PNGs are not supported")
-    chans = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype]
-    bits = chans * depth
-    bpp = max(1, bits // 8)                      # filter unit: bytes per pixel, >= 1
-    stride = (w * bits + 7) // 8
-    raw = np.frombuffer(zlib.decompress(b"".join(idat)), np.uint8)
-    if len(raw) < h * (stride + 1):
-        raise ValueError("PNG image data too short")
-    rows = raw[:h * (stride + 1)].reshape(h, stride + 1)
-    out = np.zeros((h, stride), np.uint8)
-    prev = np.zeros(stride, np.int32)
-    for y in range(h):
-        f, line = rows[y, 0], rows[y, 1:].astype(np.int32)
-        if f == 1:    # Sub: a running sum per byte of the pixel, mod 256
-            line = np.cumsum(np.pad(line, (0, -stride % bpp)).reshape(-1, bpp), axis=0).reshape(-1)[:stride] & 255
-        elif f == 2:  # Up
-            line = (line + prev) & 255
-        elif f in (3, 4):  # Average, Paeth: sequential along the row
-            cur = np.zeros(stride + bpp, np.int32)
-            up = np.concatenate([np.zeros(bpp, np.int32), prev])
-            for i in range(stride):
-                a, b, c = cur[i], up[i + bpp], up[i]
-                if f == 3:
-                    pred = (a + b) >> 1
-                else:
-                    p = a + b - c
-                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                    pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
-                cur[i + bpp] = (line[i] + pred) & 255
-            line = cur[bpp:]
-        elif f != 0:
-            raise ValueError(f"PNG filter type {f}")
-        out[y] = line
-        prev = line
-    if depth == 16:
-        img = out.view(">u2").astype(np.uint16).reshape(h, w, chans)
-    elif depth == 8:
-        img = out.reshape(h, w, chans)
-    else:  # 1, 2, 4 bits: grey or palette indices
-        img = np.unpackbits(out, axis=1).reshape(h, stride * 8 // depth, depth)[:, :w]
-        img = (img * (1 << np.arange(depth - 1, -1, -1))).sum(-1).astype(np.uint8)[..., None]
-        if ctype == 0:
-            img = (img.astype(np.uint32) * 255 // ((1 << depth) - 1)).astype(np.uint8)
-    if ctype == 3:
-        if palette is None:
-            raise ValueError("palette PNG without PLTE")
-        idx = img[..., 0]
-        rgb = palette[idx]
-        if trns is not None:
-            alpha = np.full(256, 255, np.uint8)
-            alpha[:len(trns)] = np.frombuffer(trns, np.uint8)
-            return np.concatenate([rgb, alpha[idx][..., None]], -1)
-        return rgb
-    if trns is not None and ctype in (0, 2):  # a colour key: that colour is transparent
-        key = np.frombuffer(trns, ">u2")[:chans].astype(img.dtype)
-        opaque = np.iinfo(img.dtype).max
-        alpha = np.where(np.all(img == key, axis=-1), 0, opaque).astype(img.dtype)
-        return np.concatenate([img, alpha[..., None]], -1)
-    return img
-
+# Images: decoded by Mitsuba's own Bitmap (libpng, libjpeg), as stored: no colour
+# conversion (the sRGB decode is done below, as pathcl does it).
 
 def decode_image(data, mime):
-    """Image bytes as an (H, W, C) uint8 / uint16 array (see decode_png)."""
-    if data[:8] == b"\x89PNG\r\n\x1a\n":
-        return decode_png(data)
-    try:
-        from PIL import Image
-        import io
-        return np.array(Image.open(io.BytesIO(data)))
-    except ImportError:
-        pass
-    try:
-        import OpenImageIO as oiio
-        import tempfile
-        with tempfile.NamedTemporaryFile(suffix=".jpg") as f:
-            f.write(data)
-            f.flush()
-            inp = oiio.ImageInput.open(f.name)
-            img = inp.read_image(oiio.UINT8)
-            inp.close()
-            return np.asarray(img)
-    except ImportError:
-        raise ValueError(f"cannot decode a {mime or 'non-PNG'} image: pip install pillow (PNG needs nothing)")
+    """Image bytes (PNG or JPEG) as an (H, W, C) uint8 / uint16 array, rows top first."""
+    import tempfile
+    import mitsuba as mi
+    suffix = ".jpg" if mime == "image/jpeg" or data[:2] == b"\xff\xd8" else ".png"
+    with tempfile.NamedTemporaryFile(suffix=suffix) as f:
+        f.write(data)
+        f.flush()
+        img = np.array(mi.Bitmap(f.name), copy=True)
+    return img[..., None] if img.ndim == 2 else img
 
 
 # ---------------------------------------------------------------------------------------
@@ -398,7 +298,7 @@ def material_params(doc, index):
     return tuple(base), tuple(emissive), bool(mat.get("doubleSided", False)), kind
 
 
-GL_NEAREST, GL_LINEAR = 9728, 9729
+GL_NEAREST = 9728
 GL_WRAP = {10497: "repeat", 33071: "clamp", 33648: "mirror"}
 
 
@@ -409,7 +309,7 @@ def srgb_to_linear(c):
 
 def material_texture(g, index, kind):
     """What material `index` needs beyond material_params: None for a plain material, or
-    {"rgb": HxWx3 float32 linear base colour (texel x baseColorFactor) or None,
+    {"rgb": HxWx3 float32 linear base colour (texel x baseColorFactor),
      "opacity": HxWx1 float32 of exactly 0 or 1 or None, "filter": "nearest"|"bilinear",
      "wrap": Mitsuba wrap_mode, "texcoord": set n}; "cut": True when the whole material
     is cut away (MASK with a constant alpha below the cutoff).
@@ -739,7 +639,10 @@ def main():
         sys.exit(f"mitsuba_reference.py: {e}")
 
     variant = pick_variant(mi, args.variant)
-    prims, camera, lights = load_scene(args.scene)
+    try:
+        prims, camera, lights = load_scene(args.scene)
+    except ValueError as e:
+        sys.exit(f"mitsuba_reference.py: {e}")
     integrator = None if args.integrator == "auto" else args.integrator
     try:
         scene = build_scene(mi, prims, camera, args.width, args.height, args.spp,
