@@ -49,6 +49,8 @@ public:
                           const std::vector<double>& morph_weights = {});
 
     std::size_t skipped_points_lines() const { return skipped_points_lines_; }
+    // Whether the file uses KHR_mesh_quantization (integer positions, normals, ...).
+    bool quantized() const { return quantized_; }
     // Triangle-list primitives whose index (or vertex) count is not a multiple of 3.
     std::size_t incomplete_triangle_lists() const { return incomplete_triangle_lists_; }
     // Morph targets of attributes other than POSITION, NORMAL and TANGENT, not applied.
