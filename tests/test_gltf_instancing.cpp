@@ -150,7 +150,8 @@ TEST(GltfInstancing, BrokenAttributesAreOneLineErrorsNamingTheNode)
 TEST(GltfInstancing, CopiesThatCannotFitInMemoryAreRefusedBeforeTheyAreMade)
 {
     // A 2^20-triangle mesh (a POSITION accessor without bufferView: zeros, no file bytes)
-    // instanced more times than this machine's memory holds at 256 bytes a triangle, by a
+    // instanced more times than this machine's memory holds at 256 bytes a triangle (the
+    // limit counts 300), by a
     // translation accessor of zeros: a few hundred bytes of glTF asking for ~10^8
     // triangles. Refused at once, naming the node. Broken variant seen to fail: no plan
     // (under `ulimit -v 6000000` the import threw std::bad_alloc after 13 s).
