@@ -217,11 +217,10 @@ void put_le32(std::vector<unsigned char>& out, std::size_t v)
 } // namespace
 
 std::vector<unsigned char> detach_draco_indices(const std::vector<unsigned char>& file, bool binary,
-                                                std::string_view json, DracoIndices& indices)
+                                                std::size_t json_size, nlohmann::json& doc, DracoIndices& indices)
 {
-    if (json.find(kDraco) == std::string_view::npos)
-        return {};
-    nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+    if (!doc.is_object())
+        return {}; // not JSON (tinygltf says so) or not a document (the schema check has)
     auto meshes = doc.find("meshes");
     if (meshes == doc.end() || !meshes->is_array())
         return {};
@@ -248,7 +247,7 @@ std::vector<unsigned char> detach_draco_indices(const std::vector<unsigned char>
         return {text.begin(), text.end()};
     text.resize((text.size() + 3) / 4 * 4, ' '); // a GLB chunk is padded to four bytes
     // The chunks after the JSON chunk, as they are (check_glb has checked the container).
-    const std::size_t rest = 20 + json.size();
+    const std::size_t rest = 20 + json_size;
     std::vector<unsigned char> out(file.begin(), file.begin() + 8); // magic and version
     put_le32(out, 20 + text.size() + (file.size() - rest));
     put_le32(out, text.size());

@@ -7,9 +7,10 @@
 #include <cstddef>
 #include <map>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace tinygltf {
 class Model;
@@ -23,12 +24,12 @@ namespace pathcl {
 // primitive index, for decode_draco_primitives.
 using DracoIndices = std::map<std::pair<std::size_t, std::size_t>, int>;
 
-// When `json` (the file's JSON text, or its GLB's JSON chunk; valid JSON, as the schema
-// check has parsed it) has Draco primitives with indices: returns the file with them taken
-// out of it (a GLB is re-assembled around the new JSON chunk) and fills `indices`. Else
-// returns nothing and the file is loaded as it is.
+// When `doc` (the file's parsed JSON, whose text is `json_size` bytes: the file, or its
+// GLB's JSON chunk) has Draco primitives with indices: takes them out of `doc`, fills
+// `indices` and returns the file re-written around the changed JSON (a GLB re-assembled
+// around a new JSON chunk). Else returns nothing and the file is loaded as it is.
 std::vector<unsigned char> detach_draco_indices(const std::vector<unsigned char>& file, bool binary,
-                                                std::string_view json, DracoIndices& indices);
+                                                std::size_t json_size, nlohmann::json& doc, DracoIndices& indices);
 
 // Whether any primitive of `model` carries KHR_draco_mesh_compression.
 bool has_draco_primitives(const tinygltf::Model& model);

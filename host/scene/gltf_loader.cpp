@@ -98,14 +98,13 @@ void check_required_extensions(const std::vector<std::string>& required, const s
             throw Error(source + ": requires the unsupported extension " + ext);
 }
 
-// extensionsRequired read from the JSON text, before tinygltf parses the file: an
+// extensionsRequired read from the parsed JSON, before tinygltf parses the file: an
 // extension such as EXT_meshopt_compression makes buffers that tinygltf would refuse with
-// a message about byte lengths instead (the schema check has parsed the text already).
-void check_required_extensions(std::string_view json, const std::string& source)
+// a message about byte lengths instead.
+void check_required_extensions(const nlohmann::json& doc, const std::string& source)
 {
-    if (json.find("extensionsRequired") == std::string_view::npos)
-        return;
-    nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+    if (!doc.is_object())
+        return; // not JSON (tinygltf says so) or not a document (the schema check has)
     auto required = doc.find("extensionsRequired");
     if (required == doc.end() || !required->is_array())
         return;
@@ -336,12 +335,13 @@ Scene load_gltf(const std::string& path, const SceneChoice& choice)
         json = check_glb(bytes.data(), bytes.size(), path);
     else
         check_json_nesting(bytes.data(), bytes.size(), path);
-    check_gltf_schema(json, path);
-    check_required_extensions(json, path);
+    nlohmann::json doc = parse_gltf_json(json);
+    check_gltf_schema(doc, path);
+    check_required_extensions(doc, path);
     DracoIndices draco_indices;
-    if (std::vector<unsigned char> detached = detach_draco_indices(bytes, binary, json, draco_indices);
+    if (std::vector<unsigned char> detached = detach_draco_indices(bytes, binary, json.size(), doc, draco_indices);
         !detached.empty())
-        bytes = std::move(detached); // `json` is not used below
+        bytes = std::move(detached); // `json` and `doc` are not used below
     std::string base_dir = std::filesystem::path(path).parent_path().string();
     ConfinedFiles files(base_dir);
     tinygltf::TinyGLTF loader;

@@ -24,6 +24,7 @@ public:
         if (!root_.is_object())
             fail("the document", "is not a JSON object");
         asset_version();
+        extension_objects(root_, "");
         lights_ = count_extension_array("KHR_lights_punctual", "lights");
         index(root_, "scene", "scene", "scenes");
         each(root_, "scenes", "scenes",
@@ -57,7 +58,6 @@ public:
             index_array(s, "joints", at + ".joints", "nodes");
         });
         each(root_, "animations", "animations", [&](const Json& a, const std::string& at) { animation(a, at); });
-        extension_objects(root_, "");
     }
 
 private:
@@ -346,10 +346,9 @@ private:
         number(m, "alphaCutoff", at);
         string(m, "alphaMode", at);
         // The material extensions name their textures "...Texture"; each is a textureInfo.
+        // (extension_objects has made every extension an object.)
         if (const Json* ext = member_object(m, "extensions", at + ".extensions")) {
             for (const auto& [name, e] : ext->items()) {
-                if (!e.is_object())
-                    fail(at + ".extensions." + name, "is not an object");
                 for (const auto& [member, v] : e.items()) {
                     (void)v;
                     if (member.size() > 7 && member.compare(member.size() - 7, 7, "Texture") == 0)
@@ -397,12 +396,16 @@ private:
 
 } // namespace
 
-void check_gltf_schema(std::string_view json, const std::string& what)
+Json parse_gltf_json(std::string_view json)
 {
-    Json root = Json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions=*/false);
-    if (root.is_discarded())
+    return Json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions=*/false);
+}
+
+void check_gltf_schema(const Json& doc, const std::string& what)
+{
+    if (doc.is_discarded())
         return; // the glTF library's parser reports what is wrong with the text
-    SchemaCheck(root, what).run();
+    SchemaCheck(doc, what).run();
 }
 
 } // namespace pathcl

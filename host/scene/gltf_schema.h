@@ -11,11 +11,18 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 namespace pathcl {
 
+// The JSON text parsed once, for every check made before the glTF library reads the file
+// (the schema, the required extensions, the Draco indices); a discarded value when the
+// text is not valid JSON, which the glTF library's parser then reports, naming the file.
+// The nesting must already be bounded (check_json_nesting).
+nlohmann::json parse_gltf_json(std::string_view json);
+
 // Throws pathcl::Error "WHAT: PATH: ..." (PATH like nodes[3].mesh) at the first violation.
-// Text that is not valid JSON is left to the glTF library, which reports it. The nesting
-// must already be bounded (check_json_nesting).
-void check_gltf_schema(std::string_view json, const std::string& what);
+// A discarded document (not JSON) passes.
+void check_gltf_schema(const nlohmann::json& doc, const std::string& what);
 
 } // namespace pathcl
