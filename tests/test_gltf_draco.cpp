@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -13,7 +12,6 @@
 #include <vector>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <draco/compression/encode.h>
 #include <draco/mesh/triangle_soup_mesh_builder.h>
@@ -25,31 +23,19 @@
 #include "support/expect_error.h"
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
+#include "support/tool_run.h"
 
 namespace pathcl {
 namespace {
 
-namespace fs = std::filesystem;
 using test::contains;
 using test::error_of;
 
 const std::string kTextured = std::string(PATHCL_SOURCE_DIR) + "/scenes/textured.gltf";
 
-// A fresh directory per test, removed afterwards.
-class DracoFiles : public ::testing::Test {
+// A fresh directory per test (ToolRun's), removed afterwards.
+class DracoFiles : public test::ToolRun {
 protected:
-    void SetUp() override
-    {
-        dir_ = fs::temp_directory_path() / ("pathcl-draco-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override
-    {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
     // Compresses `input` into dir_/name with draco_transcoder and `options`; returns the path.
     std::string transcode(const std::string& input, const std::string& name, const std::string& options) const
     {
@@ -60,7 +46,6 @@ protected:
         EXPECT_TRUE(rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0) << cmd;
         return out;
     }
-    fs::path dir_;
 };
 
 // The largest differences between the vertices of two scenes' triangles, each triangle of
