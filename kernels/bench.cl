@@ -58,7 +58,7 @@ __kernel void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint dif
     if (hit.triangle < 0)
         return;
     float3 wo = -r.direction.xyz;
-    SurfacePoint sp = surface_point(kd.triangles, kd.shading, hit, wo);
+    SurfacePoint sp = surface_point(&kd, hit, wo);
     SamplerState s = sampler_start(pixel, frame.sample_index, frame.seed, 0u);
     Ray out;
     if (diffuse != 0u || frame.light_count == 0u) {

@@ -16,6 +16,7 @@
     X(BvhNode, nodes)           /* four-wide BVH, root first */                                                        \
     X(Triangle, triangles)      /* positions, BVH leaf order */                                                        \
     X(TriangleShading, shading) /* normals, material, emitter; leaf order */                                           \
+    X(Instance, instances)      /* two-level BVH only: top-level leaf order */                                         \
     X(Material, materials)                                                                                             \
     X(Light, lights)                       /* sphere lights first */                                                   \
     X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                          \

@@ -30,7 +30,8 @@
 #define FEATURE_SCHLICK_LAYER (1u << 15)     /* a material with KHR_materials_ior ior 0 (specular-glossiness mode) */
 #define FEATURE_UNLIT (1u << 16)             /* a KHR_materials_unlit material */
 #define FEATURE_CLEARCOAT (1u << 17)         /* a material with KHR_materials_clearcoat clearcoatFactor > 0 */
-#define FEATURE_ALL ((1u << 18) - 1u)
+#define FEATURE_INSTANCES (1u << 18)         /* a mesh stored once and drawn by instances (two-level BVH) */
+#define FEATURE_ALL ((1u << 19) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -91,6 +92,9 @@
 #endif
 #if PATHCL_FEATURES & FEATURE_CLEARCOAT
 #define PATHCL_HAS_CLEARCOAT
+#endif
+#if PATHCL_FEATURES & FEATURE_INSTANCES
+#define PATHCL_HAS_INSTANCES
 #endif
 
 /* Derived guards. */

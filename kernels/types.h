@@ -32,6 +32,25 @@ typedef struct {
 /* Entries of the traversal stack (kernels/bvh/traversal.cl); the builder checks that every
  * tree fits (a four-wide node pushes at most three children per level). */
 #define BVH_STACK_SIZE 96
+/* The same for a two-level BVH (PATHCL_HAS_INSTANCES): the top level's entries, a leaf's
+ * instances and a return mark below the entries of one mesh's tree; compile_geometry
+ * checks that the sum fits. */
+#define BVH_INSTANCED_STACK_SIZE (2 * BVH_STACK_SIZE)
+
+/* One drawing of a mesh that is stored once (a two-level BVH: instances in a top-level
+ * tree whose leaves name them, each mesh in its own tree in its own space), as two affine
+ * maps of three rows each, x'_k = dot(row_k.xyz, x) + row_k.w: to_object takes the
+ * render-space ray into the mesh's space for traversal, to_render takes the hit back.
+ * 112 bytes. */
+typedef struct {
+    pcl_float4 to_object[3];
+    pcl_float4 to_render[3];
+    pcl_int root;  /* the mesh's tree: its root node (always an inner node) */
+    pcl_int flags; /* INSTANCE_* */
+    pcl_int pad0, pad1;
+} Instance;
+#define INSTANCE_IDENTITY 1 /* both maps are the identity: the triangles are in render space */
+#define INSTANCE_MIRRORED 2 /* the map's determinant is negative: clockwise is the front (glTF) */
 
 /* Triangle positions in BVH leaf order, for intersection only: 48 bytes. v0.w is
  * TRIANGLE_ALPHA_TESTED when the triangle's material has alphaMode MASK or BLEND and its

@@ -104,25 +104,34 @@ TEST(GltfHierarchy, ParentTrsTimesChildMatrixGivesWorldPositions)
         << " " << str(e[1]) << " " << str(e[2]);
 }
 
-TEST(GltfHierarchy, MeshInstancedByTwoNodesGivesTwoCopies)
+TEST(GltfHierarchy, MeshDrawnByTwoNodesIsStoredOnceAndDrawnTwice)
 {
     // Tolerance: 1e-6 relative. Node A: translation (5,0,0); node B: translation (0,0,-3)
-    // and 90 degrees about +Z, (x, y) -> (-y, x).
+    // and 90 degrees about +Z, (x, y) -> (-y, x). Stored once with two instances; with
+    // copy_instances, two copies; both draw the same two triangles.
     GltfBuilder b;
     int mesh = b.add_mesh(b.add_positions({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}), -1,
                           b.add_material(glm::vec3(0.5f)));
     b.add_root(b.add_node(mesh, {}, {5.0, 0.0, 0.0}));
     b.add_root(b.add_node(mesh, {}, {0.0, 0.0, -3.0}, quaternion({0.0, 0.0, 1.0}, std::numbers::pi / 2)));
-    Scene scene = import(b);
-    ASSERT_EQ(scene.triangles.size(), 2u);
-    auto count = [&](glm::dvec3 a, glm::dvec3 bb, glm::dvec3 c) {
-        int n = 0;
-        for (const SceneTriangle& t : scene.triangles)
-            n += same_triangle(t, a, bb, c, 1e-6) ? 1 : 0;
-        return n;
-    };
-    EXPECT_EQ(count({5, 0, 0}, {6, 0, 0}, {5, 1, 0}), 1) << "copy at node A";
-    EXPECT_EQ(count({0, 0, -3}, {0, 1, -3}, {-1, 0, -3}), 1) << "copy at node B";
+    Scene instanced = import(b), copied = import_copies(b);
+    ASSERT_EQ(instanced.triangles.size(), 1u);
+    ASSERT_EQ(instanced.meshes.size(), 1u);
+    ASSERT_EQ(instanced.instances.size(), 2u);
+    ASSERT_EQ(copied.triangles.size(), 2u);
+    EXPECT_TRUE(copied.instances.empty());
+    for (const Scene* scene : {&instanced, &copied}) {
+        std::vector<SceneTriangle> drawn = drawn_triangle_list(*scene);
+        ASSERT_EQ(drawn.size(), 2u);
+        auto count = [&](glm::dvec3 a, glm::dvec3 bb, glm::dvec3 c) {
+            int n = 0;
+            for (const SceneTriangle& t : drawn)
+                n += same_triangle(t, a, bb, c, 1e-6) ? 1 : 0;
+            return n;
+        };
+        EXPECT_EQ(count({5, 0, 0}, {6, 0, 0}, {5, 1, 0}), 1) << "drawing at node A";
+        EXPECT_EQ(count({0, 0, -3}, {0, 1, -3}, {-1, 0, -3}), 1) << "drawing at node B";
+    }
 }
 
 TEST(GltfHierarchy, TransformsAreComposedInDoublePrecision)

@@ -257,6 +257,9 @@ TEST(Render, MaterialScenesMatchTheirCommittedReferences)
     // coloured caustic failed 48-84 pixels of 12288 (limit 122) and up to one 8x8 tile
     // of 192 over seeds 1-5; at 1024, 0-2 pixels and at most one tile.
     expect_scene_matches_its_reference("cornell-box-features", 1024);
+    // Meshes stored once and drawn by instances (a two-level BVH), against the reference
+    // drawn by copies (tools/make_references.sh: --copy-instances).
+    expect_scene_matches_its_reference("cornell-box-instanced", 256);
 }
 
 TEST(Render, SameSeedGivesIdenticalImageOtherSeedDoesNot)

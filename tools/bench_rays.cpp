@@ -232,7 +232,10 @@ int main(int argc, char** argv)
     app.add_option("--device", device, "OpenCL device index")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     try {
-        Scene scene = load_gltf(path);
+        // Embree here gets the triangles in render space: instanced meshes are copied.
+        SceneChoice copies;
+        copies.copy_instances = true;
+        Scene scene = load_gltf(path, copies);
         CompiledScene cs = compile_scene(scene, kernel_features(scene, RenderOptions{}));
         const SceneArrays& ds = cs.arrays;
         Pathcl pc(device, ds);

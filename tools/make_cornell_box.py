@@ -18,12 +18,15 @@ to a solid glass sphere (scenes/cornell-box-glass-mirror.gltf). With --variant f
 the short block gives way to a sphere of coloured glass (KHR_materials_volume
 attenuation), the tall block is clear-coated red plastic (KHR_materials_clearcoat) and a
 leaf cut out of a card by its texture's alpha (alphaMode MASK) hangs in front of the back
-wall (scenes/cornell-box-features.gltf). With --variant dense the
+wall (scenes/cornell-box-features.gltf). With --variant instanced the short block is
+drawn twice by two nodes (the second mirrored, stretched and turned where the tall block
+stood) and a row of gold beads is one sphere drawn six times by EXT_mesh_gpu_instancing
+(scenes/cornell-box-instanced.gltf). With --variant dense the
 short block gives way to a displaced, flat-shaded white blob of 1,048,576 triangles: the
 million-triangle scene of the speed comparison (tools/compare_mitsuba.sh writes it; 32 MB,
 not committed).
 
-Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror|features|dense] [OUT.gltf]
+Usage: python3 tools/make_cornell_box.py [--light KIND] [--variant glass-mirror|features|instanced|dense] [OUT.gltf]
 """
 import base64, json, math, struct, sys, zlib
 
@@ -103,8 +106,10 @@ class Builder:
     def add_view(self, data, target):
         while len(self.blob) % 4:
             self.blob.append(0)
-        self.views.append({"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data),
-                           "target": target})
+        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)}
+        if target is not None:
+            view["target"] = target
+        self.views.append(view)
         self.blob += data
         return len(self.views) - 1
 
@@ -238,6 +243,68 @@ COATED = {"name": "coated_red", "pbrMetallicRoughness": {"baseColorFactor": [0.5
 # tall block; its texture's alpha cuts the leaf out (alphaCutoff 0.5).
 LEAF_CARD = [(320, 300, 500), (520, 300, 500), (520, 520, 500), (320, 520, 500)]
 
+# --variant instanced: meshes stored once and drawn several times. The short block is
+# drawn twice: in its place, and by a second node that mirrors it (negative determinant:
+# clockwise is its front), stretches it to twice its height and turns it 30 degrees about
+# the vertical where the tall block stood. A row of gold beads along the front is one
+# smooth sphere drawn by EXT_mesh_gpu_instancing: flattened, tilted and turned per bead
+# (non-uniform scales take the normals through the inverse transpose).
+GOLD = {"name": "gold", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.78, 0.34, 1.0],
+        "metallicFactor": 1.0, "roughnessFactor": 0.35}}
+BEAD_RADIUS = 40.0  # mm
+BEADS = 6
+
+def mat_mul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+
+def translation(x, y, z):
+    return [[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, z], [0, 0, 0, 1]]
+
+def rotation_y(degrees):
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return [[c, 0, s, 0], [0, 1, 0, 0], [-s, 0, c, 0], [0, 0, 0, 1]]
+
+def scaling(x, y, z):
+    return [[x, 0, 0, 0], [0, y, 0, 0], [0, 0, z, 0], [0, 0, 0, 1]]
+
+def column_major(m):
+    return [m[r][c] for c in range(4) for r in range(4)]
+
+def add_instanced_meshes(b, white, gold):
+    """The short block twice and the row of beads (see above); returns the extensions used."""
+    b.add_mesh("short_block", [outward(q, block_centre(SHORT_BLOCK)) for q in SHORT_BLOCK], white)
+    c = block_centre(SHORT_BLOCK)
+    # In metres: take the block's centre (on the floor) to the origin, mirror x, stretch y,
+    # turn, and stand it where the tall block stood.
+    t = block_centre(TALL_BLOCK)
+    m = mat_mul(translation(t[0] * MM, 0.0, t[2] * MM),
+                mat_mul(rotation_y(30.0), mat_mul(scaling(-1.0, 2.0, 1.0), translation(-c[0] * MM, 0.0, -c[2] * MM))))
+    b.nodes.append({"name": "short_block_mirrored_tall", "mesh": len(b.meshes) - 1, "matrix": column_major(m)})
+    quads = sphere_quads(0.0, 0.0, 0.0, BEAD_RADIUS, stacks=16, slices=32)
+    b.add_mesh("bead", quads, gold, normals=sphere_normals(quads, 0.0, 0.0, 0.0))
+    translations, rotations, scales = [], [], []
+    for i in range(BEADS):
+        squash = 0.55 + 0.08 * i
+        translations.append((0.07 + 0.083 * i, BEAD_RADIUS * MM * squash, 0.06))
+        tilt = math.radians(12.0 * (i - 2.5))  # about z, then turned about y
+        turn = math.radians(25.0 * i)
+        qz = (0.0, 0.0, math.sin(tilt / 2), math.cos(tilt / 2))
+        qy = (0.0, math.sin(turn / 2), 0.0, math.cos(turn / 2))
+        x1, y1, z1, w1 = qy
+        x2, y2, z2, w2 = qz
+        rotations.append((w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+                          w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2))
+        scales.append((1.0, squash, 1.0 + 0.1 * i))
+    attributes = {}
+    for name, values, kind in (("TRANSLATION", translations, "VEC3"), ("ROTATION", rotations, "VEC4"),
+                               ("SCALE", scales, "VEC3")):
+        fmt = "<%df" % len(values[0])
+        view = b.add_view(b"".join(struct.pack(fmt, *v) for v in values), None)
+        b.accessors.append({"bufferView": view, "componentType": 5126, "count": len(values), "type": kind})
+        attributes[name] = len(b.accessors) - 1
+    b.nodes[-1]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": attributes}}
+    return ["EXT_mesh_gpu_instancing"]
+
 def png_bytes(width, height, rgba):
     """An 8-bit RGBA PNG of rows (top first) of (r, g, b, a) tuples."""
     raw = b"".join(b"\x00" + b"".join(struct.pack("4B", *px) for px in row) for row in rgba)
@@ -281,9 +348,7 @@ def add_leaf_card(b, material):
         "attributes": {"POSITION": n - 3, "TEXCOORD_0": n - 2}, "indices": n - 1,
         "material": material, "mode": 4}]})
     b.nodes.append({"name": "leaf_card", "mesh": len(b.meshes) - 1})
-    image_view = b.add_view(png_bytes(64, 64, leaf_texels()), None)
-    del b.views[image_view]["target"]
-    return image_view
+    return b.add_view(png_bytes(64, 64, leaf_texels()), None)
 
 def blob_quads(cx, cy, cz, r, stacks=512, slices=1024):
     """A sphere displaced by a few ridges (up to 9 % of r), as sphere_quads: stacks x slices
@@ -308,8 +373,8 @@ def main():
                 sys.exit(f"make_cornell_box.py: --light must be one of {', '.join(PUNCTUAL_LIGHTS)}")
         else:
             variant = args[1]
-            if variant not in ("glass-mirror", "features", "dense"):
-                sys.exit("make_cornell_box.py: --variant must be glass-mirror, features or dense")
+            if variant not in ("glass-mirror", "features", "instanced", "dense"):
+                sys.exit("make_cornell_box.py: --variant must be glass-mirror, features, instanced or dense")
         args = args[2:]
     name = "cornell-box" + (f"-{light_kind}" if light_kind else "") + (f"-{variant}" if variant else "")
     out = args[0] if args else f"scenes/{name}.gltf"
@@ -353,6 +418,9 @@ def main():
         leaf_image = add_leaf_card(b, leaf_m)
         extensions_used += ["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume",
                             "KHR_materials_clearcoat"]
+    elif variant == "instanced":
+        materials.append(GOLD)
+        extensions_used += add_instanced_meshes(b, WHITE, len(materials) - 1)
     elif variant == "dense":
         b.add_mesh("blob", blob_quads(*GLASS_SPHERE), WHITE)
         b.add_mesh("tall_block", [outward(q, block_centre(TALL_BLOCK)) for q in TALL_BLOCK], WHITE)

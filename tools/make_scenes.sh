@@ -8,6 +8,7 @@ for light in point sphere spot rect-spot directional; do
 done
 python3 tools/make_cornell_box.py --variant glass-mirror
 python3 tools/make_cornell_box.py --variant features
+python3 tools/make_cornell_box.py --variant instanced
 python3 tools/make_sky_scene.py scenes
 python3 tools/make_material_spheres.py scenes
 python3 tools/make_textured_scene.py scenes

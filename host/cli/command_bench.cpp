@@ -18,6 +18,7 @@ struct BenchRequest {
     std::string device = "0"; // --device: an index, a list or all
     int runs = 5;
     bool kernels = false;
+    bool copy_instances = false; // --copy-instances
 };
 
 int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
@@ -32,7 +33,7 @@ int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
 
 int run_bench(BenchRequest rq)
 {
-    Scene scene = load_gltf(rq.scene_path);
+    Scene scene = load_gltf(rq.scene_path, {-1, "", rq.copy_instances});
     rq.options.devices = parse_devices(rq.device);
     if (rq.kernels)
         return run_kernel_bench(scene, rq);
@@ -75,6 +76,7 @@ Command add_bench_command(CLI::App& app)
     bench->add_option("--runs", rq->runs, "timed runs after one warm-up")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
+    add_copy_instances_option(bench, rq->copy_instances);
     bench->add_flag("--kernels", rq->kernels,
                     "time each stage on its own instead: camera rays, closest and any-hit traversal (primary, "
                     "diffuse, shadow rays), path samples, film accumulation, BVH build, program build");

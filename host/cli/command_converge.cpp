@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 
 struct ConvergeRequest {
     std::string scene_path, out_dir;
-    std::string variant; // --variant NAME
+    std::string variant;         // --variant NAME
+    bool copy_instances = false; // --copy-instances
     std::vector<std::string> vary;
     std::vector<std::uint32_t> ladder{1, 2, 4, 8, 16, 32, 64, 128, 256};
     std::uint32_t seeds = 3;
@@ -114,7 +115,7 @@ int run_converge(ConvergeRequest rq)
             o.target_error = 1.0;
         plan_batches(o);
     }
-    Scene scene = load_gltf(rq.scene_path, {-1, rq.variant});
+    Scene scene = load_gltf(rq.scene_path, {-1, rq.variant, rq.copy_instances});
     fs::create_directories(rq.out_dir);
     catch_interrupts();
 
@@ -219,6 +220,7 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
     c->add_option("--seed", rq->options.seed, "first seed")->capture_default_str();
     add_program_options(c, rq->options);
     add_variant_option(c, rq->variant);
+    add_copy_instances_option(c, rq->copy_instances);
     c->add_flag("--quiet", rq->quiet, "no progress line");
     return {c, [rq] { return run_converge(*rq); }};
 }

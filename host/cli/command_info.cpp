@@ -15,7 +15,8 @@ namespace {
 
 struct InfoRequest {
     std::string scene_path;
-    std::string variant; // --variant NAME
+    std::string variant;         // --variant NAME
+    bool copy_instances = false; // --copy-instances
     RenderOptions options;
     int device = 0;
 };
@@ -30,10 +31,13 @@ std::string join(const std::vector<std::string>& items)
 
 int run_info(const InfoRequest& rq)
 {
-    Scene scene = load_gltf(rq.scene_path, {-1, rq.variant});
+    Scene scene = load_gltf(rq.scene_path, {-1, rq.variant, rq.copy_instances});
     SceneSummary s = summarize_scene(scene);
     std::printf("scene        %s\n", rq.scene_path.c_str());
     std::printf("triangles    %zu (%zu degenerate dropped at load)\n", s.triangles, s.dropped_degenerate);
+    if (s.instances > 0)
+        std::printf("instances    %zu of %zu mesh%s stored once (%zu triangles stored)\n", s.instances,
+                    s.instanced_meshes, s.instanced_meshes == 1 ? "" : "es", s.stored_triangles);
     std::printf("lights       %zu emissive triangles, %zu point, %zu spot, %zu rectangular spot, %zu directional, "
                 "%zu sphere\n",
                 s.emissive_triangles, s.point_lights, s.spot_lights, s.rect_spot_lights, s.directional_lights,
@@ -75,6 +79,7 @@ Command add_info_command(CLI::App& app)
     info->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
     add_program_options(info, rq->options);
     add_variant_option(info, rq->variant);
+    add_copy_instances_option(info, rq->copy_instances);
     info->add_option("--device", rq->device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
     return {info, [rq] { return run_info(*rq); }};
 }

@@ -130,8 +130,9 @@ struct RenderRequest {
     double checkpoint_every = 60.0;
     DisplayTransform display; // PNG outputs: --exposure EV, --tone
     std::string tone = "clip";
-    std::string sample_range; // --sample-range FIRST:COUNT
-    std::string variant;      // --variant NAME
+    std::string sample_range;    // --sample-range FIRST:COUNT
+    std::string variant;         // --variant NAME
+    bool copy_instances = false; // --copy-instances
 };
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
@@ -176,7 +177,7 @@ int run_render(RenderRequest rq)
         check_ray_log_path(rq.ray_log);
     if (rq.camera.camera < -1)
         throw Error("--camera must be >= 0");
-    Scene scene = load_gltf(rq.scene_path, {rq.camera.camera, rq.variant});
+    Scene scene = load_gltf(rq.scene_path, {rq.camera.camera, rq.variant, rq.copy_instances});
     apply_environment_flags(scene, rq.environment);
     if (!shows_anything(scene))
         warn(rq.scene_path + ": has no light (no emissive material, punctual light or environment) and no unlit "
@@ -381,6 +382,7 @@ Command add_render_command(CLI::App& app)
         ->type_name("FIRST:COUNT");
     add_program_options(render, rq->options);
     add_variant_option(render, rq->variant);
+    add_copy_instances_option(render, rq->copy_instances);
     return {render, [rq] { return run_render(*rq); }};
 }
 

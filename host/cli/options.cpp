@@ -128,6 +128,13 @@ void add_variant_option(CLI::App* command, std::string& variant)
                         "materials; 'pathcl info' lists the variants)");
 }
 
+void add_copy_instances_option(CLI::App* command, bool& copy_instances)
+{
+    command->add_flag("--copy-instances", copy_instances,
+                      "copy a mesh drawn by several nodes or EXT_mesh_gpu_instancing instances into the scene once per "
+                      "drawing (one-level BVH) instead of storing it once and drawing instances of it (two-level BVH)");
+}
+
 std::string flag_for(const std::string& parameter)
 {
     static const std::map<std::string, std::string> renamed = {{"time_budget", "--time"}};

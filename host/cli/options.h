@@ -32,5 +32,7 @@ std::string flag_for(const std::string& parameter);
 
 // --variant NAME: the KHR_materials_variants variant the scene is loaded in.
 void add_variant_option(CLI::App* command, std::string& variant);
+// --copy-instances (SceneChoice::copy_instances).
+void add_copy_instances_option(CLI::App* command, bool& copy_instances);
 
 } // namespace pathcl::cli

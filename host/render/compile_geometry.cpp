@@ -1,29 +1,180 @@
 // Geometry for the device: the BVH over the scene's triangles, the triangles in its leaf
 // order (positions for intersection, normals and material for shading), and the
 // optional per-vertex attributes in the same order.
+//
+// With instanced meshes (FEATURE_INSTANCES) the BVH has two levels, in one node array: the
+// top-level tree first (node 0 its root), over the instances' render-space boxes, its
+// leaves naming Instance records; then one tree per mesh over its triangles in its own
+// space, the triangles drawn once making one more tree, drawn by an identity instance.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
+#include "common/error.h"
 #include "render/compile_scene.h"
 #include "scene/alpha_cutouts.h"
 
 namespace pathcl {
+namespace {
+
+BvhBuildInput triangle_boxes(const Scene& scene, std::size_t first, std::size_t count)
+{
+    BvhBuildInput input;
+    input.box_min.resize(count);
+    input.box_max.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const SceneTriangle& t = scene.triangles[first + i];
+        input.box_min[i] = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
+        input.box_max[i] = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
+    }
+    return input;
+}
+
+// Rows of an affine map for the device (types.h Instance).
+void affine_rows(const glm::dmat4& m, pcl_float4 rows[3])
+{
+    for (int r = 0; r < 3; ++r)
+        rows[r] = {static_cast<float>(m[0][r]), static_cast<float>(m[1][r]), static_cast<float>(m[2][r]),
+                   static_cast<float>(m[3][r])};
+}
+
+// The two-level BVH; returns the stored triangles in leaf order (each tree's in turn).
+std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& out)
+{
+    // The trees: triangles drawn once (if any, or if nothing else), then each mesh.
+    struct Tree {
+        std::size_t first, count;
+        Bvh bvh;
+        glm::dvec3 lo, hi; // box of its triangles
+        int root = 0;      // in the node array
+        std::size_t leaf_base = 0;
+    };
+    std::vector<Tree> trees;
+    const std::size_t drawn_once = scene.render_space_triangles();
+    const bool world_tree = drawn_once > 0 || scene.meshes.empty();
+    if (world_tree)
+        trees.push_back(Tree{0, drawn_once, {}, {}, {}});
+    for (const SceneMesh& m : scene.meshes) {
+        trees.push_back(Tree{m.first, m.count, {}, {}, {}});
+        // Every emissive triangle is a light with a render-space record (compile_lights):
+        // the importer copies emissive meshes instead of instancing them.
+        for (std::size_t i = m.first; i < m.first + m.count; ++i)
+            if (scene.materials[static_cast<std::size_t>(scene.triangles[i].material)].emits())
+                throw std::logic_error("compile_geometry: an instanced mesh emits light");
+    }
+    for (Tree& t : trees) {
+        t.bvh = build_bvh(triangle_boxes(scene, t.first, t.count));
+        t.lo = glm::dvec3(INFINITY);
+        t.hi = glm::dvec3(-INFINITY);
+        for (std::size_t i = t.first; i < t.first + t.count; ++i)
+            for (const glm::vec3& v : scene.triangles[i].v) {
+                t.lo = glm::min(t.lo, glm::dvec3(v));
+                t.hi = glm::max(t.hi, glm::dvec3(v));
+            }
+    }
+    // The drawings: (tree, map to render space); the identity first.
+    struct Drawing {
+        std::size_t tree;
+        glm::dmat4 to_render;
+    };
+    std::vector<Drawing> drawings;
+    if (world_tree)
+        drawings.push_back(Drawing{0, glm::dmat4(1.0)});
+    for (const SceneInstance& i : scene.instances)
+        drawings.push_back(Drawing{i.mesh + (world_tree ? 1u : 0u), i.to_render});
+    // Their render-space boxes, widened so that a ray mapped into a mesh's space with
+    // float rounding cannot hit a triangle outside its instance's box: by 2^-18 of the
+    // scene's extent from the render-space origin, some ten times that rounding.
+    BvhBuildInput top;
+    top.box_min.resize(drawings.size());
+    top.box_max.resize(drawings.size());
+    double extent = 0.0;
+    for (std::size_t d = 0; d < drawings.size(); ++d) {
+        const Tree& t = trees[drawings[d].tree];
+        glm::dvec3 lo(INFINITY), hi(-INFINITY);
+        if (t.count > 0)
+            for (int corner = 0; corner < 8; ++corner) {
+                glm::dvec3 c((corner & 1) ? t.hi.x : t.lo.x, (corner & 2) ? t.hi.y : t.lo.y,
+                             (corner & 4) ? t.hi.z : t.lo.z);
+                glm::dvec3 p(drawings[d].to_render * glm::dvec4(c, 1.0));
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+        else
+            lo = hi = glm::dvec3(0.0);
+        extent = std::max(
+            {extent, std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+        top.box_min[d] = glm::vec3(lo);
+        top.box_max[d] = glm::vec3(hi);
+    }
+    const float pad = static_cast<float>(std::ldexp(extent, -18));
+    for (std::size_t d = 0; d < drawings.size(); ++d)
+        if (drawings[d].to_render != glm::dmat4(1.0)) {
+            top.box_min[d] -= glm::vec3(pad);
+            top.box_max[d] += glm::vec3(pad);
+        }
+    Bvh top_bvh = build_bvh(top);
+
+    // One node array: the top level, then each tree, indices moved by where it lands.
+    SceneArrays& a = out.arrays;
+    a.nodes = top_bvh.nodes;
+    std::vector<std::uint32_t> order;
+    int deepest = 0;
+    for (Tree& t : trees) {
+        t.root = static_cast<int>(a.nodes.size());
+        t.leaf_base = order.size();
+        for (BvhNode node : t.bvh.nodes) {
+            std::int32_t* index[4] = {&node.index.x, &node.index.y, &node.index.z, &node.index.w};
+            const std::int32_t count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
+            for (int k = 0; k < 4; ++k)
+                if (*index[k] >= 0)
+                    *index[k] += count[k] == 0 ? t.root : static_cast<std::int32_t>(t.leaf_base);
+            a.nodes.push_back(node);
+        }
+        for (std::uint32_t i : t.bvh.triangle_order)
+            order.push_back(static_cast<std::uint32_t>(t.first + i));
+        deepest = std::max(deepest, t.bvh.stack_needed);
+    }
+    // The traversal's stack holds the top level's entries, a leaf's instances, the return
+    // mark and one tree's entries (+ 1: a node's children are all pushed before one pops).
+    const int needed = top_bvh.stack_needed + kBvhMaxLeafSize + 1 + deepest + 1;
+    if (needed > BVH_INSTANCED_STACK_SIZE)
+        throw Error("the scene's two-level BVH needs a traversal stack of " + std::to_string(needed) +
+                    " entries, more than the kernels' " + std::to_string(BVH_INSTANCED_STACK_SIZE));
+    a.instances.resize(drawings.size());
+    for (std::size_t leaf = 0; leaf < drawings.size(); ++leaf) {
+        const Drawing& d = drawings[top_bvh.triangle_order[leaf]];
+        Instance& inst = a.instances[leaf];
+        inst = Instance{};
+        affine_rows(glm::inverse(d.to_render), inst.to_object);
+        affine_rows(d.to_render, inst.to_render);
+        inst.root = trees[d.tree].root;
+        inst.flags = (d.to_render == glm::dmat4(1.0) ? INSTANCE_IDENTITY : 0) |
+                     (glm::determinant(glm::dmat3(d.to_render)) < 0.0 ? INSTANCE_MIRRORED : 0);
+    }
+    out.bvh = std::move(top_bvh);
+    out.bvh.nodes.clear();
+    return order;
+}
+
+} // namespace
 
 std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& out)
 {
     auto start = std::chrono::steady_clock::now();
     const std::size_t n = scene.triangles.size();
-    BvhBuildInput input;
-    input.box_min.resize(n);
-    input.box_max.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const SceneTriangle& t = scene.triangles[i];
-        input.box_min[i] = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
-        input.box_max[i] = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
-    }
-    out.bvh = build_bvh(input);
-    out.bvh_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     SceneArrays& a = out.arrays;
-    a.nodes = std::move(out.bvh.nodes);
+    if (out.features.has(FEATURE_INSTANCES)) {
+        out.bvh.triangle_order = build_two_levels(scene, out);
+    } else {
+        if (!scene.instances.empty())
+            throw std::logic_error("compile_geometry: a scene with instances needs FEATURE_INSTANCES");
+        out.bvh = build_bvh(triangle_boxes(scene, 0, n));
+        a.nodes = std::move(out.bvh.nodes);
+    }
+    out.bvh_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<std::uint32_t>& order = out.bvh.triangle_order;
 
     a.triangles.resize(n);

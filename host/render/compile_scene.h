@@ -1,6 +1,7 @@
 // The scene compiled for the device: every array the kernels read (render/device_arrays.h),
 // built by small named steps, one concept per file (LuxCore's compile*.cpp):
-//   compile_geometry.cpp   BVH, triangles in leaf order with their shading data, tangents, colours
+//   compile_geometry.cpp   BVH (two levels with instances), triangles in leaf order with their
+//                          shading data, tangents, colours
 //   compile_materials.cpp  Material records
 //   compile_textures.cpp   texel buffer, images, views, texture-coordinate sets
 //   compile_lights.cpp     Light records and their powers (light_distribution.h turns the
@@ -30,7 +31,9 @@ struct CompiledScene {
     // lights, and the environment last (environment_light; -1 if none).
     std::size_t sphere_count = 0;
     int environment_light = -1;
-    Bvh bvh; // depth and leaf figures (its nodes moved into arrays.nodes)
+    // Depth and leaf figures (its nodes moved into arrays.nodes; with instances, the
+    // top-level tree's) and triangle_order: the stored triangle at each leaf position.
+    Bvh bvh;
     double bvh_build_seconds = 0.0;
 
     std::size_t texel_bytes() const { return arrays.texels.size() * sizeof(pcl_uint); }

@@ -43,6 +43,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     }
     set(FEATURE_ENVIRONMENT, scene.environment.present);
     set(FEATURE_THIN_LENS, scene.camera.aperture > 0.0);
+    set(FEATURE_INSTANCES, !scene.instances.empty());
     if (options.specialization == Specialization::All)
         f.mask |= FEATURE_ALL & ~FEATURE_SINGLE_SCATTERING; // a model option, not a scene feature
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
@@ -76,10 +77,11 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "volume-absorption",
                                         "schlick-layer",
                                         "unlit",
-                                        "clearcoat"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 18 && FEATURE_ALL == (1u << 18) - 1u);
+                                        "clearcoat",
+                                        "instances"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 19 && FEATURE_ALL == (1u << 19) - 1u);
     std::vector<std::string> out;
-    for (std::uint32_t b = 0; b < 18; ++b)
+    for (std::uint32_t b = 0; b < sizeof(names) / sizeof(names[0]); ++b)
         if (mask & (1u << b))
             out.push_back(names[b]);
     return out;

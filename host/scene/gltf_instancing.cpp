@@ -16,11 +16,14 @@ namespace pathcl {
 
 std::vector<glm::dmat4> instance_transforms(const tinygltf::Model& model, const tinygltf::Node& node,
                                             const glm::dmat4& node_world, bool quantized, const std::string& source,
-                                            const std::string& what)
+                                            const std::string& what,
+                                            const std::function<void(std::size_t)>& check_count)
 {
     auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
-    if (ext == node.extensions.end())
+    if (ext == node.extensions.end()) {
+        check_count(1);
         return {node_world};
+    }
     const std::string at = what + " EXT_mesh_gpu_instancing";
     const tinygltf::Value& attributes = ext->second.Get("attributes"); // tinygltf: {} is no object
     auto none = [&] { return Error(source + ": " + at + ": has none of TRANSLATION, ROTATION and SCALE"); };
@@ -51,6 +54,7 @@ std::vector<glm::dmat4> instance_transforms(const tinygltf::Model& model, const 
     std::optional<AccessorReader> scale = reader("SCALE", 3, false);
     if (!count)
         throw none();
+    check_count(*count);
     std::vector<glm::dmat4> out(*count);
     for (std::size_t i = 0; i < *count; ++i) {
         glm::dmat4 m(1.0);

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <set>
+#include <utility>
 
 #include <unistd.h>
 
@@ -47,6 +49,9 @@ constexpr std::size_t kMaxGltfFileBytes = 0xffffffffu;
 // 50 MB file included; normals, texture coordinates and tangents add to it). The limit
 // counts 300, so it refuses only scenes that cannot fit.
 constexpr std::uint64_t kBytesPerTriangle = 300;
+// What an instance of a stored mesh costs: its transform as imported (twice: pending and
+// scene), its device record, its top-level BVH share.
+constexpr std::uint64_t kBytesPerInstance = 600;
 
 std::uint64_t physical_memory_bytes()
 {
@@ -154,6 +159,7 @@ struct Importer {
 
         scene.environment = import_environment(gltf_scene.extras, base_dir, source);
         bool have_camera = import_nodes(gltf_scene.nodes);
+        import_drawings();
         move_to_render_space(geometry, have_camera, scene);
         scene.images = textures.take_images();
         if (scene.materials.empty())
@@ -176,15 +182,27 @@ struct Importer {
                  " zero-length or NaN normals by the geometric normal");
     }
 
-    // Every node and instance that uses a mesh gets a copy of its triangles (there is no
-    // two-level BVH yet), so a few bytes of file (a node, an instance's translation) can
-    // ask for more triangles than the machine holds. The copies are counted from the
-    // accessors before any is made, and a scene that would not fit in memory is refused.
-    std::uint64_t planned_triangles = 0;
+    // A mesh drawn more than once (by several nodes, or EXT_mesh_gpu_instancing
+    // instances) at the same morph weights is stored once and drawn by instances (a
+    // two-level BVH), unless it emits light (each emissive triangle is a light with its
+    // own render-space record) or the choice asks for copies. A mesh drawn once, and an
+    // emissive one, is copied into render space per drawing.
+    struct Drawing {
+        int mesh;
+        std::vector<double> weights; // the morph weights it is drawn at (the node's, else the mesh's)
+        std::vector<glm::dmat4> transforms;
+        std::string what;
+    };
+    std::vector<Drawing> drawings; // in depth-first node order
 
-    void plan_copies(const tinygltf::Mesh& mesh, std::size_t copies, const std::string& what)
+    // Copies and drawings are counted before any is made: a few hundred bytes of glTF
+    // (a node, an instance's translation) can ask for more triangles than the machine
+    // holds, and a scene that would not fit in memory is refused.
+    std::uint64_t planned_triangles = 0, planned_instances = 0;
+
+    static std::uint64_t mesh_triangle_count(const tinygltf::Model& model, const tinygltf::Mesh& mesh)
     {
-        std::uint64_t per_copy = 0;
+        std::uint64_t count = 0;
         for (const tinygltf::Primitive& prim : mesh.primitives) {
             int counted = prim.indices;
             if (counted < 0) {
@@ -195,21 +213,74 @@ struct Importer {
                 continue; // the import names what is wrong
             const std::uint64_t n = model.accessors[static_cast<std::size_t>(counted)].count;
             const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-            per_copy += mode == TINYGLTF_MODE_TRIANGLES ? n / 3
-                        : mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN
-                            ? (n > 2 ? n - 2 : 0)
-                            : 0;
+            count += mode == TINYGLTF_MODE_TRIANGLES                                              ? n / 3
+                     : mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN ? (n > 2 ? n - 2 : 0)
+                                                                                                  : 0;
         }
-        planned_triangles += per_copy * copies;
+        return count;
+    }
+
+    void plan(std::uint64_t triangles, std::uint64_t instances, const std::string& what)
+    {
+        planned_triangles += triangles;
+        planned_instances += instances;
         const std::uint64_t memory = physical_memory_bytes();
-        if (planned_triangles > memory / kBytesPerTriangle)
-            throw Error(source + ": " + what + ": the scene's copies of its meshes would make " +
-                        std::to_string(planned_triangles) + " triangles, about " +
-                        std::to_string(planned_triangles * kBytesPerTriangle >> 30) + " GiB at " +
-                        std::to_string(kBytesPerTriangle) + " bytes each, more than this machine's " +
-                        std::to_string(memory >> 30) +
-                        " GiB (a mesh under several nodes or EXT_mesh_gpu_instancing instances is copied: there "
-                        "is no two-level BVH yet)");
+        const std::uint64_t bytes = planned_triangles * kBytesPerTriangle + planned_instances * kBytesPerInstance;
+        if (planned_triangles > memory / kBytesPerTriangle || planned_instances > memory / kBytesPerInstance ||
+            bytes > memory)
+            throw Error(source + ": " + what + ": the scene would need " + std::to_string(planned_triangles) +
+                        " triangles and " + std::to_string(planned_instances) + " instances, about " +
+                        std::to_string(bytes >> 30) + " GiB at " + std::to_string(kBytesPerTriangle) + " and " +
+                        std::to_string(kBytesPerInstance) + " bytes each, more than this machine's " +
+                        std::to_string(memory >> 30) + " GiB");
+    }
+
+    // Imports every drawing: copies first, in node order, then each instanced mesh once
+    // in its own space with its instances.
+    void import_drawings()
+    {
+        using Key = std::pair<int, std::vector<double>>;
+        std::map<Key, std::uint64_t> uses;
+        for (const Drawing& d : drawings)
+            uses[{d.mesh, d.weights}] += d.transforms.size();
+        std::vector<bool> shared(drawings.size(), false);
+        std::set<Key> planned;
+        for (std::size_t i = 0; i < drawings.size(); ++i) {
+            const Drawing& d = drawings[i];
+            const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(d.mesh)];
+            const std::uint64_t triangles = mesh_triangle_count(model, mesh);
+            shared[i] = !choice.copy_instances && uses[{d.mesh, d.weights}] > 1 &&
+                        !primitives.mesh_emits(mesh, d.what + " mesh " + std::to_string(d.mesh));
+            // (Every drawing was counted as an instance when its transforms were read.)
+            if (!shared[i])
+                plan(triangles * d.transforms.size(), 0, d.what);
+            else if (planned.insert({d.mesh, d.weights}).second)
+                plan(triangles, 0, d.what);
+        }
+        auto import_mesh = [&](const Drawing& d, const glm::dmat4& transform) {
+            const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(d.mesh)];
+            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+                primitives.import_primitive(
+                    mesh.primitives[p], transform,
+                    d.what + " mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(p), d.weights);
+        };
+        for (std::size_t i = 0; i < drawings.size(); ++i)
+            if (!shared[i])
+                for (const glm::dmat4& transform : drawings[i].transforms)
+                    import_mesh(drawings[i], transform);
+        std::map<Key, std::size_t> mesh_index;
+        for (std::size_t i = 0; i < drawings.size(); ++i) {
+            if (!shared[i])
+                continue;
+            const Drawing& d = drawings[i];
+            auto [it, first] = mesh_index.insert({{d.mesh, d.weights}, geometry.mesh_starts.size()});
+            if (first) {
+                geometry.mesh_starts.push_back(geometry.triangles.size());
+                import_mesh(d, glm::dmat4(1.0));
+            }
+            for (const glm::dmat4& transform : d.transforms)
+                geometry.instances.push_back(PendingInstance{it->second, transform});
+        }
     }
 
     // glTF nodes form disjoint trees: a node has at most one parent and a scene's roots
@@ -272,16 +343,12 @@ struct Importer {
                 if (node.mesh >= static_cast<int>(model.meshes.size()))
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");
                 const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
-                // EXT_mesh_gpu_instancing: one copy of the mesh per instance.
-                std::vector<glm::dmat4> instances =
-                    instance_transforms(model, node, world, primitives.quantized(), source, what);
-                plan_copies(mesh, instances.size(), what);
-                for (const glm::dmat4& instance : instances)
-                    for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
-                        primitives.import_primitive(mesh.primitives[i], instance,
-                                                    what + " mesh " + std::to_string(node.mesh) + " primitive " +
-                                                        std::to_string(i),
-                                                    node.weights.empty() ? mesh.weights : node.weights);
+                // EXT_mesh_gpu_instancing: one drawing of the mesh per instance.
+                auto plan_drawings = [&](std::size_t count) { plan(0, count, what); };
+                drawings.push_back(Drawing{
+                    node.mesh, node.weights.empty() ? mesh.weights : node.weights,
+                    instance_transforms(model, node, world, primitives.quantized(), source, what, plan_drawings),
+                    what});
             }
             auto light_ext = node.extensions.find("KHR_lights_punctual");
             if (light_ext != node.extensions.end() && light_ext->second.Has("light"))

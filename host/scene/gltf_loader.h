@@ -23,6 +23,9 @@ struct SceneChoice {
     // The KHR_materials_variants variant by name (--variant NAME); "" the default
     // materials.
     std::string variant;
+    // Copy a mesh into render space for every node or instance that draws it, instead of
+    // storing it once and drawing instances of it (--copy-instances).
+    bool copy_instances = false;
 };
 
 // Loads a file; throws pathcl::Error("FILE: what is wrong") on any problem, and

@@ -170,6 +170,18 @@ glm::dvec3 PrimitiveImporter::object_normal(const AccessorReader& nr, std::size_
     return morph_.normal.empty() ? v : v + morph_.normal[i];
 }
 
+bool PrimitiveImporter::mesh_emits(const tinygltf::Mesh& mesh, const std::string& what) const
+{
+    for (std::size_t i = 0; i < mesh.primitives.size(); ++i) {
+        int m = variant_material(mesh.primitives[i], variant_, variant_count_, model_.materials.size(),
+                                 source_ + ": " + what + " primitive " + std::to_string(i));
+        if (m >= 0 && static_cast<std::size_t>(m) < materials_.size() &&
+            materials_[static_cast<std::size_t>(m)].emits())
+            return true;
+    }
+    return false;
+}
+
 int PrimitiveImporter::material_for(int gltf_material)
 {
     if (gltf_material >= 0) {

@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 
 namespace tinygltf {
+struct Mesh;
 class Model;
 struct Primitive;
 } // namespace tinygltf
@@ -47,6 +48,10 @@ public:
     // targets are applied at them).
     void import_primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& what,
                           const std::vector<double>& morph_weights = {});
+
+    // Whether a primitive of `mesh` takes an emissive material in the chosen variant;
+    // `what` names the mesh in the error for a bad variant mapping.
+    bool mesh_emits(const tinygltf::Mesh& mesh, const std::string& what) const;
 
     std::size_t skipped_points_lines() const { return skipped_points_lines_; }
     // Whether the file uses KHR_mesh_quantization (integer positions, normals, ...).

@@ -20,8 +20,19 @@ struct PendingTriangle {
     int material = 0;
 };
 
+// A drawing of an instanced mesh: the mesh's index among PendingGeometry::mesh_starts and
+// its world transform.
+struct PendingInstance {
+    std::size_t mesh = 0;
+    glm::dmat4 world{1.0};
+};
+
 struct PendingGeometry {
+    // The triangles drawn once, in world space, then those of each instanced mesh in its
+    // own space: mesh k's start at mesh_starts[k] (ascending; the last runs to the end).
     std::vector<PendingTriangle> triangles;
+    std::vector<std::size_t> mesh_starts;
+    std::vector<PendingInstance> instances;
     // Their optional attributes, in step with `triangles` (see Scene): texcoords[n] for
     // each set n some texture reads (texcoord_used[n]); tangents (world space, not yet
     // normalized) when some material has a normal texture (tangents_used); colors from

@@ -4,26 +4,60 @@
 #include "scene/render_space.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace pathcl {
 namespace {
 
+// The end of mesh k's triangles among the pending ones.
+std::size_t mesh_end(const PendingGeometry& geometry, std::size_t k)
+{
+    return k + 1 < geometry.mesh_starts.size() ? geometry.mesh_starts[k + 1] : geometry.triangles.size();
+}
+
 // The camera position when the file gives the camera, else the centre of the geometry's
-// bounds (the world origin for an empty scene).
+// bounds, instances included (the world origin for an empty scene).
 glm::dvec3 render_origin(const PendingGeometry& geometry, bool have_camera, const SceneCamera& camera)
 {
     glm::dvec3 origin(0.0);
     if (have_camera) {
         origin = camera.position;
     } else if (!geometry.triangles.empty()) {
-        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-        for (const PendingTriangle& t : geometry.triangles)
-            for (const glm::dvec3& v : t.v) {
+        const double inf = std::numeric_limits<double>::infinity();
+        glm::dvec3 lo(inf), hi(-inf);
+        const std::size_t world_end =
+            geometry.mesh_starts.empty() ? geometry.triangles.size() : geometry.mesh_starts[0];
+        for (std::size_t t = 0; t < world_end; ++t)
+            for (const glm::dvec3& v : geometry.triangles[t].v) {
                 lo = glm::min(lo, v);
                 hi = glm::max(hi, v);
             }
-        origin = 0.5 * (lo + hi);
+        std::vector<std::pair<glm::dvec3, glm::dvec3>> mesh_box(geometry.mesh_starts.size(),
+                                                                {glm::dvec3(inf), glm::dvec3(-inf)});
+        for (std::size_t k = 0; k < geometry.mesh_starts.size(); ++k)
+            for (std::size_t t = geometry.mesh_starts[k]; t < mesh_end(geometry, k); ++t)
+                for (const glm::dvec3& v : geometry.triangles[t].v) {
+                    mesh_box[k].first = glm::min(mesh_box[k].first, v);
+                    mesh_box[k].second = glm::max(mesh_box[k].second, v);
+                }
+        for (const PendingInstance& instance : geometry.instances) {
+            const auto& [mlo, mhi] = mesh_box[instance.mesh];
+            if (!(mlo.x <= mhi.x))
+                continue;
+            for (int corner = 0; corner < 8; ++corner) {
+                glm::dvec3 c((corner & 1) ? mhi.x : mlo.x, (corner & 2) ? mhi.y : mlo.y, (corner & 4) ? mhi.z : mlo.z);
+                glm::dvec3 p(instance.world * glm::dvec4(c, 1.0));
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+        }
+        if (lo.x <= hi.x)
+            origin = 0.5 * (lo + hi);
     }
     return origin;
 }
@@ -35,12 +69,20 @@ void finish_triangles(PendingGeometry& geometry, const glm::dvec3& origin, Scene
     scene.texcoords.resize(geometry.texcoord_used.size());
     if (!geometry.colors.empty())
         geometry.colors.resize(geometry.triangles.size(), kWhiteTriangleColor);
+    // Each instanced mesh keeps its own space; its triangles follow those drawn once.
+    std::size_t next_mesh = 0;
+    bool in_mesh = false;
     for (std::size_t index = 0; index < geometry.triangles.size(); ++index) {
+        while (next_mesh < geometry.mesh_starts.size() && geometry.mesh_starts[next_mesh] == index) {
+            scene.meshes.push_back(SceneMesh{scene.triangles.size(), 0});
+            ++next_mesh;
+            in_mesh = true;
+        }
         const PendingTriangle& pt = geometry.triangles[index];
         SceneTriangle tri;
         tri.material = pt.material;
         for (int k = 0; k < 3; ++k)
-            tri.v[k] = glm::vec3(world_to_render(origin, pt.v[k]));
+            tri.v[k] = glm::vec3(in_mesh ? pt.v[k] : world_to_render(origin, pt.v[k]));
         // Degenerate (zero area in the float positions the device will see): drop.
         glm::vec3 c = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
         float len = glm::length(c);
@@ -61,6 +103,8 @@ void finish_triangles(PendingGeometry& geometry, const glm::dvec3& origin, Scene
             tri.n[k] = sn;
         }
         scene.triangles.push_back(tri);
+        if (in_mesh)
+            ++scene.meshes.back().count;
         for (std::size_t set = 0; set < geometry.texcoord_used.size(); ++set)
             if (geometry.texcoord_used[set])
                 scene.texcoords[set].push_back(geometry.texcoords[set][index]);
@@ -76,7 +120,27 @@ void finish_triangles(PendingGeometry& geometry, const glm::dvec3& origin, Scene
         if (!geometry.colors.empty())
             scene.colors.push_back(geometry.colors[index]);
     }
+    while (next_mesh++ < geometry.mesh_starts.size()) // meshes at the very end with no triangles
+        scene.meshes.push_back(SceneMesh{scene.triangles.size(), 0});
     geometry.triangles.clear();
+}
+
+// The instances in render space, those of meshes left without triangles (all degenerate)
+// dropped, and such meshes with them.
+void finish_instances(const PendingGeometry& geometry, const glm::dvec3& origin, Scene& scene)
+{
+    std::vector<std::uint32_t> renumbered(scene.meshes.size(), UINT32_MAX);
+    std::vector<SceneMesh> kept;
+    for (std::size_t k = 0; k < scene.meshes.size(); ++k)
+        if (scene.meshes[k].count > 0) {
+            renumbered[k] = static_cast<std::uint32_t>(kept.size());
+            kept.push_back(scene.meshes[k]);
+        }
+    scene.meshes = std::move(kept);
+    const glm::dmat4 to_render = glm::translate(glm::dmat4(1.0), -origin);
+    for (const PendingInstance& instance : geometry.instances)
+        if (renumbered[instance.mesh] != UINT32_MAX)
+            scene.instances.push_back(SceneInstance{renumbered[instance.mesh], to_render * instance.world});
 }
 
 } // namespace
@@ -85,6 +149,7 @@ void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& sc
 {
     const glm::dvec3 origin = render_origin(geometry, have_camera, scene.camera);
     finish_triangles(geometry, origin, scene);
+    finish_instances(geometry, origin, scene);
     for (SceneLight& l : scene.lights)
         l.position = world_to_render(origin, l.position);
     scene.render_origin = origin;

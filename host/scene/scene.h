@@ -153,8 +153,24 @@ using TriangleUv = std::array<glm::vec2, 3>;
 using TriangleTangent = std::array<glm::vec4, 3>; // xyz unit world tangent, w handedness (+-1)
 using TriangleColor = std::array<glm::vec4, 3>;   // COLOR_0 rgba (alpha 1 for VEC3)
 
+// A mesh drawn more than once, stored once (a two-level BVH): triangles [first, first +
+// count) of Scene::triangles, in the mesh's own space.
+struct SceneMesh {
+    std::size_t first = 0, count = 0;
+};
+
+// One drawing of a SceneMesh: x_render = to_render * x_mesh.
+struct SceneInstance {
+    std::uint32_t mesh = 0;
+    glm::dmat4 to_render{1.0};
+};
+
 struct Scene {
+    // First the triangles drawn once, in render space (render_space_triangles() of them),
+    // then those of each instanced mesh, in its own space.
     std::vector<SceneTriangle> triangles;
+    std::vector<SceneMesh> meshes;
+    std::vector<SceneInstance> instances;
     std::vector<SceneMaterial> materials; // never empty: index 0 may be the default
     std::vector<SceneImage> images;       // those some material's texture reads
     // Optional per-vertex attributes, parallel to `triangles`; each empty unless used:
@@ -177,10 +193,20 @@ struct Scene {
     // The files it was read from (the glTF file, its buffers and images; the environment
     // map is environment.path): no output may replace one of them.
     std::vector<std::string> input_files;
+
+    std::size_t render_space_triangles() const { return meshes.empty() ? triangles.size() : meshes.front().first; }
+    // Triangles drawn: those in render space and each instance's mesh.
+    std::size_t drawn_triangles() const;
 };
 
-// Axis-aligned bounds of all triangles (min > max when the scene is empty).
+// Axis-aligned bounds of all triangles drawn, instances included (min > max when the
+// scene is empty).
 void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
+
+// Every triangle drawn, in render space: those drawn once, then each instance's mesh
+// mapped by it (normals through the inverse transpose, re-wound where the map mirrors so
+// that counter-clockwise stays the front): the copies --copy-instances would make.
+std::vector<SceneTriangle> drawn_triangle_list(const Scene& scene);
 
 // A camera that sees the whole scene: looking along -Z at the bounds' centre, far enough
 // back that the bounding sphere fits the vertical field of view.

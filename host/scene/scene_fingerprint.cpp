@@ -47,6 +47,18 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(n);
         f.add(t.material);
     }
+    if (!scene.instances.empty()) { // (absent from a scene without: its fingerprint is unchanged)
+        f.add(scene.meshes.size());
+        for (const SceneMesh& m : scene.meshes) {
+            f.add(m.first);
+            f.add(m.count);
+        }
+        f.add(scene.instances.size());
+        for (const SceneInstance& i : scene.instances) {
+            f.add(i.mesh);
+            f.bytes(&i.to_render, sizeof i.to_render);
+        }
+    }
     f.add(scene.materials.size());
     for (const SceneMaterial& m : scene.materials) {
         f.add(m.base_color);

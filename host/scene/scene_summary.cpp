@@ -8,7 +8,10 @@ namespace pathcl {
 SceneSummary summarize_scene(const Scene& scene)
 {
     SceneSummary s;
-    s.triangles = scene.triangles.size();
+    s.triangles = scene.drawn_triangles();
+    s.stored_triangles = scene.triangles.size();
+    s.instances = scene.instances.size();
+    s.instanced_meshes = scene.meshes.size();
     s.dropped_degenerate = scene.dropped_degenerate;
     std::vector<bool> used(scene.materials.size(), false);
     for (const SceneTriangle& t : scene.triangles) {

@@ -11,7 +11,9 @@
 namespace pathcl {
 
 struct SceneSummary {
-    std::size_t triangles = 0, dropped_degenerate = 0;
+    std::size_t triangles = 0, dropped_degenerate = 0; // triangles drawn, instances included
+    // Meshes stored once and drawn by instances, with their triangles (stored once each).
+    std::size_t instances = 0, instanced_meshes = 0, stored_triangles = 0;
     std::size_t emissive_triangles = 0; // area lights
     std::size_t point_lights = 0, spot_lights = 0, rect_spot_lights = 0, directional_lights = 0, sphere_lights = 0;
     // Materials some triangle uses, by lobe (a material may count under several):

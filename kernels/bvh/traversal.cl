@@ -1,8 +1,16 @@
 /* Closest-hit and any-hit (visibility) traversal of the four-wide BVH: one float4 slab
  * test for the four children of a node, children entered nearest first.
  *
+ * Two-level BVH (PATHCL_HAS_INSTANCES): node 0 is the root of a top-level tree whose
+ * leaves name instances (types.h Instance); each instance's mesh has its own tree in the
+ * same node array, over its triangles in its own space. A leaf's instances go on the
+ * stack; entering one maps the ray into the instance's space (the direction is not
+ * renormalized, so t is the same along both and hits compare across instances) and puts a
+ * return mark under its tree's entries, which maps the ray back when it comes up.
+ *
  * Floating-point contraction is off here as in triangle_intersect.cl: the box test's
  * rounding allowance is derived for separately rounded operations. */
+#include "bvh/instance.cl"
 #include "bvh/triangle_intersect.cl"
 #include "features.h"
 #include "kernel_data.cl"
@@ -16,7 +24,27 @@ typedef struct {
     float t;
     float b1, b2; /* barycentric weights of v1 and v2 */
     int triangle; /* -1: no hit */
+#ifdef PATHCL_HAS_INSTANCES
+    int instance; /* the instance whose mesh holds the triangle */
+#endif
 } Hit;
+
+#ifdef PATHCL_HAS_INSTANCES
+/* Stack entries besides nodes (count 0) and leaves (count > 0). */
+#define TRAVERSAL_ENTER_INSTANCE (-1) /* (instance, -1): traverse its mesh in its space */
+#define TRAVERSAL_LEAVE_INSTANCE (-2) /* back in render space, at the top level */
+#define TRAVERSAL_STACK_SIZE BVH_INSTANCED_STACK_SIZE
+
+/* The ray in an instance's space; the same ray where the instance is the identity. */
+static inline RayTraversal instance_ray(const Instance* inst, const RayTraversal* world, float3 origin, float3 dir)
+{
+    if (inst->flags & INSTANCE_IDENTITY)
+        return *world;
+    return ray_traversal_setup(affine_point(inst->to_object, origin), affine_direction(inst->to_object, dir));
+}
+#else
+#define TRAVERSAL_STACK_SIZE BVH_STACK_SIZE
+#endif
 
 /* Slab tests against the four child boxes of a node at once (float4 lanes), with the far
  * distance enlarged by 1 + 2 gamma(3) so that rounding never culls a box the ray touches
@@ -52,12 +80,39 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
     hit.b2 = 0.0f;
     hit.triangle = -1;
 
-    int2 stack[BVH_STACK_SIZE];
-    float stack_entry[BVH_STACK_SIZE];
+    int2 stack[TRAVERSAL_STACK_SIZE];
+    float stack_entry[TRAVERSAL_STACK_SIZE];
     int sp = 0;
     int2 cur = (int2)(0, 0); /* (index, count); count 0: inner node; the root is inner */
+#ifdef PATHCL_HAS_INSTANCES
+    hit.instance = -1;
+    const RayTraversal world = r;
+    int instance = -1;      /* whose mesh is being traversed; -1: the top level */
+    float cur_entry = 0.0f; /* where the ray enters the current entry's box */
+#endif
     for (;;) {
-        if (cur.y > 0) {
+#ifdef PATHCL_HAS_INSTANCES
+        if (cur.y == TRAVERSAL_ENTER_INSTANCE) {
+            Instance inst = kd->instances[cur.x];
+            stack[sp] = (int2)(0, TRAVERSAL_LEAVE_INSTANCE);
+            stack_entry[sp++] = -INFINITY; /* never skipped */
+            r = instance_ray(&inst, &world, origin, dir);
+            instance = cur.x;
+            cur = (int2)(inst.root, 0);
+            continue;
+        }
+        if (cur.y == TRAVERSAL_LEAVE_INSTANCE) {
+            r = world;
+            instance = -1;
+        } else if (cur.y > 0 && instance < 0) {
+            /* A top-level leaf: its instances, entered in order. */
+            for (int i = cur.x + cur.y - 1; i >= cur.x; --i) {
+                stack[sp] = (int2)(i, TRAVERSAL_ENTER_INSTANCE);
+                stack_entry[sp++] = cur_entry;
+            }
+        } else
+#endif
+            if (cur.y > 0) {
             for (int i = cur.x; i < cur.x + cur.y; ++i) {
                 float t, b1, b2;
                 if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
@@ -69,6 +124,9 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
                     hit.b1 = b1;
                     hit.b2 = b2;
                     hit.triangle = i;
+#ifdef PATHCL_HAS_INSTANCES
+                    hit.instance = instance;
+#endif
                 }
             }
         } else {
@@ -102,6 +160,9 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
             --sp;
         } while (stack_entry[sp] > hit.t * (1.0f + 2.0f * FLOAT_GAMMA(3)));
         cur = stack[sp];
+#ifdef PATHCL_HAS_INSTANCES
+        cur_entry = stack_entry[sp];
+#endif
     }
 }
 
@@ -115,11 +176,32 @@ static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 d
     __global const Triangle* triangles = kd->triangles;
     RayTraversal r = ray_traversal_setup(origin, dir);
     float visibility = 1.0f;
-    int2 stack[BVH_STACK_SIZE];
+    int2 stack[TRAVERSAL_STACK_SIZE];
     int sp = 0;
     int2 cur = (int2)(0, 0);
+#ifdef PATHCL_HAS_INSTANCES
+    const RayTraversal world = r;
+    bool top_level = true;
+#endif
     for (;;) {
-        if (cur.y > 0) {
+#ifdef PATHCL_HAS_INSTANCES
+        if (cur.y == TRAVERSAL_ENTER_INSTANCE) {
+            Instance inst = kd->instances[cur.x];
+            stack[sp++] = (int2)(0, TRAVERSAL_LEAVE_INSTANCE);
+            r = instance_ray(&inst, &world, origin, dir);
+            top_level = false;
+            cur = (int2)(inst.root, 0);
+            continue;
+        }
+        if (cur.y == TRAVERSAL_LEAVE_INSTANCE) {
+            r = world;
+            top_level = true;
+        } else if (cur.y > 0 && top_level) {
+            for (int i = cur.x; i < cur.x + cur.y; ++i)
+                stack[sp++] = (int2)(i, TRAVERSAL_ENTER_INSTANCE);
+        } else
+#endif
+            if (cur.y > 0) {
             for (int i = cur.x; i < cur.x + cur.y; ++i) {
                 float t, b1, b2;
                 if (ray_triangle(&r, &triangles[i], t_max, &t, &b1, &b2)) {

@@ -2,8 +2,10 @@
  * shading normals turned to the side the ray came from, and the point lifted onto the
  * smooth surface the vertex normals describe (Hanika 2021), from where reflected rays
  * leave so that coarse meshes with smooth normals have no dark terminator band. */
+#include "bvh/instance.cl"
 #include "bvh/traversal.cl"
 #include "features.h"
+#include "kernel_data.cl"
 #include "types.h"
 #include "util/math.cl"
 
@@ -34,20 +36,51 @@ static inline float3 barycentric_point(float3 v0, float3 v1, float3 v2, float b1
     return p0 + p1 + p2;
 }
 
-static inline SurfacePoint surface_point(__global const Triangle* triangles, __global const TriangleShading* shading,
-                                         Hit hit, float3 wo)
+static inline SurfacePoint surface_point(const KernelData* kd, Hit hit, float3 wo)
 {
     SurfacePoint sp;
-    Triangle tri = triangles[hit.triangle];
-    TriangleShading sh = shading[hit.triangle];
+    Triangle tri = kd->triangles[hit.triangle];
+    TriangleShading sh = kd->shading[hit.triangle];
     float3 v0 = tri.v0.xyz, v1 = tri.v1.xyz, v2 = tri.v2.xyz;
+    float3 n0 = sh.n0.xyz, n1 = sh.n1.xyz, n2 = sh.n2.xyz;
+#ifdef PATHCL_HAS_INSTANCES
+    /* An instance's triangle is taken to render space vertex by vertex; the point's error
+     * bound grows by the vertices' rounding and by that of the ray's origin mapped into
+     * the instance's space, so that a ray spawned from it starts clear of the surface in
+     * both spaces. */
+    Instance inst = kd->instances[hit.instance];
+    bool placed = !(inst.flags & INSTANCE_IDENTITY);
+    float3 placement_error = (float3)(0.0f);
+    if (placed) {
+        placement_error = fmax(affine_point_error(inst.to_render, v0),
+                               fmax(affine_point_error(inst.to_render, v1), affine_point_error(inst.to_render, v2)));
+        v0 = affine_point(inst.to_render, v0);
+        v1 = affine_point(inst.to_render, v1);
+        v2 = affine_point(inst.to_render, v2);
+        n0 = normalize(instance_normal(&inst, n0));
+        n1 = normalize(instance_normal(&inst, n1));
+        n2 = normalize(instance_normal(&inst, n2));
+    }
+#endif
     sp.p = barycentric_point(v0, v1, v2, hit.b1, hit.b2, &sp.p_error);
+#ifdef PATHCL_HAS_INSTANCES
+    if (placed) {
+        float3 back = affine_point_error(inst.to_object, sp.p); /* the spawned origin's, in mesh space */
+        sp.p_error +=
+            placement_error + (float3)(dot(fabs(inst.to_render[0].xyz), back), dot(fabs(inst.to_render[1].xyz), back),
+                                       dot(fabs(inst.to_render[2].xyz), back));
+    }
+#endif
     float3 c = cross(v1 - v0, v2 - v0);
+#ifdef PATHCL_HAS_INSTANCES
+    if (inst.flags & INSTANCE_MIRRORED)
+        c = -c; /* the front stays where the mesh's own counter-clockwise side maps */
+#endif
     float len = length(c);
     sp.area = 0.5f * len;
     float3 ng = c / len;
     float b0 = 1.0f - hit.b1 - hit.b2;
-    float3 ns = b0 * sh.n0.xyz + hit.b1 * sh.n1.xyz + hit.b2 * sh.n2.xyz;
+    float3 ns = b0 * n0 + hit.b1 * n1 + hit.b2 * n2;
     float ns_len = length(ns);
     ns = (ns_len > 0.0f && isfinite(ns_len)) ? ns / ns_len : ng;
     if (dot(ns, ng) < 0.0f)
@@ -67,7 +100,7 @@ static inline SurfacePoint surface_point(__global const Triangle* triangles, __g
      * by the barycentrics. Zero on flat triangles and wherever the mesh is concave. */
     sp.p_smooth = sp.p;
     sp.lifted = false;
-    float3 n0 = sh.n0.xyz, n1 = sh.n1.xyz, n2 = sh.n2.xyz, front = c / len;
+    float3 front = c / len;
     if (any(n0 != n1) || any(n0 != n2) || any(n0 != front)) {
         n0 = dot(n0, front) < 0.0f ? -n0 : n0; /* vertex normals on the front side */
         n1 = dot(n1, front) < 0.0f ? -n1 : n1;

@@ -21,7 +21,7 @@ typedef struct {
 static inline ShadingPoint shade_surface_setup(const KernelData* kd, Hit hit, float3 wo)
 {
     ShadingPoint s;
-    s.sp = surface_point(kd->triangles, kd->shading, hit, wo);
+    s.sp = surface_point(kd, hit, wo);
     s.material = kd->materials[s.sp.material];
 #ifdef PATHCL_HAS_MATERIAL_INPUTS
     apply_material_inputs(&s.material, &s.sp, wo, hit, kd);

@@ -15,6 +15,25 @@
 
 #ifdef PATHCL_HAS_MATERIAL_INPUTS
 
+#ifdef PATHCL_HAS_NORMAL_MAPS
+/* The hit triangle's vertex tangents in render space: an instance's are mapped as
+ * directions (and renormalized), their handedness flipped by a mirroring map. */
+static inline TriangleTangents hit_tangents(const KernelData* kd, Hit hit)
+{
+    TriangleTangents t = kd->tangents[hit.triangle];
+#ifdef PATHCL_HAS_INSTANCES
+    Instance inst = kd->instances[hit.instance];
+    if (!(inst.flags & INSTANCE_IDENTITY)) {
+        float w = (inst.flags & INSTANCE_MIRRORED) ? -1.0f : 1.0f;
+        t.t0 = (float4)(normalize(affine_direction(inst.to_render, t.t0.xyz)), w * t.t0.w);
+        t.t1 = (float4)(normalize(affine_direction(inst.to_render, t.t1.xyz)), w * t.t1.w);
+        t.t2 = (float4)(normalize(affine_direction(inst.to_render, t.t2.xyz)), w * t.t2.w);
+    }
+#endif
+    return t;
+}
+#endif
+
 /* Applies the material's textures, the vertex colour and the normal map at a hit: `m` is
  * the hit triangle's material (a private copy), `sp` its surface point, wo the direction
  * back along the ray. */
@@ -64,13 +83,13 @@ static inline void apply_material_inputs(Material* m, SurfacePoint* sp, float3 w
     if (m->textures[TEXTURE_SLOT_CLEARCOAT_NORMAL] != TEXTURE_NONE) {
         float3 texel = texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT_NORMAL], tri, hit.b1, hit.b2).xyz;
         float3 mapped =
-            normal_from_map(side * sp->n_coat, kd->tangents[tri], hit.b1, hit.b2, texel, m->clearcoat_normal_scale);
+            normal_from_map(side * sp->n_coat, hit_tangents(kd, hit), hit.b1, hit.b2, texel, m->clearcoat_normal_scale);
         sp->n_coat = keep_reflection_above_surface(sp->ng, wo, side * mapped);
     }
 #endif
     if (m->textures[TEXTURE_SLOT_NORMAL] != TEXTURE_NONE) {
         float3 texel = texture_at(kd, m->textures[TEXTURE_SLOT_NORMAL], tri, hit.b1, hit.b2).xyz;
-        float3 mapped = normal_from_map(side * sp->ns, kd->tangents[tri], hit.b1, hit.b2, texel, m->normal_scale);
+        float3 mapped = normal_from_map(side * sp->ns, hit_tangents(kd, hit), hit.b1, hit.b2, texel, m->normal_scale);
         sp->ns = keep_reflection_above_surface(sp->ng, wo, side * mapped);
     }
 #endif

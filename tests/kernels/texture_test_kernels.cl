@@ -33,8 +33,11 @@ __kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* h
     hit.b2 = hits[i].y;
     hit.triangle = as_int(hits[i].z);
     hit.t = 1.0f;
+#ifdef PATHCL_HAS_INSTANCES
+    hit.instance = 0; /* a scene without instanced meshes: its one identity instance */
+#endif
     float3 wo = wos[i].xyz;
-    SurfacePoint sp = surface_point(kd.triangles, kd.shading, hit, wo);
+    SurfacePoint sp = surface_point(&kd, hit, wo);
     Material m = kd.materials[sp.material];
     apply_material_inputs(&m, &sp, wo, hit, &kd);
     out_normal[i] = (float4)(sp.ns, dot(sp.ns, sp.ng));

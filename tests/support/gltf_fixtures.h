@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
@@ -22,17 +23,27 @@ namespace pathcl::test {
 // these tests state their expectations in world space.
 inline Scene in_world_space(Scene s)
 {
-    for (SceneTriangle& t : s.triangles)
-        for (glm::vec3& v : t.v)
+    for (std::size_t i = 0; i < s.render_space_triangles(); ++i) // (instanced meshes are in their own space)
+        for (glm::vec3& v : s.triangles[i].v)
             v = glm::vec3(glm::dvec3(v) + s.render_origin);
+    for (SceneInstance& i : s.instances)
+        i.to_render = glm::translate(glm::dmat4(1.0), s.render_origin) * i.to_render;
     s.camera.position += s.render_origin;
     s.render_origin = glm::dvec3(0.0);
     return s;
 }
 
-inline Scene import(const GltfBuilder& b, const std::string& source = "test.gltf")
+inline Scene import(const GltfBuilder& b, const std::string& source = "test.gltf", const SceneChoice& choice = {})
 {
-    return in_world_space(import_gltf(b.model, source));
+    return in_world_space(import_gltf(b.model, source, "", choice));
+}
+
+// The same with every mesh copied per drawing (SceneChoice::copy_instances).
+inline Scene import_copies(const GltfBuilder& b, const std::string& source = "test.gltf")
+{
+    SceneChoice copies;
+    copies.copy_instances = true;
+    return import(b, source, copies);
 }
 
 inline glm::dvec3 d3(const glm::vec3& v)
