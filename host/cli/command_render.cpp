@@ -159,10 +159,13 @@ void print_summary(const RenderRequest& rq, const RenderResult& r)
         spp += " (samples " + rq.sample_range + " of " + std::to_string(rq.options.spp) + ")";
     else if (s.stop == StopReason::Spp && s.spp != rq.options.spp)
         spp += " (rounded up from " + std::to_string(rq.options.spp) + ")";
-    std::printf("%s: %zu triangles, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
+    std::string triangles = std::to_string(s.drawn_triangles) + " triangles";
+    if (s.drawn_triangles != s.triangles)
+        triangles += " (" + std::to_string(s.triangles) + " stored)";
+    std::printf("%s: %s, %zu lights | %s | BVH build %.1f ms | kernel build %.2f s%s | render %.3f s | "
                 "%.3g samples/s | %llu NaN/Inf samples | %s | stopped: %s\n",
-                names.c_str(), s.triangles, s.lights, spp.c_str(), s.bvh_build_seconds * 1e3, s.kernel_build_seconds,
-                s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
+                names.c_str(), triangles.c_str(), s.lights, spp.c_str(), s.bvh_build_seconds * 1e3,
+                s.kernel_build_seconds, s.kernel_from_cache ? " (cached)" : "", s.render_seconds, s.samples_per_second,
                 static_cast<unsigned long long>(s.bad_samples), error_summary(s).c_str(), stop_reason_name(s.stop));
 }
 

@@ -123,6 +123,7 @@ struct Renderer::Impl {
         compiled = compile_scene(scene, kernel_features(scene, opt));
         compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
         setup.triangles = compiled.arrays.triangles.size();
+        setup.drawn_triangles = scene.drawn_triangles();
         setup.lights = compiled.arrays.lights.size();
         setup.bvh_nodes = compiled.arrays.nodes.size();
         setup.bvh_build_seconds = compiled.bvh_build_seconds;

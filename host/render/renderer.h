@@ -26,7 +26,8 @@ namespace pathcl {
 struct CompiledScene;
 
 struct RenderStats {
-    std::size_t triangles = 0, lights = 0, bvh_nodes = 0;
+    std::size_t triangles = 0, lights = 0, bvh_nodes = 0; // triangles stored (each instanced mesh once)
+    std::size_t drawn_triangles = 0;                      // instances' included
     double bvh_build_seconds = 0.0;
     double kernel_build_seconds = 0.0; // summed over devices
     bool kernel_from_cache = false;    // every device's program came from the cache
