@@ -5,7 +5,9 @@
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -52,6 +54,13 @@ constexpr std::uint64_t kBytesPerTriangle = 300;
 // What an instance of a stored mesh costs: its transform as imported (twice: pending and
 // scene), its device record, its top-level BVH share.
 constexpr std::uint64_t kBytesPerInstance = 600;
+
+std::string whole_number(double x)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.0f", x);
+    return text;
+}
 
 std::uint64_t physical_memory_bytes()
 {
@@ -225,14 +234,15 @@ struct Importer {
         planned_triangles += triangles;
         planned_instances += instances;
         const std::uint64_t memory = physical_memory_bytes();
-        const std::uint64_t bytes = planned_triangles * kBytesPerTriangle + planned_instances * kBytesPerInstance;
-        if (planned_triangles > memory / kBytesPerTriangle || planned_instances > memory / kBytesPerInstance ||
-            bytes > memory)
+        // In double: the counts may be far beyond what 64-bit byte counts hold.
+        const double bytes = static_cast<double>(planned_triangles) * kBytesPerTriangle +
+                             static_cast<double>(planned_instances) * kBytesPerInstance;
+        if (bytes > static_cast<double>(memory))
             throw Error(source + ": " + what + ": the scene would need " + std::to_string(planned_triangles) +
                         " triangles and " + std::to_string(planned_instances) + " instances, about " +
-                        std::to_string(bytes >> 30) + " GiB at " + std::to_string(kBytesPerTriangle) + " and " +
-                        std::to_string(kBytesPerInstance) + " bytes each, more than this machine's " +
-                        std::to_string(memory >> 30) + " GiB");
+                        whole_number(std::floor(bytes / 1073741824.0)) + " GiB at " +
+                        std::to_string(kBytesPerTriangle) + " and " + std::to_string(kBytesPerInstance) +
+                        " bytes each, more than this machine's " + std::to_string(memory >> 30) + " GiB");
     }
 
     // Imports every drawing: copies first, in node order, then each instanced mesh once
