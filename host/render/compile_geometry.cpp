@@ -94,15 +94,8 @@ std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& o
     for (std::size_t d = 0; d < drawings.size(); ++d) {
         const Tree& t = trees[drawings[d].tree];
         glm::dvec3 lo(INFINITY), hi(-INFINITY);
-        if (t.count > 0)
-            for (int corner = 0; corner < 8; ++corner) {
-                glm::dvec3 c((corner & 1) ? t.hi.x : t.lo.x, (corner & 2) ? t.hi.y : t.lo.y,
-                             (corner & 4) ? t.hi.z : t.lo.z);
-                glm::dvec3 p(drawings[d].to_render * glm::dvec4(c, 1.0));
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-        else
+        add_mapped_box(drawings[d].to_render, t.lo, t.hi, lo, hi);
+        if (t.count == 0)
             lo = hi = glm::dvec3(0.0);
         extent = std::max(
             {extent, std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});

@@ -45,17 +45,8 @@ glm::dvec3 render_origin(const PendingGeometry& geometry, bool have_camera, cons
                     mesh_box[k].first = glm::min(mesh_box[k].first, v);
                     mesh_box[k].second = glm::max(mesh_box[k].second, v);
                 }
-        for (const PendingInstance& instance : geometry.instances) {
-            const auto& [mlo, mhi] = mesh_box[instance.mesh];
-            if (!(mlo.x <= mhi.x))
-                continue;
-            for (int corner = 0; corner < 8; ++corner) {
-                glm::dvec3 c((corner & 1) ? mhi.x : mlo.x, (corner & 2) ? mhi.y : mlo.y, (corner & 4) ? mhi.z : mlo.z);
-                glm::dvec3 p(instance.world * glm::dvec4(c, 1.0));
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-        }
+        for (const PendingInstance& instance : geometry.instances)
+            add_mapped_box(instance.world, mesh_box[instance.mesh].first, mesh_box[instance.mesh].second, lo, hi);
         if (lo.x <= hi.x)
             origin = 0.5 * (lo + hi);
     }

@@ -24,8 +24,7 @@ void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi)
             lo = glm::min(lo, v);
             hi = glm::max(hi, v);
         }
-    // An instance adds its mesh's box mapped to render space (the box of the mapped
-    // corners: a little larger than the mapped triangles' under a rotation).
+    // An instance adds its mesh's box mapped to render space.
     std::vector<std::pair<glm::dvec3, glm::dvec3>> mesh_box(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         glm::dvec3 mlo(std::numeric_limits<double>::infinity()), mhi = -mlo;
@@ -37,16 +36,26 @@ void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi)
             }
         mesh_box[m] = {mlo, mhi};
     }
-    for (const SceneInstance& instance : scene.instances) {
-        const auto& [mlo, mhi] = mesh_box[instance.mesh];
-        if (!(mlo.x <= mhi.x))
-            continue; // an empty mesh
-        for (int corner = 0; corner < 8; ++corner) {
-            glm::dvec3 c((corner & 1) ? mhi.x : mlo.x, (corner & 2) ? mhi.y : mlo.y, (corner & 4) ? mhi.z : mlo.z);
-            glm::vec3 p(instance.to_render * glm::dvec4(c, 1.0));
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    glm::dvec3 ilo(std::numeric_limits<double>::infinity()), ihi = -ilo;
+    for (const SceneInstance& instance : scene.instances)
+        add_mapped_box(instance.to_render, mesh_box[instance.mesh].first, mesh_box[instance.mesh].second, ilo, ihi);
+    if (ilo.x <= ihi.x) { // (float rounding is monotonic: the rounded corners' min is the min's rounding)
+        lo = glm::min(lo, glm::vec3(ilo));
+        hi = glm::max(hi, glm::vec3(ihi));
+    }
+}
+
+void add_mapped_box(const glm::dmat4& m, const glm::dvec3& box_lo, const glm::dvec3& box_hi, glm::dvec3& lo,
+                    glm::dvec3& hi)
+{
+    if (!(box_lo.x <= box_hi.x))
+        return;
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 c((corner & 1) ? box_hi.x : box_lo.x, (corner & 2) ? box_hi.y : box_lo.y,
+                     (corner & 4) ? box_hi.z : box_lo.z);
+        glm::dvec3 p(m * glm::dvec4(c, 1.0));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
     }
 }
 

@@ -203,6 +203,12 @@ struct Scene {
 // scene is empty).
 void scene_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
 
+// Widens [lo, hi] by the box [box_lo, box_hi] mapped by m: the box of its eight mapped
+// corners (a little larger than the mapped contents' under a rotation). An empty box
+// (box_lo.x > box_hi.x) adds nothing.
+void add_mapped_box(const glm::dmat4& m, const glm::dvec3& box_lo, const glm::dvec3& box_hi, glm::dvec3& lo,
+                    glm::dvec3& hi);
+
 // Every triangle drawn, in render space: those drawn once, then each instance's mesh
 // mapped by it (normals through the inverse transpose, re-wound where the map mirrors so
 // that counter-clockwise stays the front): the copies --copy-instances would make.
