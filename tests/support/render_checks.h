@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <iostream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -37,6 +38,17 @@ inline ChannelMean channel_mean(const RenderResult& r, int channel)
 }
 
 // Light sampling and its combinations must converge to what BSDF sampling alone finds.
+// Expects two images to agree statistically, each judged by its own variance (not
+// pooled: two estimators or two programs share the mean, not the variance).
+inline void expect_same_mean(const Image& a, const Image& b, const std::string& what = "")
+{
+    CompareOptions co;
+    co.pooled_variance = false;
+    CompareReport cmp = compare_images(a, b, co);
+    std::cout << what << (what.empty() ? "" : "\n") << cmp.summary();
+    EXPECT_TRUE(cmp.passed) << what << "\n" << cmp.summary();
+}
+
 // Renders `scene` with BSDF sampling at o.spp and o.seed as the reference, then with each
 // strategy at `spp` samples and seed seed_base + the strategy's value, and expects every
 // image to match the reference statistically (different estimators share the mean only,
@@ -54,11 +66,7 @@ inline void expect_same_image_by_strategies(const Scene& scene, RenderOptions o,
         o.seed = seed_base + static_cast<std::uint32_t>(strategy);
         RenderResult r = render(scene, o);
         EXPECT_EQ(r.stats.bad_samples, 0u);
-        CompareOptions co;
-        co.pooled_variance = false;
-        CompareReport cmp = compare_images(r.image, reference.image, co);
-        std::cout << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
-        EXPECT_TRUE(cmp.passed) << "strategy " << strategy_name(strategy) << "\n" << cmp.summary();
+        expect_same_mean(r.image, reference.image, std::string("strategy ") + strategy_name(strategy));
     }
 }
 
