@@ -145,8 +145,8 @@ typedef struct {
 #define TEXTURE_NONE (-1)
 
 /* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
- * _volume and _clearcoat, as the kernels read it (see kernels/closure/bsdf.cl for the
- * model): 160 bytes.
+ * _volume, _clearcoat and _sheen, as the kernels read it (see kernels/closure/bsdf.cl for
+ * the model): 176 bytes.
  * Each texture slot indexes the TextureView array (TEXTURE_NONE when absent); a texture
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
@@ -168,7 +168,8 @@ typedef struct {
     pcl_float clearcoat;                  /* KHR_materials_clearcoat clearcoatFactor (0: no coat) */
     pcl_float clearcoat_roughness;        /* clearcoatRoughnessFactor, perceptual */
     pcl_float clearcoat_normal_scale;     /* clearcoatNormalTexture.scale */
-    pcl_int pad0, pad1, pad2;
+    pcl_int pad0;
+    pcl_float4 sheen; /* KHR_materials_sheen: rgb sheenColorFactor (0: no sheen), w sheenRoughnessFactor */
 } Material;
 
 /* Light types */

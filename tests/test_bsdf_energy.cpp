@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "features.h"
+#include "render/layer_albedo.h"
 #include "support/bsdf_harness.h"
 #include "support/device_fixture.h"
 
@@ -173,6 +174,57 @@ TEST(BsdfEnergy, ClearcoatTakesOnlyWhatTheBaseWouldReflect)
                         coat_roughness, c, a.mean.x, a.stderr_.x);
         }
     }
+}
+
+// A KHR_materials_sheen lobe alone: colour 1 over a black, exactly Lambertian base.
+MaterialSpec sheen_alone(float roughness)
+{
+    MaterialSpec s = lambertian(glm::vec3(0.0f));
+    s.sheen = glm::vec3(1.0f);
+    s.sheen_roughness = roughness;
+    return s;
+}
+
+TEST(BsdfEnergy, SheenReflectsItsAlbedoAndNeverMoreThanItReceives)
+{
+    // Where the lobe's albedo E_s stays below 1 (sheenRoughness 0.3 and above) a white sheen
+    // alone reflects exactly E_s(cos_o): its samples' mean equals the host's quadrature of
+    // the extension's lobe (not the table). Smoother sheens reflect up to 4x what they
+    // receive at grazing angles as written; divided by max(1, E_s) they reflect at most 1.
+    // A white sheen over a white Lambertian reflects at most 1. Broken variants seen
+    // failing: the lobe's 1 / (4 cos_o) as 1 / (4 cos_o cos_i) (the albedos differ from the
+    // quadrature), the base not scaled by the sheen (white on white above 1).
+    for (double c : {1.0, 0.7, 0.3, 0.05, 0.01}) {
+        SCOPED_TRACE("cos " + std::to_string(c));
+        for (float r : {0.05f, 0.1f, 0.3f, 0.6f, 1.0f}) {
+            SCOPED_TRACE("sheen roughness " + std::to_string(r));
+            Albedo a = directional_albedo(full_program(), sheen_alone(r), c, true, false);
+            EXPECT_EQ(a.not_finite, 0u);
+            EXPECT_LE(a.mean.x, 1.0 + 5.0 * a.stderr_.x + kLayerTableError);
+            if (r >= 0.3f) {
+                EXPECT_NEAR(a.mean.x, integrate_sheen_albedo(c, r), 5.0 * a.stderr_.x + 1e-4);
+            }
+            MaterialSpec on_white = sheen_alone(r);
+            on_white.base = glm::vec3(1.0f);
+            Albedo w = directional_albedo(full_program(), on_white, c, true, false);
+            EXPECT_LE(w.mean.x, 1.0 + 5.0 * w.stderr_.x + kLayerTableError) << "on white";
+        }
+    }
+}
+
+TEST(BsdfEnergy, SheenAsWrittenGainsEnergyAndIsCaught)
+{
+    // The extension's lobe without the division by max(1, E_s), patched in on purpose: a
+    // white sheen of roughness 0.05 reflects about 3x what it receives at cos 0.01 (the
+    // quadrature's E_s is 3.15), which the bound above must see.
+    const KernelPatch undivided{"closure/bsdf_eval.cl",
+                                "    e->f_cos += p->sheen * (f / fmax(fmax(p->sheen_e_o, e_i), 1.0f));\n",
+                                "    e->f_cos += p->sheen * f;\n"};
+    static cl::Program faulty = test::build_test_program(
+        "bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SHEEN, {undivided});
+    Albedo a = directional_albedo(faulty, sheen_alone(0.05f), 0.01, true, false);
+    EXPECT_GT(a.mean.x, 2.0);
+    EXPECT_NEAR(integrate_sheen_albedo(0.01, 0.05), a.mean.x, 5.0 * a.stderr_.x + 1e-3);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 // The material extensions that change how other fields are read (host only, no device):
 // KHR_materials_ior's ior 0 (specular-glossiness mode),
 // KHR_materials_pbrSpecularGlossiness, read as the metallic-roughness material in that
-// mode, and KHR_materials_clearcoat's factors. Next to each test: a broken variant seen to fail it.
+// mode, and KHR_materials_clearcoat's and _sheen's factors. Next to each test: a broken
+// variant seen to fail it.
 #include <algorithm>
 #include <functional>
 #include <string>
@@ -29,6 +30,7 @@ using test::json_numbers;
 using test::kTilted;
 using test::one_triangle;
 using test::set_clearcoat;
+using test::set_sheen;
 using test::tilted_triangle_with;
 
 void set_ior(tinygltf::Material& m, double ior)
@@ -88,6 +90,51 @@ TEST(GltfMaterialExtensions, ClearcoatFactorsAreReadAndCompileTheCoat)
     Scene none = import(tilted_triangle_with([](tinygltf::Material& m) { set_clearcoat(m, 0.0, 0.5); }));
     EXPECT_FALSE(kernel_features(none, RenderOptions{}).has(FEATURE_CLEARCOAT));
     EXPECT_FALSE(kernel_features(import(one_triangle(kTilted)), RenderOptions{}).has(FEATURE_CLEARCOAT));
+}
+
+TEST(GltfMaterialExtensions, SheenFactorsAndTexturesAreReadAndCompileTheSheen)
+{
+    // A sheen colour above 0 compiles the sheen code; colour 0 (the default) is no sheen,
+    // whatever its roughness. Its textures fill their slots, the colour's as sRGB. The
+    // extension is read, so it is not reported as ignored. Broken variants seen to fail:
+    // the roughness read from the colour's first channel.
+    GltfBuilder b = tilted_triangle_with([](tinygltf::Material& m) { set_sheen(m, {0.2, 0.4, 0.6}, 0.3); });
+    b.model.extensionsUsed = {"KHR_materials_sheen"};
+    int color = b.add_texture(b.add_png_image(1, 1, {255, 255, 255, 255}));
+    int roughness = b.add_texture(b.add_png_image(1, 1, {0, 0, 0, 128}));
+    tinygltf::Value::Object o = b.model.materials[0].extensions["KHR_materials_sheen"].Get<tinygltf::Value::Object>();
+    o["sheenColorTexture"] = test::texture_info(color);
+    o["sheenRoughnessTexture"] = test::texture_info(roughness, 1);
+    b.model.materials[0].extensions["KHR_materials_sheen"] = tinygltf::Value(o);
+    b.set_attribute(0, "TEXCOORD_0", b.add_texcoords({{0, 0}, {1, 0}, {0, 1}}));
+    b.set_attribute(0, "TEXCOORD_1", b.add_texcoords({{0, 0}, {1, 0}, {0, 1}}));
+    ::testing::internal::CaptureStderr();
+    Scene s = import(b);
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(err.empty()) << err;
+    EXPECT_EQ(s.materials[0].sheen_color, glm::vec3(0.2f, 0.4f, 0.6f));
+    EXPECT_FLOAT_EQ(s.materials[0].sheen_roughness, 0.3f);
+    EXPECT_TRUE(s.materials[0].textures[TEXTURE_SLOT_SHEEN_COLOR].present());
+    EXPECT_TRUE(s.materials[0].textures[TEXTURE_SLOT_SHEEN_ROUGHNESS].present());
+    EXPECT_EQ(s.materials[0].textures[TEXTURE_SLOT_SHEEN_ROUGHNESS].texcoord, 1);
+    EXPECT_TRUE(kernel_features(s, RenderOptions{}).has(FEATURE_SHEEN));
+    Scene none = import(tilted_triangle_with([](tinygltf::Material& m) { set_sheen(m, {0.0, 0.0, 0.0}, 0.5); }));
+    EXPECT_FALSE(kernel_features(none, RenderOptions{}).has(FEATURE_SHEEN));
+    EXPECT_FALSE(kernel_features(import(one_triangle(kTilted)), RenderOptions{}).has(FEATURE_SHEEN));
+}
+
+TEST(GltfMaterialExtensions, SheenOutOfRangeIsAnError)
+{
+    // A colour channel or roughness outside [0, 1] is a one-line error naming the field.
+    using Case = std::tuple<std::vector<double>, double, const char*>;
+    for (const auto& [color, roughness, field] :
+         {Case{{0.5, 1.5, 0.5}, 0.0, "sheenColorFactor"}, Case{{-0.1, 0.0, 0.0}, 0.0, "sheenColorFactor"},
+          Case{{0.5, 0.5, 0.5}, -0.2, "sheenRoughnessFactor"}}) {
+        auto edit = [&](tinygltf::Material& m) { set_sheen(m, color, roughness); };
+        std::string e = error_of([&] { import(tilted_triangle_with(edit)); });
+        EXPECT_TRUE(contains(e, "test.gltf: material 0") && contains(e, std::string(field) + " must lie in [0, 1]"))
+            << e;
+    }
 }
 
 TEST(GltfMaterialExtensions, ClearcoatOutOfRangeIsAnError)

@@ -91,6 +91,13 @@ Scene textured_quad(const QuadOptions& o)
     coat["clearcoatTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {102, 0, 0, 255})));
     coat["clearcoatRoughnessTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {0, 204, 0, 255})));
     m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(coat);
+    // KHR_materials_sheen textures (factors (0.5, 1, 0.25) and 0.8): roughness from A.
+    tinygltf::Value::Object sheen;
+    sheen["sheenColorFactor"] = test::json_numbers({0.5, 1.0, 0.25});
+    sheen["sheenRoughnessFactor"] = tinygltf::Value(0.8);
+    sheen["sheenColorTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {200, 100, 50, 255})));
+    sheen["sheenRoughnessTexture"] = test::texture_info(b.add_texture(b.add_png_image(1, 1, {10, 20, 30, 102})));
+    m.extensions["KHR_materials_sheen"] = tinygltf::Value(sheen);
     if (o.edit)
         o.edit(b, m);
     b.add_root(b.add_node(mesh));
@@ -98,7 +105,7 @@ Scene textured_quad(const QuadOptions& o)
 }
 
 struct MaterialProbe {
-    std::vector<pcl_float4> normal, base_color, emission, specular_color, params, coat, coat_normal;
+    std::vector<pcl_float4> normal, base_color, emission, specular_color, params, coat, coat_normal, sheen;
 };
 
 // test_material_inputs at barycentrics (b1, b2) of scene triangle 0, seen along -wo.
@@ -120,13 +127,14 @@ MaterialProbe probe(const Scene& scene, const std::vector<glm::vec2>& bary, cons
     DeviceArrays arrays = upload_arrays(dev, cs.arrays, 1);
     std::size_t n = hits.size();
     std::vector<cl::Buffer> outs;
-    for (int i = 0; i < 7; ++i)
+    for (int i = 0; i < 8; ++i)
         outs.emplace_back(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer hit_buffer = upload(hits), wo_buffer = upload(wos); // alive until the kernel has run
-    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4], outs[5], outs[6]);
+    bind_kernel(k, arrays, hit_buffer, wo_buffer, outs[0], outs[1], outs[2], outs[3], outs[4], outs[5], outs[6],
+                outs[7]);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     return {read_back(outs[0], n), read_back(outs[1], n), read_back(outs[2], n), read_back(outs[3], n),
-            read_back(outs[4], n), read_back(outs[5], n), read_back(outs[6], n)};
+            read_back(outs[4], n), read_back(outs[5], n), read_back(outs[6], n), read_back(outs[7], n)};
 }
 
 glm::vec3 v3(const pcl_float4& p)
@@ -158,6 +166,10 @@ TEST(MaterialInputs, TexturesMultiplyTheirFactorsAndVertexColourTheBaseColour)
     EXPECT_NEAR(p.params[0].w, 0.6f * 51.0f / 255.0f, 1e-6f) << "transmission";
     EXPECT_NEAR(p.coat[0].x, 0.9f * 102.0f / 255.0f, 1e-6f) << "clearcoat";
     EXPECT_NEAR(p.coat[0].y, 0.5f * 204.0f / 255.0f, 1e-6f) << "clearcoat roughness";
+    glm::vec3 sheen(0.5f * srgb8_to_linear(200), srgb8_to_linear(100), 0.25f * srgb8_to_linear(50));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(v3(p.sheen[0])[c], sheen[c], 1e-6f) << "sheen colour channel " << c;
+    EXPECT_NEAR(p.sheen[0].w, 0.8f * 102.0f / 255.0f, 1e-6f) << "sheen roughness";
 }
 
 TEST(MaterialInputs, TheBasesNormalMapDoesNotBendTheClearCoat)

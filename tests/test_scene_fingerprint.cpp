@@ -49,6 +49,17 @@ TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows)
     s.materials[0].clearcoat_normal_scale = 0.5f;
     EXPECT_NE(scene_fingerprint(s), coat_mapped) << "clear coat normal scale";
     s = base;
+    s.materials[0].sheen_roughness = 0.5f; // no sheen colour: no sheen, nothing changes
+    EXPECT_EQ(scene_fingerprint(s), f) << "roughness of no sheen";
+    s.materials[0].sheen_color = glm::vec3(0.0f, 0.5f, 0.0f);
+    const std::uint64_t sheen = scene_fingerprint(s);
+    EXPECT_NE(sheen, f) << "sheen colour";
+    s.materials[0].sheen_roughness = 0.25f;
+    const std::uint64_t rougher = scene_fingerprint(s);
+    EXPECT_NE(rougher, sheen) << "sheen roughness";
+    s.materials[0].textures[TEXTURE_SLOT_SHEEN_ROUGHNESS].image = 0;
+    EXPECT_NE(scene_fingerprint(s), rougher) << "sheen roughness texture";
+    s = base;
     s.materials[0].name = "renamed"; // names do not change a render
     EXPECT_EQ(scene_fingerprint(s), f);
 }

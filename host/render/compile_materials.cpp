@@ -1,6 +1,6 @@
 // Materials for the device: one Material record per scene material (factors; the texture
 // slots are filled by compile_textures), and the layer albedo tables when a material has
-// a specular layer, transmission or a clear coat.
+// a specular layer, transmission, a clear coat or a sheen.
 #include "render/compile_scene.h"
 #include "render/layer_albedo.h"
 
@@ -26,13 +26,15 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.clearcoat = m.clearcoat;
         dm.clearcoat_roughness = m.clearcoat_roughness;
         dm.clearcoat_normal_scale = m.clearcoat_normal_scale;
+        dm.sheen = to_float4(m.has_sheen() ? m.sheen_color : glm::vec3(0.0f), m.sheen_roughness);
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
         dm.normal_scale = m.normal_scale;
         arrays.materials.push_back(dm);
     }
-    if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION) || features.has(FEATURE_CLEARCOAT))
+    if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION) || features.has(FEATURE_CLEARCOAT) ||
+        features.has(FEATURE_SHEEN))
         arrays.layer_albedo = layer_albedo_table();
 }
 

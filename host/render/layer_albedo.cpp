@@ -11,6 +11,7 @@
 #include "closure/fresnel.h"
 #include "closure/ggx.h"
 #include "closure/layer_table.h"
+#include "closure/sheen.h"
 
 namespace pathcl {
 namespace {
@@ -107,6 +108,10 @@ std::vector<float> compute_layer_albedo_table(int panels)
     std::thread helper(glass_rows, 1, 2);
     glass_rows(0, 2);
     helper.join();
+    for (int j = 0; j < LAYER_ROUGH_RES; ++j)
+        for (int i = 0; i < LAYER_MU_RES; ++i)
+            t[LAYER_TABLE_SHEEN + j * LAYER_MU_RES + i] =
+                static_cast<float>(integrate_sheen_albedo(grid_mu(i), grid_roughness(j), panels / 4));
     return t;
 }
 
@@ -242,6 +247,38 @@ LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double et
     std::vector<double> b;
     double e = integrate_layer_albedo(cos_theta, roughness, std::vector<double>{eta}, b, panels);
     return {e, b[0]};
+}
+
+double integrate_sheen_albedo(double cos_theta, double roughness, int panels)
+{
+    // Gauss-Legendre over wi in (v, phi) with cos theta_i = v^2 (the lobe and its masking
+    // change fastest at grazing angles), phi in [0, pi] doubled (wo lies in the xz plane).
+    static constexpr double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                                     0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+    static constexpr double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066278921548, 0.3626837833783620,
+                                     0.3626837833783620, 0.3137066278921548, 0.2223810344533745, 0.1012285362903763};
+    const double alpha = std::max(roughness * roughness, static_cast<double>(SHEEN_ALPHA_MIN));
+    const glm::dvec3 wo(std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta);
+    const int n = 8 * panels;
+    std::vector<double> v(n), wv(n), phi(n), wphi(n);
+    for (int p = 0; p < panels; ++p)
+        for (int k = 0; k < 8; ++k) {
+            double a = static_cast<double>(p) / panels, b = static_cast<double>(p + 1) / panels;
+            v[8 * p + k] = 0.5 * (a + b) + 0.5 * (b - a) * gx[k];
+            wv[8 * p + k] = 0.5 * (b - a) * gw[k];
+            phi[8 * p + k] = kPi * v[8 * p + k];
+            wphi[8 * p + k] = kPi * wv[8 * p + k];
+        }
+    double sum = 0.0;
+    for (int a = 0; a < n; ++a) {
+        double u = v[a] * v[a], s = std::sqrt(std::max(0.0, 1.0 - u * u)), row = 0.0;
+        for (int b = 0; b < n; ++b) {
+            glm::dvec3 wi(s * std::cos(phi[b]), s * std::sin(phi[b]), u);
+            row += wphi[b] * sheen_f_cos(wo, wi, alpha);
+        }
+        sum += row * wv[a] * 2.0 * v[a]; // d omega = du dphi, du = 2 v dv
+    }
+    return 2.0 * sum;
 }
 
 double smooth_layer_average(double eta)

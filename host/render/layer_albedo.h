@@ -39,6 +39,10 @@ struct LayerAlbedo {
 };
 LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double eta, int panels = 16);
 
+// Directional albedo of the KHR_materials_sheen lobe with colour 1 (closure/sheen.h) from
+// cos theta at sheenRoughness `roughness`, by Gauss-Legendre over the hemisphere.
+double integrate_sheen_albedo(double cos_theta, double roughness, int panels = 16);
+
 // 2 * integral of layer_curve(mu, eta) mu dmu: the smooth layer's hemispherical average
 // of the normalized Fresnel curve (Schlick's for eta 0: 1/21), exact (the kernels use it
 // below ALPHA_DELTA).

@@ -91,6 +91,7 @@ const std::set<std::string>& supported_extensions()
     static const std::set<std::string> supported = {"KHR_materials_emissive_strength",
                                                     "KHR_materials_specular",
                                                     "KHR_materials_clearcoat",
+                                                    "KHR_materials_sheen",
                                                     "KHR_materials_transmission",
                                                     "KHR_materials_ior",
                                                     "KHR_materials_pbrSpecularGlossiness",

@@ -1,5 +1,5 @@
 // import_materials: the core material (alpha included), its extensions (emissive
-// strength, specular, transmission, clearcoat, ior (0 included), volume with attenuation, unlit; a
+// strength, specular, transmission, clearcoat, sheen, ior (0 included), volume with attenuation, unlit; a
 // pbrSpecularGlossiness material replaces the metallic-roughness part), the texture of
 // each slot, then the range check.
 #include "scene/gltf_materials.h"
@@ -32,6 +32,8 @@ void check_material(const SceneMaterial& m, const std::string& where)
             fail("emission (emissiveFactor x emissiveStrength) must be finite and >= 0");
         if (!(m.specular_color[i] >= 0.0f) || !std::isfinite(m.specular_color[i]))
             fail("KHR_materials_specular specularColorFactor must be finite and >= 0");
+        if (!in01(m.sheen_color[i]))
+            fail("KHR_materials_sheen sheenColorFactor must lie in [0, 1]");
     }
     if (!in01(m.metallic))
         fail("metallicFactor must lie in [0, 1]");
@@ -45,6 +47,8 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_clearcoat clearcoatFactor must lie in [0, 1]");
     if (!in01(m.clearcoat_roughness))
         fail("KHR_materials_clearcoat clearcoatRoughnessFactor must lie in [0, 1]");
+    if (!in01(m.sheen_roughness))
+        fail("KHR_materials_sheen sheenRoughnessFactor must lie in [0, 1]");
     if (!(m.ior >= 1.0f || m.ior == 0.0f) || !std::isfinite(m.ior))
         fail("KHR_materials_ior ior must be finite and >= 1, or 0");
     if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
@@ -127,6 +131,10 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
                 throw Error(source + ": " + where +
                             ": KHR_materials_clearcoat clearcoatNormalTexture scale must be finite");
         }
+    }
+    if (auto e = m.extensions.find("KHR_materials_sheen"); e != m.extensions.end()) {
+        out.sheen_color = vec3_or(e->second, "sheenColorFactor", glm::vec3(0.0f));
+        out.sheen_roughness = static_cast<float>(number_or(e->second, "sheenRoughnessFactor", 0.0));
     }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));

@@ -92,6 +92,11 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             if (m.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL].present())
                 f.add(m.clearcoat_normal_scale);
         }
+        if (m.has_sheen()) {
+            f.add(4);
+            f.add(m.sheen_color);
+            f.add(m.sheen_roughness);
+        }
         for (std::size_t slot = 0; slot < m.textures.size(); ++slot) {
             const SceneTexture& t = m.textures[slot];
             if (slot >= TEXTURE_SLOT_CLEARCOAT && !t.present())

@@ -15,6 +15,8 @@ const std::array<TextureSlot, TEXTURE_SLOT_COUNT>& texture_slot_table()
         {TEXTURE_SLOT_CLEARCOAT, "clearcoatTexture", "KHR_materials_clearcoat", false},
         {TEXTURE_SLOT_CLEARCOAT_ROUGHNESS, "clearcoatRoughnessTexture", "KHR_materials_clearcoat", false},
         {TEXTURE_SLOT_CLEARCOAT_NORMAL, "clearcoatNormalTexture", "KHR_materials_clearcoat", false},
+        {TEXTURE_SLOT_SHEEN_COLOR, "sheenColorTexture", "KHR_materials_sheen", true},
+        {TEXTURE_SLOT_SHEEN_ROUGHNESS, "sheenRoughnessTexture", "KHR_materials_sheen", false},
     }};
     return table;
 }

@@ -9,7 +9,7 @@
  * geometry.
  *
  * The material model is glTF's metallic-roughness BSDF (glTF 2.0 appendix B) with
- * KHR_materials_specular, _transmission, _ior and _volume (and _clearcoat, below):
+ * KHR_materials_specular, _transmission, _ior and _volume (and _clearcoat and _sheen, below):
  *
  *   f = metallic       * F_schlick(base_color, wo.h) * spec
  *     + (1 - metallic) * [ F_d(wo.h) * spec
@@ -66,6 +66,19 @@
  * Inside a solid the coat reflects nothing but still scales the base, so transmission
  * stays reciprocal.
  *
+ * KHR_materials_sheen puts a layer of fibres between the coat and the base: the "Charlie"
+ * lobe of closure/sheen.h, coloured by sheen colour s, on the shading normal, with the
+ * extension's reciprocal albedo scaling of the base:
+ *
+ *   f_under_coat = s sheen(wo, wi) / max(1, E_s(cos_o), E_s(|cos_i|))
+ *                + (1 - max3(s) min(1, max(E_s(cos_o), E_s(|cos_i|)))) f_base
+ *
+ * with E_s the lobe's directional albedo (tabulated, LAYER_TABLE_SHEEN). As the extension
+ * writes it the lobe reflects up to 4x what it receives at grazing angles for smooth
+ * sheens (E_s > 1); the division keeps it reciprocal and its albedo at most 1, and is 1
+ * wherever E_s <= 1. It reflects only from outside a solid but scales the base from both
+ * sides, as the coat does.
+ *
  * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
  * the interface with probabilities estimated from their albedos at the macro normal
  * (computed once per shading point by bsdf_params); the GGX lobes sample a visible
@@ -82,6 +95,7 @@
 #include "closure/layer_albedo.cl"
 #include "closure/layer_table.h"
 #include "closure/lobes.cl"
+#include "closure/sheen.h"
 #include "features.h"
 #include "geom/surface_point.cl"
 #include "types.h"
@@ -143,6 +157,13 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.coat_r = m->clearcoat_roughness * (float)(LAYER_ROUGH_RES - 1);
     p.coat_n = sp->n_coat;
     p.coat_e_o = p.coat > 0.0f ? p.coat * coat_albedo(&p, clamp(dot(wo, p.coat_n), 0.0f, 1.0f)) : 0.0f;
+#endif
+#ifdef PATHCL_HAS_SHEEN
+    p.sheen = m->sheen.xyz;
+    p.sheen_max = max3(p.sheen);
+    p.sheen_alpha = fmax(m->sheen.w * m->sheen.w, SHEEN_ALPHA_MIN);
+    p.sheen_r = m->sheen.w * (float)(LAYER_ROUGH_RES - 1);
+    p.sheen_e_o = p.sheen_max > 0.0f ? sheen_albedo(&p, p.cos_o) : 0.0f;
 #endif
     p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
     float3 one_minus_avg = 1.0f - layer_average(&p, m);

@@ -6,6 +6,7 @@
 #include "closure/layer_albedo.cl"
 #include "closure/lobes.cl"
 #include "closure/microfacet.cl"
+#include "closure/sheen.h"
 #include "features.h"
 #include "geom/ray_offset.cl"
 #include "util/math.cl"
@@ -83,7 +84,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
 
 #endif /* PATHCL_FULL_BSDF */
 
-/* The base material's lobes (everything but the clear coat). */
+/* The base material's lobes (everything but the sheen and the clear coat). */
 static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
 {
     BsdfEval e;
@@ -138,10 +139,42 @@ static inline void coat_eval(const BsdfParams* p, const SurfacePoint* sp, float3
 
 #endif /* PATHCL_HAS_CLEARCOAT */
 
+#ifdef PATHCL_HAS_SHEEN
+
+/* Uniform hemisphere density: the sheen's sampling (closure/bsdf_sample.cl). */
+#define SHEEN_SAMPLE_PDF (0.5f * INV_PI)
+
+/* The sheen over the base's f_cos and pdf: the base scaled by what the sheen passes
+ * (sheen_base_scale), plus the sheen's own lobe on the shading normal, divided by
+ * max(1, E_s(cos_o), E_s(|cos_i|)): the lobe as the extension writes it reflects up to
+ * four times what it receives at grazing angles when sheenRoughness is below about 0.3,
+ * and with the division it never reflects more than it receives, and stays reciprocal.
+ * It reflects only from outside a solid. */
+static inline void sheen_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi, BsdfEval* e)
+{
+    if (!(p->sheen_max > 0.0f))
+        return;
+    float cos_i = dot(wi, sp->ns);
+    float e_i = sheen_albedo(p, fabs(cos_i));
+    e->f_cos *= sheen_base_scale(p, e_i);
+    if (p->inside || !(cos_i > 0.0f) || !(p->cos_o > 0.0f) || !above_surface(sp, dot(wi, sp->ng)))
+        return;
+    float3 t, b;
+    make_basis(sp->ns, &t, &b);
+    float f = sheen_f_cos(to_local(wo, t, b, sp->ns), to_local(wi, t, b, sp->ns), p->sheen_alpha);
+    e->f_cos += p->sheen * (f / fmax(fmax(p->sheen_e_o, e_i), 1.0f));
+    e->pdf += p->lobes.sheen * SHEEN_SAMPLE_PDF;
+}
+
+#endif /* PATHCL_HAS_SHEEN */
+
 /* f cos theta_i and the pdf of sampling wi, over every non-delta lobe. */
 static inline BsdfEval bsdf_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
 {
     BsdfEval e = bsdf_eval_base(p, sp, wo, wi);
+#ifdef PATHCL_HAS_SHEEN
+    sheen_eval(p, sp, wo, wi, &e);
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
     coat_eval(p, sp, wo, wi, &e);
 #endif

@@ -37,10 +37,13 @@ typedef struct {
 
 /* Lobe selection probabilities for sampling: the diffuse base (with the conductor's
  * multiple-scattering lobe), the conductor's GGX reflection, the dielectric interface
- * (its reflection and refraction, split per facet by interface_split), and the clear
- * coat. */
+ * (its reflection and refraction, split per facet by interface_split), the sheen and the
+ * clear coat. */
 typedef struct {
     float diffuse, conductor, interface;
+#ifdef PATHCL_HAS_SHEEN
+    float sheen; /* the sheen's lobe, sampled uniformly over the hemisphere */
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
     float coat; /* the clear coat's reflection, sampled in its own frame */
 #endif
@@ -76,6 +79,13 @@ typedef struct {
     float3 coat_n;    /* its normal (SurfacePoint.n_coat) */
     float coat_e_o;   /* coat x the coat's albedo E_c(cos_o): what it reflects from wo */
 #endif
+#ifdef PATHCL_HAS_SHEEN
+    float3 sheen;      /* sheen colour (0: no sheen) */
+    float sheen_max;   /* its largest channel, which scales the base */
+    float sheen_alpha; /* max(sheenRoughness^2, SHEEN_ALPHA_MIN) */
+    float sheen_r;     /* its continuous roughness table coordinate */
+    float sheen_e_o;   /* the lobe's albedo E_s(cos_o) with colour 1 (above 1 near grazing) */
+#endif
     LobeChoice lobes;
 #endif
 } BsdfParams;
@@ -87,6 +97,9 @@ static inline bool bsdf_is_delta(const BsdfParams* p)
     bool delta = p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
 #ifdef PATHCL_HAS_CLEARCOAT
     delta = delta && !(p->coat > 0.0f && p->coat_alpha >= ALPHA_DELTA);
+#endif
+#ifdef PATHCL_HAS_SHEEN
+    delta = delta && !(p->sheen_max > 0.0f);
 #endif
     return delta;
 #else

@@ -1,7 +1,7 @@
 /* BSDF sampling: a lobe by its estimated albedo, then a direction (cosine-weighted for the
- * diffuse base, a visible GGX facet for the specular lobes and the clear coat, reflection
- * or refraction by the facet's own Fresnel split), with weight f cos / pdf over every
- * non-delta lobe. */
+ * diffuse base, a visible GGX facet for the specular lobes and the clear coat, uniform for
+ * the sheen, reflection or refraction by the facet's own Fresnel split), with weight
+ * f cos / pdf over every non-delta lobe. */
 #include "closure/bsdf_eval.cl"
 #include "closure/bsdf_params.cl"
 #include "closure/fresnel_layer.cl"
@@ -46,6 +46,39 @@ static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp
 
 #endif /* PATHCL_HAS_CLEARCOAT */
 
+#ifdef PATHCL_HAS_SHEEN
+
+/* A sample of the sheen: uniform over the hemisphere of the shading normal, as Cycles
+ * samples its velvet lobe. The Charlie distribution peaks at fibres lying in the surface,
+ * whose mirror directions are mostly below it, so sampling D itself would waste most
+ * samples; cosine-weighted sampling would weight grazing wi by 1 / cos_i. */
+static inline BsdfSample sheen_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float2 u)
+{
+    BsdfSample s = no_bsdf_sample();
+    float z = u.x;
+    float r = sqrt(fmax(0.0f, 1.0f - z * z));
+    float cos_phi, sin_phi = sin_cos_turns(u.y, &cos_phi);
+    float3 t, b;
+    make_basis(sp->ns, &t, &b);
+    s.wi = to_world((float3)(r * cos_phi, r * sin_phi, z), t, b, sp->ns);
+    if (!(z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
+        return s;
+    BsdfEval e = bsdf_eval(p, sp, wo, s.wi);
+    if (!(e.pdf > 0.0f))
+        return s;
+    s.pdf = e.pdf;
+    s.weight = e.f_cos / e.pdf;
+    return s;
+}
+
+/* What a delta sample of the base keeps under the sheen. */
+static inline float sheen_delta_scale(const BsdfParams* p, const SurfacePoint* sp, float3 wi)
+{
+    return p->sheen_max > 0.0f ? sheen_base_scale(p, sheen_albedo(p, fabs(dot(wi, sp->ns)))) : 1.0f;
+}
+
+#endif /* PATHCL_HAS_SHEEN */
+
 /* u_lobe picks the lobe, u samples it. */
 static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
 {
@@ -67,6 +100,15 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (lobes.coat > 0.0f && u_lobe >= 1.0f - lobes.coat)
         return coat_sample(p, sp, wo, u);
 #endif
+#ifdef PATHCL_HAS_SHEEN
+#ifdef PATHCL_HAS_CLEARCOAT
+    float sheen_end = 1.0f - lobes.coat;
+#else
+    float sheen_end = 1.0f;
+#endif
+    if (lobes.sheen > 0.0f && u_lobe >= sheen_end - lobes.sheen)
+        return sheen_sample(p, sp, wo, u);
+#endif
     bool rough = p->alpha >= ALPHA_DELTA;
     float3 wi;
     bool reflect = true;
@@ -82,6 +124,9 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
             s.delta = true;
             s.pdf = lobes.conductor;
             s.weight = p->metallic * fresnel_schlick(p->base_color, p->cos_o) / lobes.conductor;
+#ifdef PATHCL_HAS_SHEEN
+            s.weight *= sheen_delta_scale(p, sp, s.wi);
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
             if (p->coat > 0.0f)
                 s.weight *= coat_base_scale(p, s.wi);
@@ -131,6 +176,9 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
                 s.pdf = lobes.interface * (1.0f - split);
                 s.weight = p->base_color * (tw / s.pdf);
             }
+#ifdef PATHCL_HAS_SHEEN
+            s.weight *= sheen_delta_scale(p, sp, s.wi);
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
             if (p->coat > 0.0f)
                 s.weight *= coat_base_scale(p, s.wi);
@@ -143,8 +191,11 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (reflect ? (!(wi.z > 0.0f) || !above_surface(sp, cos_ig)) : (!(wi.z < 0.0f) || !(cos_ig < 0.0f)))
         return s;
     BsdfEval e = bsdf_eval_local(p, wo_l, wi, reflect);
+#ifdef PATHCL_HAS_SHEEN
+    sheen_eval(p, sp, wo, s.wi, &e); /* the sheen's lobe too, and its scale of the base */
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
-    coat_eval(p, sp, wo, s.wi, &e); /* the coat's lobe too */
+    coat_eval(p, sp, wo, s.wi, &e);  /* the coat's lobe too */
 #endif
     if (!(e.pdf > 0.0f))
         return s;

@@ -127,4 +127,23 @@ static inline float coat_base_scale(const BsdfParams* p, float3 wi)
 
 #endif /* PATHCL_HAS_CLEARCOAT */
 
+#ifdef PATHCL_HAS_SHEEN
+
+/* The sheen lobe's albedo E_s(cos theta) with colour 1 (closure/sheen.h), from the table. */
+static inline float sheen_albedo(const BsdfParams* p, float mu)
+{
+    float t = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(LAYER_MU_RES - 1);
+    return layer_bilinear(p->layer, LAYER_TABLE_SHEEN, LAYER_MU_RES, p->sheen_r, LAYER_ROUGH_RES, t);
+}
+
+/* What the sheen leaves the base lobes between wo and wi: 1 - max3(sheen) min(1,
+ * max(E_s(cos_o), E_s(|cos_i|))), the extension's reciprocal albedo scaling with the albedo
+ * capped at 1 (the lobe itself is divided by max(1, ...), see closure/bsdf_eval.cl). */
+static inline float sheen_base_scale(const BsdfParams* p, float e_i)
+{
+    return 1.0f - p->sheen_max * fmin(fmax(p->sheen_e_o, e_i), 1.0f);
+}
+
+#endif /* PATHCL_HAS_SHEEN */
+
 #endif /* PATHCL_FULL_BSDF */

@@ -10,7 +10,9 @@
  *   G_out[x'][r][mu], G_in[x'][r][mu]   energy albedo (reflection + refraction) of a rough
  *                   dielectric interface seen from outside (eta = ior) and inside (1/ior),
  *                   x' on a 16-point grid
- * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 274,688 bytes. */
+ *   E_sheen[r][mu]  albedo of the KHR_materials_sheen lobe with colour 1 (closure/sheen.h),
+ *                   r = sheenRoughness; above 1 at grazing angles for smooth sheens
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 278,784 bytes. */
 #ifndef PATHCL_CLOSURE_LAYER_TABLE_H
 #define PATHCL_CLOSURE_LAYER_TABLE_H
 
@@ -26,6 +28,7 @@
 #define LAYER_GLASS_ETA_RES 16 /* x in [0, 0.5] for the dielectric interface tables */
 #define LAYER_TABLE_GLASS_OUT (LAYER_TABLE_B_AVG + LAYER_B_ROWS * LAYER_ROUGH_RES)
 #define LAYER_TABLE_GLASS_IN (LAYER_TABLE_GLASS_OUT + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
-#define LAYER_TABLE_SIZE (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_SHEEN (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_SIZE (LAYER_TABLE_SHEEN + LAYER_ROUGH_RES * LAYER_MU_RES)
 
 #endif

@@ -32,22 +32,44 @@ static inline LobeChoice choose_lobes(const BsdfParams* p)
         if (has_interface)
             c.interface = fmax(c.interface, LOBE_ESTIMATE_FLOOR * (1.0f - p->metallic));
     }
+    float sum = 0.0f;
+#ifdef PATHCL_HAS_SHEEN
+    /* The base lobes see what the sheen does not reflect; the sheen reflects from outside. */
+    float e_sheen = fmin(p->sheen_e_o, 1.0f);
+    float under_sheen = 1.0f - p->sheen_max * e_sheen;
+    c.diffuse *= under_sheen;
+    c.conductor *= under_sheen;
+    c.interface *= under_sheen;
+    c.sheen = p->inside ? 0.0f : mean3(p->sheen) * e_sheen;
+    if (!p->inside)
+        c.sheen = fmax(c.sheen, LOBE_ESTIMATE_FLOOR * p->sheen_max);
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
-    /* The base lobes see what the coat does not reflect; the coat reflects from outside. */
+    /* The base lobes (and the sheen) see what the coat does not reflect; the coat reflects
+     * from outside. */
     float base = 1.0f - p->coat_e_o;
     c.diffuse *= base;
     c.conductor *= base;
     c.interface *= base;
+#ifdef PATHCL_HAS_SHEEN
+    c.sheen *= base;
+#endif
     c.coat = p->inside ? 0.0f : p->coat_e_o;
     if (!p->inside && p->coat_alpha >= ALPHA_DELTA)
         c.coat = fmax(c.coat, LOBE_ESTIMATE_FLOOR * p->coat);
-    float sum = c.diffuse + c.conductor + c.interface + c.coat;
-    if (sum > 0.0f)
-        c.coat /= sum;
-#else
-    float sum = c.diffuse + c.conductor + c.interface;
+    sum += c.coat;
 #endif
+#ifdef PATHCL_HAS_SHEEN
+    sum += c.sheen;
+#endif
+    sum += c.diffuse + c.conductor + c.interface;
     if (sum > 0.0f) {
+#ifdef PATHCL_HAS_CLEARCOAT
+        c.coat /= sum;
+#endif
+#ifdef PATHCL_HAS_SHEEN
+        c.sheen /= sum;
+#endif
         c.diffuse /= sum;
         c.conductor /= sum;
         c.interface /= sum;

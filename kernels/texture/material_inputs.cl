@@ -73,6 +73,12 @@ static inline void apply_material_inputs(Material* m, SurfacePoint* sp, float3 w
     if (m->textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS] != TEXTURE_NONE)
         m->clearcoat_roughness *= texture_at(kd, m->textures[TEXTURE_SLOT_CLEARCOAT_ROUGHNESS], tri, hit.b1, hit.b2).y;
 #endif
+#ifdef PATHCL_HAS_SHEEN
+    if (m->textures[TEXTURE_SLOT_SHEEN_COLOR] != TEXTURE_NONE)
+        m->sheen.xyz *= texture_at(kd, m->textures[TEXTURE_SLOT_SHEEN_COLOR], tri, hit.b1, hit.b2).xyz;
+    if (m->textures[TEXTURE_SLOT_SHEEN_ROUGHNESS] != TEXTURE_NONE)
+        m->sheen.w *= texture_at(kd, m->textures[TEXTURE_SLOT_SHEEN_ROUGHNESS], tri, hit.b1, hit.b2).w;
+#endif
 #ifdef PATHCL_HAS_NORMAL_MAPS
     /* The tangent frame belongs to the front (counter-clockwise) side; map there, then turn
      * the result to wo's side like the interpolated normal. */

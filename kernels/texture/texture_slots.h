@@ -15,6 +15,8 @@
 #define TEXTURE_SLOT_CLEARCOAT 7           /* R scales clearcoatFactor */
 #define TEXTURE_SLOT_CLEARCOAT_ROUGHNESS 8 /* G scales clearcoatRoughnessFactor */
 #define TEXTURE_SLOT_CLEARCOAT_NORMAL 9    /* the coat's tangent-space normal, scaled by clearcoat_normal_scale */
-#define TEXTURE_SLOT_COUNT 10
+#define TEXTURE_SLOT_SHEEN_COLOR 10        /* RGB (sRGB) scales sheenColorFactor */
+#define TEXTURE_SLOT_SHEEN_ROUGHNESS 11    /* A scales sheenRoughnessFactor */
+#define TEXTURE_SLOT_COUNT 12
 
 #endif

@@ -57,6 +57,7 @@ typedef glm::dvec3 pcl_real3;
 #define PATHCL_END }
 
 /* The OpenCL C built-ins shared formulas use, for the host. */
+using std::exp;
 using std::fabs;
 using std::floor;
 using std::fmax;

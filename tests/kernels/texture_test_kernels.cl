@@ -19,12 +19,12 @@ __kernel void test_texture_sample(PATHCL_KERNEL_PARAMS __global const float4* qu
 /* The material at a hit, as the integrator sees it: hit = (b1, b2, as_float(triangle),
  * unused) seen along direction -wo. Writes the shading normal, the textured base colour,
  * emission and specular colour, (metallic, roughness, specular, transmission), the clear
- * coat's (factor, roughness, n_coat.ng) and its normal. */
+ * coat's (factor, roughness, n_coat.ng) and its normal, and the sheen (colour, roughness). */
 __kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* hits, __global const float4* wos,
                                    __global float4* out_normal, __global float4* out_base_color,
                                    __global float4* out_emission, __global float4* out_specular_color,
                                    __global float4* out_params, __global float4* out_coat,
-                                   __global float4* out_coat_normal)
+                                   __global float4* out_coat_normal, __global float4* out_sheen)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -47,4 +47,5 @@ __kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* h
     out_params[i] = (float4)(m.metallic, m.roughness, m.specular_color.w, m.transmission);
     out_coat[i] = (float4)(m.clearcoat, m.clearcoat_roughness, dot(sp.n_coat, sp.ng), 0.0f);
     out_coat_normal[i] = (float4)(sp.n_coat, 0.0f);
+    out_sheen[i] = m.sheen;
 }

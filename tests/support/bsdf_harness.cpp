@@ -21,8 +21,9 @@ pcl_float4 f4(const glm::dvec3& v)
 
 const cl::Program& full_program()
 {
-    static cl::Program p = test::build_test_program(
-        "bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER | FEATURE_CLEARCOAT);
+    static cl::Program p =
+        test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER |
+                                                             FEATURE_CLEARCOAT | FEATURE_SHEEN);
     return p;
 }
 
@@ -48,6 +49,7 @@ Material make_material(const MaterialSpec& s)
     m.smooth_layer_average = static_cast<float>(smooth_layer_average(s.ior));
     m.clearcoat = s.clearcoat;
     m.clearcoat_roughness = s.clearcoat_roughness;
+    m.sheen = {s.sheen.x, s.sheen.y, s.sheen.z, s.sheen_roughness};
     return m;
 }
 
@@ -105,6 +107,21 @@ std::vector<MaterialSpec> reflective_materials()
     coated_metal.clearcoat_roughness = 0.15f;
     MaterialSpec lacquer = plastic;
     lacquer.clearcoat = 0.8f;
+    // KHR_materials_sheen: velvet (a dark Lambertian base), a smooth sheen over a plastic and
+    // a smoother one over a rough metal (both with albedos above 1 near grazing, so the
+    // lobe's division by max(1, E) is exercised), and a rough sheen under a clear coat.
+    MaterialSpec velvet = lambertian({0.3f, 0.05f, 0.05f});
+    velvet.sheen = {0.9f, 0.9f, 0.9f};
+    velvet.sheen_roughness = 0.3f;
+    MaterialSpec sheen_plastic = plastic;
+    sheen_plastic.sheen = {1.0f, 0.8f, 0.6f};
+    sheen_plastic.sheen_roughness = 0.1f;
+    MaterialSpec sheen_metal = conductor(0.5f, {0.9f, 0.6f, 0.3f});
+    sheen_metal.sheen = {0.6f, 0.6f, 1.0f};
+    sheen_metal.sheen_roughness = 0.05f;
+    MaterialSpec coated_sheen = coated_plastic;
+    coated_sheen.sheen = {0.5f, 0.5f, 1.0f};
+    coated_sheen.sheen_roughness = 0.6f;
     return {lambertian({0.5f, 0.6f, 0.7f}),
             conductor(0.2f),
             conductor(0.8f, {0.9f, 0.6f, 0.3f}),
@@ -114,7 +131,11 @@ std::vector<MaterialSpec> reflective_materials()
             spec_gloss,
             coated_plastic,
             coated_metal,
-            lacquer};
+            lacquer,
+            velvet,
+            sheen_plastic,
+            sheen_metal,
+            coated_sheen};
 }
 
 glm::dvec3 incident(double c)

@@ -14,7 +14,7 @@
 
 namespace pathcl::test {
 
-// The program with every closure (glossy, transmission, ior 0, clear coat), built once.
+// The program with every closure (glossy, transmission, ior 0, clear coat, sheen), built once.
 const cl::Program& full_program();
 // The program a scene of Lambertian materials only gets (no glossy or transmission code).
 const cl::Program& lambertian_program();
@@ -26,6 +26,8 @@ struct MaterialSpec {
     float specular = 1.0f;
     glm::vec3 specular_color{1.0f};
     float clearcoat = 0.0f, clearcoat_roughness = 0.0f;
+    glm::vec3 sheen{0.0f}; // KHR_materials_sheen colour and roughness
+    float sheen_roughness = 0.0f;
 };
 
 Material make_material(const MaterialSpec& s);
@@ -33,8 +35,8 @@ MaterialSpec conductor(float roughness, glm::vec3 base = glm::vec3(1.0f));
 MaterialSpec dielectric(float roughness, float ior = 1.5f, bool thin = false);
 MaterialSpec lambertian(glm::vec3 base);
 // Lambertian, rough conductors, plastics (plain and tinted specular), a part metal, a
-// specular-glossiness (ior 0) material and three clear-coated ones: the reflective
-// materials the eval and energy tests sweep.
+// specular-glossiness (ior 0) material, three clear-coated ones and four with a sheen: the
+// reflective materials the eval and energy tests sweep.
 std::vector<MaterialSpec> reflective_materials();
 
 // wo at angle theta from +Z with cos theta = c, in the xz plane turned by 0.3 rad about Z

@@ -338,4 +338,12 @@ void set_clearcoat(tinygltf::Material& m, double factor, double roughness)
     m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(o);
 }
 
+void set_sheen(tinygltf::Material& m, const std::vector<double>& color, double roughness)
+{
+    tinygltf::Value::Object o;
+    o["sheenColorFactor"] = json_numbers(color);
+    o["sheenRoughnessFactor"] = tinygltf::Value(roughness);
+    m.extensions["KHR_materials_sheen"] = tinygltf::Value(o);
+}
+
 } // namespace pathcl::test

@@ -91,5 +91,7 @@ tinygltf::Value json_numbers(const std::vector<double>& values);
 tinygltf::Value texture_info(int index, int texcoord = 0);
 // Gives material `m` KHR_materials_clearcoat with these factors.
 void set_clearcoat(tinygltf::Material& m, double factor, double roughness);
+// Gives material `m` KHR_materials_sheen with these factors.
+void set_sheen(tinygltf::Material& m, const std::vector<double>& color, double roughness);
 
 } // namespace pathcl::test

@@ -73,6 +73,8 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
     r.eta = r.inside ? static_cast<double>(1.0f / m.ior) : m.ior;
     r.coat = m.clearcoat;
     r.coat_alpha = static_cast<double>(m.clearcoat_roughness) * m.clearcoat_roughness;
+    r.sheen_color = {m.sheen.x, m.sheen.y, m.sheen.z};
+    r.sheen_roughness = m.sheen.w;
     return r;
 }
 
@@ -260,21 +262,32 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
         if (has_interface)
             l.interface = std::max(l.interface, floor * (1.0 - metallic));
     }
-    // Under a coat the base lobes see what it does not reflect from wo; the coat reflects
-    // only from outside.
+    // Under a sheen the base lobes see what it does not reflect from wo (its albedo capped
+    // at 1); the sheen reflects only from outside.
+    if (max3(sheen_color) > 0.0) {
+        double e = std::min(sheen_albedo(cos_o), 1.0);
+        l.diffuse *= 1.0 - max3(sheen_color) * e;
+        l.conductor *= 1.0 - max3(sheen_color) * e;
+        l.interface *= 1.0 - max3(sheen_color) * e;
+        l.sheen = inside ? 0.0 : std::max(mean3(sheen_color) * e, floor * max3(sheen_color));
+    }
+    // Under a coat the base lobes and the sheen see what it does not reflect from wo; the
+    // coat reflects only from outside.
     double coat_o = coat > 0.0 ? coat * coat_albedo(cos_o) : 0.0;
     l.diffuse *= 1.0 - coat_o;
     l.conductor *= 1.0 - coat_o;
     l.interface *= 1.0 - coat_o;
+    l.sheen *= 1.0 - coat_o;
     l.coat = inside ? 0.0 : coat_o;
     if (!inside && coat > 0.0 && coat_alpha >= kAlphaDelta)
         l.coat = std::max(l.coat, floor * coat);
-    double sum = l.diffuse + l.conductor + l.interface + l.coat;
+    double sum = l.diffuse + l.conductor + l.interface + l.coat + l.sheen;
     if (sum > 0.0) {
         l.diffuse /= sum;
         l.conductor /= sum;
         l.interface /= sum;
         l.coat /= sum;
+        l.sheen /= sum;
     }
     cached_cos_o_ = cos_o;
     cached_lobes_ = l;
@@ -307,9 +320,44 @@ double ReferenceBsdf::coat_scale(double cos_o, double cos_i) const
     return 1.0 - coat * std::max(coat_albedo(std::abs(cos_o)), coat_albedo(std::abs(cos_i)));
 }
 
+double ReferenceBsdf::sheen_albedo(double mu) const
+{
+    return table_at(layer_albedo_table(), LAYER_TABLE_SHEEN, LAYER_MU_RES, sheen_roughness * (LAYER_ROUGH_RES - 1),
+                    LAYER_ROUGH_RES, mu_col(mu));
+}
+
+// KHR_materials_sheen's implementation notes: the "Charlie" distribution and visibility.
+double ReferenceBsdf::sheen_lobe(const glm::dvec3& wo, const glm::dvec3& wi) const
+{
+    if (wo.z <= 0.0 || wi.z <= 0.0)
+        return 0.0;
+    double a_s = std::max(sheen_roughness * sheen_roughness, 1e-3); // SHEEN_ALPHA_MIN
+    glm::dvec3 h = glm::normalize(wo + wi);
+    double sin_h = std::sqrt(std::max(0.0, 1.0 - h.z * h.z));
+    double d = (2.0 + 1.0 / a_s) * std::pow(sin_h, 1.0 / a_s) / (2.0 * kPi);
+    auto l = [&](double x) {
+        double t = (1.0 - a_s) * (1.0 - a_s);
+        auto mix = [&](double a, double b) { return a + (b - a) * t; };
+        return mix(21.5473, 25.3245) / (1.0 + mix(3.82987, 3.32435) * std::pow(x, mix(0.19823, 0.16801))) +
+               mix(-1.97760, -1.27393) * x + mix(-4.32054, -4.85967);
+    };
+    auto lambda = [&](double c) { return c < 0.5 ? std::exp(l(c)) : std::exp(2.0 * l(0.5) - l(1.0 - c)); };
+    double visibility = 1.0 / ((1.0 + lambda(wo.z) + lambda(wi.z)) * 4.0 * wo.z * wi.z);
+    return d * visibility * wi.z;
+}
+
 glm::dvec3 ReferenceBsdf::f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
 {
-    glm::dvec3 f = base_f_cos(wo, wi) * coat_scale(std::max(wo.z, 0.0), wi.z);
+    glm::dvec3 f = base_f_cos(wo, wi);
+    if (max3(sheen_color) > 0.0) {
+        // The base keeps 1 - max3(colour) min(1, E), the lobe is divided by max(1, E), E the
+        // larger of the two directions' sheen albedos.
+        double e = std::max(sheen_albedo(std::abs(wo.z)), sheen_albedo(std::abs(wi.z)));
+        f *= 1.0 - max3(sheen_color) * std::min(e, 1.0);
+        if (!inside)
+            f += sheen_color * (sheen_lobe(wo, wi) / std::max(e, 1.0));
+    }
+    f *= coat_scale(std::max(wo.z, 0.0), wi.z);
     if (coat > 0.0 && coat_alpha >= kAlphaDelta && !inside && wo.z > 0.0 && wi.z > 0.0) {
         glm::dvec3 h = glm::normalize(wo + wi);
         double c = glm::dot(wo, h);
@@ -368,6 +416,8 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     Lobes l = lobes(std::max(wo.z, 0.0));
     if (wi.z > 0.0) {
         double p = l.diffuse * wi.z / kPi; // diffuse and multiple-scattering lobes
+        if (wo.z > 0.0)
+            p += l.sheen / (2.0 * kPi); // the sheen, uniform over the hemisphere
         if (l.coat > 0.0 && coat_alpha >= kAlphaDelta && wo.z > 0.0) {
             glm::dvec3 h = glm::normalize(wo + wi);
             p += l.coat * visible_normal_pdf(wo, h, coat_alpha) / (4.0 * glm::dot(wo, h));

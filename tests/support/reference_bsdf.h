@@ -26,6 +26,8 @@ struct ReferenceBsdf {
     bool thin = true;
     bool inside = false;                 // wo inside a solid: no diffuse base
     double coat = 0.0, coat_alpha = 0.0; // KHR_materials_clearcoat factor and GGX alpha
+    glm::dvec3 sheen_color{0.0};         // KHR_materials_sheen colour (0: none) and roughness
+    double sheen_roughness = 0.0;
 
     // The material as the kernel reads it, hit from the front (eta = ior) or the back.
     static ReferenceBsdf from_material(const Material& m, bool front_face);
@@ -40,7 +42,7 @@ struct ReferenceBsdf {
     // Lobe selection probabilities at cos theta_o (delta lobes included): the diffuse
     // base (with the conductor's multiple scattering), the conductor, the interface.
     struct Lobes {
-        double diffuse, conductor, interface, coat;
+        double diffuse, conductor, interface, coat, sheen;
     };
     Lobes lobes(double cos_o) const;
     // Probability that the interface reflects (not refracts) at a facet seen at cos c.
@@ -78,6 +80,12 @@ public:
     // that scales every base lobe.
     double coat_albedo(double cos_theta) const;
     double coat_scale(double cos_o, double cos_i) const;
+
+    // The sheen: its lobe's directional albedo with colour 1 (from the table, as the kernels
+    // read it), and its lobe f cos with colour 1, D G / (4 cos_o), from the extension's
+    // formulas (not divided by max(1, E)).
+    double sheen_albedo(double cos_theta) const;
+    double sheen_lobe(const glm::dvec3& wo, const glm::dvec3& wi) const;
 
 private:
     // Everything but the coat (the base material's lobes, unscaled).
