@@ -189,7 +189,7 @@ TEST(BsdfEnergy, SheenReflectsItsAlbedoAndNeverMoreThanItReceives)
 {
     // Where the lobe's albedo E_s stays below 1 (sheenRoughness 0.3 and above) a white sheen
     // alone reflects exactly E_s(cos_o): its samples' mean equals the host's quadrature of
-    // the extension's lobe (not the table). Smoother sheens reflect up to 4x what they
+    // the extension's lobe (not the table). Smoother sheens reflect up to 8x what they
     // receive at grazing angles as written; divided by max(1, E_s) they reflect at most 1.
     // A white sheen over a white Lambertian reflects at most 1. Broken variants seen
     // failing: the lobe's 1 / (4 cos_o) as 1 / (4 cos_o cos_i) (the albedos differ from the

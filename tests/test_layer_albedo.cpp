@@ -185,6 +185,16 @@ TEST(LayerAlbedo, TableMatchesTheIntegrationAtItsGridPoints)
                 EXPECT_NEAR(t[LAYER_TABLE_GLASS_IN + at], integrate_dielectric_albedo(mu, r, 1.0 / ior, 64), 1e-3)
                     << i << " " << j << " " << k;
             }
+    // The sheen's albedo: the smoothest row at grazing, and a few more, with eight times the
+    // panels (its steepest entries, at roughness 0 and cos 1e-6, included).
+    for (int i : {0, 1, 3, 17, 31})
+        for (int j : {0, 1, 9, 31}) {
+            double mu = std::max(std::pow(static_cast<double>(i) / (LAYER_MU_RES - 1), 2.0), 1e-6);
+            double r = static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
+            float e = t[LAYER_TABLE_SHEEN + j * LAYER_MU_RES + i];
+            EXPECT_NEAR(e, integrate_sheen_albedo(mu, r, 64), 1e-4 * std::max(1.0, static_cast<double>(e)))
+                << i << " " << j;
+        }
 }
 
 } // namespace

@@ -74,7 +74,7 @@
  *                + (1 - max3(s) min(1, max(E_s(cos_o), E_s(|cos_i|)))) f_base
  *
  * with E_s the lobe's directional albedo (tabulated, LAYER_TABLE_SHEEN). As the extension
- * writes it the lobe reflects up to 4x what it receives at grazing angles for smooth
+ * writes it the lobe reflects up to 8x what it receives at grazing angles for smooth
  * sheens (E_s > 1); the division keeps it reciprocal and its albedo at most 1, and is 1
  * wherever E_s <= 1. It reflects only from outside a solid but scales the base from both
  * sides, as the coat does.

@@ -147,7 +147,7 @@ static inline void coat_eval(const BsdfParams* p, const SurfacePoint* sp, float3
 /* The sheen over the base's f_cos and pdf: the base scaled by what the sheen passes
  * (sheen_base_scale), plus the sheen's own lobe on the shading normal, divided by
  * max(1, E_s(cos_o), E_s(|cos_i|)): the lobe as the extension writes it reflects up to
- * four times what it receives at grazing angles when sheenRoughness is below about 0.3,
+ * eight times what it receives at grazing angles when sheenRoughness is below about 0.3,
  * and with the division it never reflects more than it receives, and stays reciprocal.
  * It reflects only from outside a solid. */
 static inline void sheen_eval(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi, BsdfEval* e)
