@@ -12,6 +12,22 @@
 #include "sample/warp.cl"
 #include "util/math.cl"
 
+#if defined(PATHCL_HAS_CLEARCOAT) || defined(PATHCL_HAS_SHEEN)
+
+/* A sampled direction s.wi of a lobe sampled in a frame of its own, with its pdf and weight
+ * f cos / pdf over every non-delta lobe (bsdf_eval); no sample where that pdf is 0. */
+static inline BsdfSample weighed_by_every_lobe(const BsdfParams* p, const SurfacePoint* sp, float3 wo, BsdfSample s)
+{
+    BsdfEval e = bsdf_eval(p, sp, wo, s.wi);
+    if (!(e.pdf > 0.0f))
+        return s;
+    s.pdf = e.pdf;
+    s.weight = e.f_cos / e.pdf;
+    return s;
+}
+
+#endif
+
 #ifdef PATHCL_HAS_CLEARCOAT
 
 /* A sample of the clear coat's reflection: a visible facet of the coat in its own frame
@@ -36,12 +52,7 @@ static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp
         s.weight = (float3)(p->coat * fresnel_dielectric(wo_c.z, COAT_IOR) / s.pdf);
         return s;
     }
-    BsdfEval e = bsdf_eval(p, sp, wo, s.wi);
-    if (!(e.pdf > 0.0f))
-        return s;
-    s.pdf = e.pdf;
-    s.weight = e.f_cos / e.pdf;
-    return s;
+    return weighed_by_every_lobe(p, sp, wo, s);
 }
 
 #endif /* PATHCL_HAS_CLEARCOAT */
@@ -63,12 +74,7 @@ static inline BsdfSample sheen_sample(const BsdfParams* p, const SurfacePoint* s
     s.wi = to_world((float3)(r * cos_phi, r * sin_phi, z), t, b, sp->ns);
     if (!(z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
         return s;
-    BsdfEval e = bsdf_eval(p, sp, wo, s.wi);
-    if (!(e.pdf > 0.0f))
-        return s;
-    s.pdf = e.pdf;
-    s.weight = e.f_cos / e.pdf;
-    return s;
+    return weighed_by_every_lobe(p, sp, wo, s);
 }
 
 /* What a delta sample of the base keeps under the sheen. */
