@@ -57,11 +57,6 @@ void set_vertex_alpha(test::GltfBuilder& b, int mesh, const std::vector<float>& 
                     b.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, alpha.size()));
 }
 
-tinygltf::Material& material(test::GltfBuilder& b, int index)
-{
-    return b.model.materials[static_cast<std::size_t>(index)];
-}
-
 // ---------------------------------------------------------------------------------------
 // Host
 
@@ -71,11 +66,11 @@ TEST(Alpha, ModeCutoffAndFactorAreRead)
     int opaque = add_card(b, 0.0f, 0.5f);
     int mask = add_card(b, 1.0f, 0.5f);
     int blend = add_card(b, 2.0f, 0.5f);
-    material(b, mask).alphaMode = "MASK";
-    material(b, mask).alphaCutoff = 0.25;
-    material(b, mask).pbrMetallicRoughness.baseColorFactor[3] = 0.2;
-    material(b, blend).alphaMode = "BLEND";
-    material(b, blend).pbrMetallicRoughness.baseColorFactor[3] = 0.6;
+    b.material(mask).alphaMode = "MASK";
+    b.material(mask).alphaCutoff = 0.25;
+    b.material(mask).pbrMetallicRoughness.baseColorFactor[3] = 0.2;
+    b.material(blend).alphaMode = "BLEND";
+    b.material(blend).pbrMetallicRoughness.baseColorFactor[3] = 0.6;
     Scene s = import_gltf(b.model, "alpha.gltf");
     const SceneMaterial& o = s.materials[static_cast<std::size_t>(opaque)];
     const SceneMaterial& m = s.materials[static_cast<std::size_t>(mask)];
@@ -93,7 +88,7 @@ TEST(Alpha, BadValuesAreOneLineErrors)
 {
     auto error_with = [](const std::function<void(tinygltf::Material&)>& edit) {
         test::GltfBuilder b;
-        edit(material(b, add_card(b, 0.0f, 0.5f)));
+        edit(b.material(add_card(b, 0.0f, 0.5f)));
         return test::error_of([&] { import_gltf(b.model, "alpha.gltf"); });
     };
     std::string e = error_with([](tinygltf::Material& m) { m.alphaMode = "blend"; });
@@ -135,7 +130,7 @@ TEST(Alpha, OnlyTrianglesAlphaCanCutAreTested)
     for (const Case& c : cases) {
         test::GltfBuilder b;
         int mesh = 0;
-        tinygltf::Material& m = material(b, add_card(b, 0.0f, 0.5f, &mesh));
+        tinygltf::Material& m = b.material(add_card(b, 0.0f, 0.5f, &mesh));
         m.alphaMode = c.mode;
         m.alphaCutoff = c.cutoff;
         m.pbrMetallicRoughness.baseColorFactor[3] = c.factor;
@@ -198,7 +193,7 @@ TEST(Alpha, MaskedCardIsSeenAndCastsItsShadowOnlyWhereItIsOpaque)
         test::GltfBuilder b;
         add_sun(b);
         int mesh = 0;
-        tinygltf::Material& m = material(b, add_card(b, 1.0f, static_cast<float>(kCard), &mesh));
+        tinygltf::Material& m = b.material(add_card(b, 1.0f, static_cast<float>(kCard), &mesh));
         m.alphaMode = "MASK";
         if (by_texture)
             m.pbrMetallicRoughness.baseColorTexture.index = b.add_texture(
@@ -224,7 +219,7 @@ TEST(Alpha, HalfCoverageSheetPassesHalfTheLight)
     for (double a : {0.5, 0.25}) {
         test::GltfBuilder b;
         add_sun(b);
-        tinygltf::Material& m = material(b, add_card(b, 1.0f, static_cast<float>(kCard)));
+        tinygltf::Material& m = b.material(add_card(b, 1.0f, static_cast<float>(kCard)));
         m.alphaMode = "BLEND";
         m.pbrMetallicRoughness.baseColorFactor[3] = a;
         std::string what = "alpha " + std::to_string(a) + ", x = ";
@@ -244,7 +239,7 @@ TEST(Alpha, StackedSheetsCoverIndependently)
     test::GltfBuilder b;
     b.add_light_node(b.add_light("directional", glm::vec3(1.0f), 1.0), {0.0, 5.0, 0.0}, kLookDown);
     for (float y : {1.0f, 1.5f}) {
-        tinygltf::Material& m = material(b, add_card(b, y, 0.0f));
+        tinygltf::Material& m = b.material(add_card(b, y, 0.0f));
         m.alphaMode = "BLEND";
         m.pbrMetallicRoughness.baseColorFactor[3] = 0.5;
     }
@@ -269,13 +264,13 @@ TEST(Alpha, CutEmitterBehindASheetRendersTheSameByEveryStrategy)
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x)
             checker.insert(checker.end(), {255, 255, 255, static_cast<std::uint8_t>((x + y) % 2 == 0 ? 255 : 0)});
-    material(b, light_mat).alphaMode = "MASK";
-    material(b, light_mat).pbrMetallicRoughness.baseColorTexture.index =
+    b.material(light_mat).alphaMode = "MASK";
+    b.material(light_mat).pbrMetallicRoughness.baseColorTexture.index =
         b.add_texture(b.add_png_image(4, 4, checker), b.add_sampler(kNearest, kClamp, kClamp));
     b.add_root(b.add_node(light));
     int sheet_mat = b.add_material(glm::vec3(0.5f), glm::vec3(0.0f), true);
-    material(b, sheet_mat).alphaMode = "BLEND";
-    material(b, sheet_mat).pbrMetallicRoughness.baseColorFactor[3] = 0.4;
+    b.material(sheet_mat).alphaMode = "BLEND";
+    b.material(sheet_mat).pbrMetallicRoughness.baseColorFactor[3] = 0.4;
     b.add_root(b.add_node(b.add_quad_mesh({{-2, 0.7f, 2}, {0, 0.7f, 2}, {0, 0.7f, -2}, {-2, 0.7f, -2}}, sheet_mat)));
     b.add_camera_node(b.add_perspective_camera(1.2), {0.0, 0.9, 3.0}, {-0.1305, 0.0, 0.0, 0.9914});
     Scene scene = import_gltf(b.model, "cut-emitter.gltf");

@@ -46,11 +46,6 @@ void expect_strategies_agree(const Scene& scene)
     test::expect_same_image_by_strategies(scene, o, {Strategy::Mis, Strategy::Nee}, 512, 1);
 }
 
-tinygltf::Material& material(test::GltfBuilder& b, int index)
-{
-    return b.model.materials[static_cast<std::size_t>(index)];
-}
-
 TEST(RenderClearcoat, CoatedSpheresRenderTheSameByBsdfSamplingAndMis)
 {
     // A rough coat over a rough plastic, a smooth coat over a rough metal. Broken variant
@@ -61,13 +56,13 @@ TEST(RenderClearcoat, CoatedSpheresRenderTheSameByBsdfSamplingAndMis)
     plastic.base_color = {0.8f, 0.15f, 0.1f};
     plastic.roughness = 0.6;
     int coated_plastic = b.add_pbr_material(plastic);
-    test::set_clearcoat(material(b, coated_plastic), 1.0, 0.25);
+    test::set_clearcoat(b.material(coated_plastic), 1.0, 0.25);
     test::GltfBuilder::Pbr gold;
     gold.base_color = {0.95f, 0.7f, 0.3f};
     gold.metallic = 1.0;
     gold.roughness = 0.5;
     int lacquered_gold = b.add_pbr_material(gold);
-    test::set_clearcoat(material(b, lacquered_gold), 0.8, 0.0);
+    test::set_clearcoat(b.material(lacquered_gold), 0.8, 0.0);
     expect_strategies_agree(two_spheres(b, coated_plastic, lacquered_gold, FEATURE_CLEARCOAT, "coated-spheres.gltf"));
 }
 
@@ -78,14 +73,14 @@ TEST(RenderSheen, SheenSpheresRenderTheSameByBsdfSamplingAndMis)
     // of bsdf_eval.
     test::GltfBuilder b;
     int velvet = b.add_material(glm::vec3(0.3f, 0.03f, 0.05f));
-    test::set_sheen(material(b, velvet), {1.0, 1.0, 1.0}, 0.35);
+    test::set_sheen(b.material(velvet), {1.0, 1.0, 1.0}, 0.35);
     test::GltfBuilder::Pbr gold;
     gold.base_color = {0.95f, 0.7f, 0.3f};
     gold.metallic = 1.0;
     gold.roughness = 0.5;
     int sheen_gold = b.add_pbr_material(gold);
-    test::set_sheen(material(b, sheen_gold), {0.3, 0.5, 1.0}, 0.1);
-    test::set_clearcoat(material(b, sheen_gold), 0.5, 0.3);
+    test::set_sheen(b.material(sheen_gold), {0.3, 0.5, 1.0}, 0.1);
+    test::set_clearcoat(b.material(sheen_gold), 0.5, 0.3);
     expect_strategies_agree(two_spheres(b, velvet, sheen_gold, FEATURE_SHEEN, "sheen-spheres.gltf"));
 }
 

@@ -28,7 +28,7 @@ int add_unlit_quad(test::GltfBuilder& b, float y, bool facing_down)
     std::vector<glm::vec3> up = {{-1, y, -1}, {-1, y, 1}, {1, y, 1}, {1, y, -1}};
     std::vector<glm::vec3> down = {{-1, y, -1}, {1, y, -1}, {1, y, 1}, {-1, y, 1}};
     int mat = b.add_material(kUnlitColour);
-    tinygltf::Material& m = b.model.materials[static_cast<std::size_t>(mat)];
+    tinygltf::Material& m = b.material(mat);
     m.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object{});
     m.emissiveFactor = {5.0, 5.0, 5.0}; // ignored: an unlit material is no light
     int mesh = b.add_quad_mesh(facing_down ? down : up, mat);

@@ -42,7 +42,7 @@ int add_absorbing_glass(test::GltfBuilder& b, double ior, glm::dvec3 color, doub
     volume["attenuationColor"] = tinygltf::Value(
         tinygltf::Value::Array{tinygltf::Value(color.x), tinygltf::Value(color.y), tinygltf::Value(color.z)});
     volume["attenuationDistance"] = tinygltf::Value(distance);
-    b.model.materials[static_cast<std::size_t>(mat)].extensions["KHR_materials_volume"] = tinygltf::Value(volume);
+    b.material(mat).extensions["KHR_materials_volume"] = tinygltf::Value(volume);
     return mat;
 }
 

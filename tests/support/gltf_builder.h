@@ -29,6 +29,8 @@ public:
     // component_type: TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE/SHORT/INT
     int add_indices(const std::vector<std::uint32_t>& idx, int component_type);
 
+    // The material an add_*material call returned, to edit further.
+    tinygltf::Material& material(int index) { return model.materials[static_cast<std::size_t>(index)]; }
     // An exactly Lambertian material (metallic 0, KHR_materials_specular specularFactor 0).
     int add_material(const glm::vec3& base_color, const glm::vec3& emission = glm::vec3(0.0f),
                      bool double_sided = false, double emissive_strength = 1.0);

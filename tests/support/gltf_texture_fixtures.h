@@ -61,7 +61,7 @@ inline const std::vector<unsigned char> kPngGreyAlpha8 = {
 struct Quad {
     GltfBuilder b;
     int material = 0, mesh = 0;
-    tinygltf::Material& mat() { return b.model.materials[static_cast<std::size_t>(material)]; }
+    tinygltf::Material& mat() { return b.material(material); }
     tinygltf::Primitive& prim() { return b.model.meshes[static_cast<std::size_t>(mesh)].primitives[0]; }
 };
 
