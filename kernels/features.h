@@ -32,7 +32,8 @@
 #define FEATURE_CLEARCOAT (1u << 17)         /* a material with KHR_materials_clearcoat clearcoatFactor > 0 */
 #define FEATURE_INSTANCES (1u << 18)         /* a mesh stored once and drawn by instances (two-level BVH) */
 #define FEATURE_SHEEN (1u << 19)             /* a material with a KHR_materials_sheen colour above 0 */
-#define FEATURE_ALL ((1u << 20) - 1u)
+#define FEATURE_ANISOTROPY (1u << 20)        /* a material with KHR_materials_anisotropy strength above 0 */
+#define FEATURE_ALL ((1u << 21) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -100,13 +101,16 @@
 #if PATHCL_FEATURES & FEATURE_SHEEN
 #define PATHCL_HAS_SHEEN
 #endif
+#if PATHCL_FEATURES & FEATURE_ANISOTROPY
+#define PATHCL_HAS_ANISOTROPY
+#endif
 
 /* Derived guards. */
 #if PATHCL_FEATURES & (FEATURE_AREA_LIGHTS | FEATURE_POINT_LIGHTS | FEATURE_SPOT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS | \
                        FEATURE_SPHERE_LIGHTS | FEATURE_ENVIRONMENT)
 #define PATHCL_HAS_LIGHTS /* next event estimation */
 #endif
-#if PATHCL_FEATURES & (FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_CLEARCOAT | FEATURE_SHEEN)
+#if PATHCL_FEATURES & (FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_CLEARCOAT | FEATURE_SHEEN | FEATURE_ANISOTROPY)
 #define PATHCL_FULL_BSDF /* the whole glTF BSDF; else Lambertian only */
 #endif
 #if PATHCL_FEATURES & (FEATURE_TEXTURES | FEATURE_VERTEX_COLORS)

@@ -81,9 +81,9 @@ typedef struct {
     pcl_float4 uv2;  /* xy: (u, v) of vertex 2; zw unused */
 } TriangleTexcoords;
 
-/* Vertex tangents for normal mapping, world space: 48 bytes. xyz is the unit tangent
- * (the direction of increasing u), w the handedness: bitangent = w * cross(n, t). Zero
- * where the triangle's material has no normal texture. */
+/* Vertex tangents for normal mapping and anisotropy, world space: 48 bytes. xyz is the
+ * unit tangent (the direction of increasing u), w the handedness: bitangent = w * cross(n,
+ * t). Zero where the triangle's material has neither a normal texture nor anisotropy. */
 typedef struct {
     pcl_float4 t0, t1, t2;
 } TriangleTangents;
@@ -145,8 +145,8 @@ typedef struct {
 #define TEXTURE_NONE (-1)
 
 /* glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
- * _volume, _clearcoat and _sheen, as the kernels read it (see kernels/closure/bsdf.cl for
- * the model): 176 bytes.
+ * _volume, _clearcoat, _sheen and _anisotropy, as the kernels read it (see
+ * kernels/closure/bsdf.cl for the model): 192 bytes.
  * Each texture slot indexes the TextureView array (TEXTURE_NONE when absent); a texture
  * value multiplies its factor, as glTF defines (kernels/texture/material_inputs.cl
  * applies them). */
@@ -168,8 +168,10 @@ typedef struct {
     pcl_float clearcoat;                  /* KHR_materials_clearcoat clearcoatFactor (0: no coat) */
     pcl_float clearcoat_roughness;        /* clearcoatRoughnessFactor, perceptual */
     pcl_float clearcoat_normal_scale;     /* clearcoatNormalTexture.scale */
-    pcl_int pad0;
     pcl_float4 sheen; /* KHR_materials_sheen: rgb sheenColorFactor (0: no sheen), w sheenRoughnessFactor */
+    /* KHR_materials_anisotropy: x anisotropyStrength (0: isotropic), (y, z) the direction
+     * (cos, sin of anisotropyRotation) in the tangent, bitangent plane; w unused */
+    pcl_float4 anisotropy;
 } Material;
 
 /* Light types */

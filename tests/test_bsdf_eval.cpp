@@ -71,7 +71,7 @@ TEST(BsdfEval, AgreesWithTheReferenceModelEverywhere)
         for (bool front : {true, false}) {
             Material m = make_material(materials[k]);
             test::ReferenceBsdf ref = test::ReferenceBsdf::from_material(m, front);
-            std::vector<pcl_float4> r = eval_bsdf(full_program(), m, front, wo_world, wi_world, normal);
+            std::vector<pcl_float4> r = eval_bsdf(full_program(), m, front, wo_world, wi_world, normal, t);
             std::size_t bad = 0;
             std::string first;
             for (std::size_t i = 0; i < wo.size(); ++i) {

@@ -135,7 +135,7 @@ TEST(GltfMaterials, PrimitiveWithoutMaterialGetsTheGltfDefaultMaterial)
 TEST(GltfWarnings, EachIgnoredFeatureIsOneWarningLine)
 {
     GltfBuilder b = one_triangle(kTilted);
-    b.model.extensionsUsed = {"KHR_materials_anisotropy", "KHR_materials_specular", "KHR_materials_anisotropy"};
+    b.model.extensionsUsed = {"KHR_materials_iridescence", "KHR_materials_specular", "KHR_materials_iridescence"};
     b.model.materials[0].alphaMode = "MASK";
     tinygltf::Value::Object volume;
     volume["attenuationDistance"] = tinygltf::Value(2.0);
@@ -144,7 +144,8 @@ TEST(GltfWarnings, EachIgnoredFeatureIsOneWarningLine)
     import(b);
     std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
-    EXPECT_NE(err.find("pathcl: warning: test.gltf: ignores the extension KHR_materials_anisotropy"), std::string::npos)
+    EXPECT_NE(err.find("pathcl: warning: test.gltf: ignores the extension KHR_materials_iridescence"),
+              std::string::npos)
         << err;
     EXPECT_EQ(err.find("KHR_materials_specular"), std::string::npos) << err;
     EXPECT_EQ(err.find("alphaMode"), std::string::npos) << err;

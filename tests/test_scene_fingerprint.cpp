@@ -60,6 +60,17 @@ TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows)
     s.materials[0].textures[TEXTURE_SLOT_SHEEN_ROUGHNESS].image = 0;
     EXPECT_NE(scene_fingerprint(s), rougher) << "sheen roughness texture";
     s = base;
+    s.materials[0].anisotropy_rotation = 1.0f; // no strength: isotropic, nothing changes
+    EXPECT_EQ(scene_fingerprint(s), f) << "rotation of no anisotropy";
+    s.materials[0].anisotropy = 0.5f;
+    const std::uint64_t brushed = scene_fingerprint(s);
+    EXPECT_NE(brushed, f) << "anisotropy strength";
+    s.materials[0].anisotropy_rotation = 1.5f;
+    const std::uint64_t turned = scene_fingerprint(s);
+    EXPECT_NE(turned, brushed) << "anisotropy rotation";
+    s.materials[0].textures[TEXTURE_SLOT_ANISOTROPY].image = 0;
+    EXPECT_NE(scene_fingerprint(s), turned) << "anisotropy texture";
+    s = base;
     s.materials[0].name = "renamed"; // names do not change a render
     EXPECT_EQ(scene_fingerprint(s), f);
 }

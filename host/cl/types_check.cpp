@@ -17,11 +17,11 @@ static_assert(sizeof(TriangleTangents) == 48);
 static_assert(sizeof(TriangleColors) == 48);
 static_assert(sizeof(TextureImage) == 16 && offsetof(TextureImage, format) == 12);
 static_assert(sizeof(TextureView) == 64 && offsetof(TextureView, image) == 32 && offsetof(TextureView, flags) == 48);
-static_assert(sizeof(Material) == 176 && offsetof(Material, absorption) == 48 && offsetof(Material, metallic) == 64 &&
-              offsetof(Material, textures) == 88 && offsetof(Material, smooth_layer_average) == 136 &&
-              offsetof(Material, alpha_cutoff) == 140 && offsetof(Material, clearcoat) == 144 &&
-              offsetof(Material, clearcoat_roughness) == 148 && offsetof(Material, clearcoat_normal_scale) == 152 &&
-              offsetof(Material, sheen) == 160);
+static_assert(sizeof(Material) == 192 && offsetof(Material, absorption) == 48 && offsetof(Material, metallic) == 64 &&
+              offsetof(Material, textures) == 88 && offsetof(Material, smooth_layer_average) == 140 &&
+              offsetof(Material, alpha_cutoff) == 144 && offsetof(Material, clearcoat) == 148 &&
+              offsetof(Material, clearcoat_roughness) == 152 && offsetof(Material, clearcoat_normal_scale) == 156 &&
+              offsetof(Material, sheen) == 160 && offsetof(Material, anisotropy) == 176);
 static_assert(sizeof(TriangleLight) == 64 && offsetof(TriangleLight, area) == 48 &&
               offsetof(TriangleLight, texture) == 56);
 static_assert(sizeof(PointLight) == 16 && sizeof(DirectionalLight) == 16 && sizeof(EnvironmentLight) == 16);

@@ -183,9 +183,9 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
     }
     // A program with every feature compiled in (--specialization all) reads these arrays
-    // for scenes without them: tangents are read only through a normal texture, so any
-    // value does; vertex colours multiply, so white.
-    if (out.features.has(FEATURE_NORMAL_MAPS)) {
+    // for scenes without them: tangents are read only through a normal texture or an
+    // anisotropic material, so any value does; vertex colours multiply, so white.
+    if (out.features.has(FEATURE_NORMAL_MAPS) || out.features.has(FEATURE_ANISOTROPY)) {
         a.tangents.resize(n, TriangleTangents{});
         for (std::size_t i = 0; i < n && !scene.tangents.empty(); ++i) {
             const TriangleTangent& t = scene.tangents[order[i]];

@@ -1,8 +1,10 @@
 // Materials for the device: one Material record per scene material (factors; the texture
 // slots are filled by compile_textures), and the layer albedo tables when a material has
-// a specular layer, transmission, a clear coat or a sheen.
+// a specular layer, transmission, a clear coat, a sheen or anisotropy.
 #include "render/compile_scene.h"
 #include "render/layer_albedo.h"
+
+#include <cmath>
 
 namespace pathcl {
 
@@ -27,6 +29,12 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         dm.clearcoat_roughness = m.clearcoat_roughness;
         dm.clearcoat_normal_scale = m.clearcoat_normal_scale;
         dm.sheen = to_float4(m.has_sheen() ? m.sheen_color : glm::vec3(0.0f), m.sheen_roughness);
+        if (m.has_anisotropy()) {
+            double r = m.anisotropy_rotation;
+            dm.anisotropy = {m.anisotropy, static_cast<float>(std::cos(r)), static_cast<float>(std::sin(r)), 0.0f};
+        } else {
+            dm.anisotropy = {0.0f, 1.0f, 0.0f, 0.0f};
+        }
         for (pcl_int& t : dm.textures)
             t = TEXTURE_NONE;
         dm.smooth_layer_average = static_cast<float>(smooth_layer_average(m.ior));
@@ -34,7 +42,7 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         arrays.materials.push_back(dm);
     }
     if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION) || features.has(FEATURE_CLEARCOAT) ||
-        features.has(FEATURE_SHEEN))
+        features.has(FEATURE_SHEEN) || features.has(FEATURE_ANISOTROPY))
         arrays.layer_albedo = layer_albedo_table();
 }
 

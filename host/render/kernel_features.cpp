@@ -29,6 +29,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
         set(FEATURE_UNLIT, m.unlit);
         set(FEATURE_CLEARCOAT, m.clearcoat > 0.0f);
         set(FEATURE_SHEEN, m.has_sheen());
+        set(FEATURE_ANISOTROPY, m.has_anisotropy());
         set(FEATURE_TEXTURES, m.has_textures());
         set(FEATURE_NORMAL_MAPS, m.textures[TEXTURE_SLOT_NORMAL].present() ||
                                      (m.clearcoat > 0.0f && m.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL].present()));
@@ -80,8 +81,9 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "unlit",
                                         "clearcoat",
                                         "instances",
-                                        "sheen"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 20 && FEATURE_ALL == (1u << 20) - 1u);
+                                        "sheen",
+                                        "anisotropy"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 21 && FEATURE_ALL == (1u << 21) - 1u);
     std::vector<std::string> out;
     for (std::uint32_t b = 0; b < sizeof(names) / sizeof(names[0]); ++b)
         if (mask & (1u << b))

@@ -92,6 +92,7 @@ const std::set<std::string>& supported_extensions()
                                                     "KHR_materials_specular",
                                                     "KHR_materials_clearcoat",
                                                     "KHR_materials_sheen",
+                                                    "KHR_materials_anisotropy",
                                                     "KHR_materials_transmission",
                                                     "KHR_materials_ior",
                                                     "KHR_materials_pbrSpecularGlossiness",
@@ -184,6 +185,10 @@ struct Importer {
         if (primitives.ignored_morph_attributes())
             warn(source + ": ignores " + std::to_string(primitives.ignored_morph_attributes()) +
                  " morph targets of attributes other than POSITION, NORMAL and TANGENT");
+        if (std::size_t n = primitives.arbitrary_tangents(); n > 0)
+            warn(source + ": " + std::to_string(n) + " primitive" + (n == 1 ? "" : "s") +
+                 " with KHR_materials_anisotropy " + (n == 1 ? "has" : "have") +
+                 " neither TANGENT nor texture coordinates: the anisotropy direction is arbitrary");
         if (scene.dropped_degenerate)
             warn(source + ": dropped " + std::to_string(scene.dropped_degenerate) +
                  " degenerate (zero-area) triangles");

@@ -1,5 +1,6 @@
 // import_materials: the core material (alpha included), its extensions (emissive
-// strength, specular, transmission, clearcoat, sheen, ior (0 included), volume with attenuation, unlit; a
+// strength, specular, transmission, clearcoat, sheen, anisotropy, ior (0 included), volume with attenuation,
+// unlit; a
 // pbrSpecularGlossiness material replaces the metallic-roughness part), the texture of
 // each slot, then the range check.
 #include "scene/gltf_materials.h"
@@ -49,6 +50,10 @@ void check_material(const SceneMaterial& m, const std::string& where)
         fail("KHR_materials_clearcoat clearcoatRoughnessFactor must lie in [0, 1]");
     if (!in01(m.sheen_roughness))
         fail("KHR_materials_sheen sheenRoughnessFactor must lie in [0, 1]");
+    if (!in01(m.anisotropy))
+        fail("KHR_materials_anisotropy anisotropyStrength must lie in [0, 1]");
+    if (!std::isfinite(m.anisotropy_rotation))
+        fail("KHR_materials_anisotropy anisotropyRotation must be finite");
     if (!(m.ior >= 1.0f || m.ior == 0.0f) || !std::isfinite(m.ior))
         fail("KHR_materials_ior ior must be finite and >= 1, or 0");
     if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
@@ -136,6 +141,10 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
         out.sheen_color = vec3_or(e->second, "sheenColorFactor", glm::vec3(0.0f));
         out.sheen_roughness = static_cast<float>(number_or(e->second, "sheenRoughnessFactor", 0.0));
     }
+    if (auto e = m.extensions.find("KHR_materials_anisotropy"); e != m.extensions.end()) {
+        out.anisotropy = static_cast<float>(number_or(e->second, "anisotropyStrength", 0.0));
+        out.anisotropy_rotation = static_cast<float>(number_or(e->second, "anisotropyRotation", 0.0));
+    }
     if (auto e = m.extensions.find("KHR_materials_ior"); e != m.extensions.end())
         out.ior = static_cast<float>(number_or(e->second, "ior", 1.5));
     const auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness");
@@ -177,13 +186,28 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
             out.textures[static_cast<std::size_t>(ts.slot)] =
                 textures.read(info.index, info.texcoord, texture_transform(*info.extensions), slot_where);
     }
-    const SceneTexture& coat_normal = out.textures[TEXTURE_SLOT_CLEARCOAT_NORMAL];
-    if (coat_normal.present() && out.textures[TEXTURE_SLOT_NORMAL].present() &&
-        coat_normal.texcoord != out.textures[TEXTURE_SLOT_NORMAL].texcoord)
-        warn(source + ": " + where + ": clearcoatNormalTexture reads TEXCOORD_" + std::to_string(coat_normal.texcoord) +
-             " but the tangents follow normalTexture's TEXCOORD_" +
-             std::to_string(out.textures[TEXTURE_SLOT_NORMAL].texcoord) +
-             " (one tangent frame per triangle): the coat's normal map is approximate");
+    // One tangent frame per triangle follows the first of normalTexture, clearcoatNormalTexture
+    // and anisotropyTexture (tangent_texcoord); a later one on another set is approximate.
+    const SceneTexture* frame = nullptr;
+    const char* frame_name = nullptr;
+    for (const TextureSlot& ts : texture_slot_table()) {
+        if (ts.slot != TEXTURE_SLOT_NORMAL && ts.slot != TEXTURE_SLOT_CLEARCOAT_NORMAL &&
+            ts.slot != TEXTURE_SLOT_ANISOTROPY)
+            continue;
+        const SceneTexture& t = out.textures[static_cast<std::size_t>(ts.slot)];
+        if (!t.present())
+            continue;
+        if (!frame) {
+            frame = &t;
+            frame_name = ts.name;
+        } else if (t.texcoord != frame->texcoord) {
+            warn(source + ": " + where + ": " + ts.name + " reads TEXCOORD_" + std::to_string(t.texcoord) +
+                 " but the tangents follow " + frame_name + "'s TEXCOORD_" + std::to_string(frame->texcoord) +
+                 " (one tangent frame per triangle): " +
+                 (ts.slot == TEXTURE_SLOT_ANISOTROPY ? "the anisotropy direction" : "the coat's normal map") +
+                 " is approximate");
+        }
+    }
     if (m.normalTexture.index >= 0) {
         out.normal_scale = static_cast<float>(m.normalTexture.scale);
         if (!std::isfinite(out.normal_scale))

@@ -25,12 +25,12 @@ constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 
 } // namespace
 
-int normal_map_texcoord(const SceneMaterial& material)
+int tangent_texcoord(const SceneMaterial& material)
 {
-    for (int slot : {TEXTURE_SLOT_NORMAL, TEXTURE_SLOT_CLEARCOAT_NORMAL})
+    for (int slot : {TEXTURE_SLOT_NORMAL, TEXTURE_SLOT_CLEARCOAT_NORMAL, TEXTURE_SLOT_ANISOTROPY})
         if (material.textures[static_cast<std::size_t>(slot)].present())
             return material.textures[static_cast<std::size_t>(slot)].texcoord;
-    return -1;
+    return material.has_anisotropy() ? 0 : -1;
 }
 
 void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometry& geometry)
@@ -44,7 +44,7 @@ void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometr
                 geometry.texcoord_used.resize(set + 1, false);
             geometry.texcoord_used[set] = true;
         }
-        geometry.tangents_used = geometry.tangents_used || normal_map_texcoord(material) >= 0;
+        geometry.tangents_used = geometry.tangents_used || tangent_texcoord(material) >= 0;
     }
     geometry.texcoords.resize(geometry.texcoord_used.size());
 }
@@ -285,14 +285,15 @@ PrimitiveImporter::VertexAttributes PrimitiveImporter::read_vertex_attributes(co
             attr.colors[i] = glm::vec4(c);
         }
     }
-    if (int set = normal_map_texcoord(mat); set >= 0)
+    if (int set = tangent_texcoord(mat); set >= 0)
         attr.tangents = object_tangents(prim, set, pos, tris, what);
     return attr;
 }
 
 // Object-space tangents per corner of `tris`: the TANGENT attribute when the primitive
 // has it and NORMAL (glTF: without normals, tangents are ignored), else computed from
-// the normal texture's texture coordinates.
+// the texture coordinates of set `texcoord` (an anisotropic primitive without them gets
+// arbitrary tangents in the surface, counted for a warning).
 std::vector<glm::dvec4> PrimitiveImporter::object_tangents(const tinygltf::Primitive& prim, int texcoord,
                                                            const AccessorReader& pos,
                                                            const std::vector<std::uint32_t>& tris,
@@ -329,11 +330,16 @@ std::vector<glm::dvec4> PrimitiveImporter::object_tangents(const tinygltf::Primi
         for (std::size_t i = 0; i < nr.count(); ++i)
             normals[i] = object_normal(nr, i);
     }
-    AccessorReader ur(model_, prim.attributes.at("TEXCOORD_" + std::to_string(texcoord)),
-                      what + " TEXCOORD_" + std::to_string(texcoord), source_);
-    std::vector<glm::dvec2> uvs(ur.count());
-    for (std::size_t i = 0; i < ur.count(); ++i)
-        uvs[i] = glm::dvec2(ur.get(i, 0), ur.get(i, 1));
+    std::vector<glm::dvec2> uvs(pos.count(), glm::dvec2(0.0)); // no UV area: any direction in the surface
+    if (auto uv_it = prim.attributes.find("TEXCOORD_" + std::to_string(texcoord)); uv_it != prim.attributes.end()) {
+        AccessorReader ur(model_, uv_it->second, what + " TEXCOORD_" + std::to_string(texcoord), source_);
+        if (ur.components() != 2 || ur.count() != pos.count())
+            ur.fail("TEXCOORD_n must be VEC2 with one coordinate per vertex");
+        for (std::size_t i = 0; i < ur.count(); ++i)
+            uvs[i] = glm::dvec2(ur.get(i, 0), ur.get(i, 1));
+    } else {
+        ++arbitrary_tangents_;
+    }
     return compute_tangents(positions, normals, uvs, tris);
 }
 

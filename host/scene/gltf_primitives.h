@@ -26,12 +26,14 @@ namespace pathcl {
 class AccessorReader;
 
 // The texture coordinate set a material's tangents follow: its normal texture's, else its
-// clear coat's normal texture's (one tangent frame per triangle serves both maps); -1 when
-// it has neither.
-int normal_map_texcoord(const SceneMaterial& material);
+// clear coat's normal texture's, else its anisotropy texture's (one tangent frame per
+// triangle serves them all); TEXCOORD_0 for an anisotropic material without these (its
+// direction is relative to the tangent); -1 when it needs no tangents.
+int tangent_texcoord(const SceneMaterial& material);
 
 // Decides which attributes the pending triangles carry: each TEXCOORD_n set that a
-// texture of `materials` reads, and tangents when one of them has a normal texture.
+// texture of `materials` reads, and tangents when one of them needs them (a normal
+// texture or anisotropy).
 // Called once, with all of the file's materials, before the first primitive.
 void plan_attributes(const std::vector<SceneMaterial>& materials, PendingGeometry& geometry);
 
@@ -60,6 +62,9 @@ public:
     std::size_t incomplete_triangle_lists() const { return incomplete_triangle_lists_; }
     // Morph targets of attributes other than POSITION, NORMAL and TANGENT, not applied.
     std::size_t ignored_morph_attributes() const { return ignored_morph_attributes_; }
+    // Anisotropic primitives with neither TANGENT nor the texture coordinates to compute
+    // tangents from: their anisotropy direction is some direction in the surface.
+    std::size_t arbitrary_tangents() const { return arbitrary_tangents_; }
 
     // Primitives take their material in KHR_materials_variants variant `variant` (-1: the
     // default) of the file's `count`.
@@ -96,6 +101,7 @@ private:
     std::size_t skipped_points_lines_ = 0;
     std::size_t incomplete_triangle_lists_ = 0;
     std::size_t ignored_morph_attributes_ = 0;
+    std::size_t arbitrary_tangents_ = 0;
     MorphDeltas morph_; // the primitive being imported's
 };
 

@@ -71,6 +71,8 @@ struct SceneMaterial {
     float clearcoat_normal_scale = 1.0f; // clearcoatNormalTexture.scale
     glm::vec3 sheen_color{0.0f};         // KHR_materials_sheen sheenColorFactor (0: no sheen)
     float sheen_roughness = 0.0f;        // sheenRoughnessFactor
+    float anisotropy = 0.0f;             // KHR_materials_anisotropy anisotropyStrength (0: isotropic)
+    float anisotropy_rotation = 0.0f;    // anisotropyRotation, radians from the tangent towards the bitangent
 
     // Textures, one per slot (TEXTURE_SLOT_*, the table in scene/texture_slots.h); each
     // value multiplies its factor.
@@ -87,6 +89,7 @@ struct SceneMaterial {
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool has_sheen() const { return sheen_color.x > 0.0f || sheen_color.y > 0.0f || sheen_color.z > 0.0f; }
+    bool has_anisotropy() const { return anisotropy > 0.0f; }
     // Whether light can travel inside it (a solid that transmits) and be absorbed there.
     bool absorbs() const
     {

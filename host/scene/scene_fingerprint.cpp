@@ -97,6 +97,11 @@ std::uint64_t scene_fingerprint(const Scene& scene)
             f.add(m.sheen_color);
             f.add(m.sheen_roughness);
         }
+        if (m.has_anisotropy()) {
+            f.add(5);
+            f.add(m.anisotropy);
+            f.add(m.anisotropy_rotation);
+        }
         for (std::size_t slot = 0; slot < m.textures.size(); ++slot) {
             const SceneTexture& t = m.textures[slot];
             if (slot >= TEXTURE_SLOT_CLEARCOAT && !t.present())

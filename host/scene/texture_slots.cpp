@@ -17,6 +17,7 @@ const std::array<TextureSlot, TEXTURE_SLOT_COUNT>& texture_slot_table()
         {TEXTURE_SLOT_CLEARCOAT_NORMAL, "clearcoatNormalTexture", "KHR_materials_clearcoat", false},
         {TEXTURE_SLOT_SHEEN_COLOR, "sheenColorTexture", "KHR_materials_sheen", true},
         {TEXTURE_SLOT_SHEEN_ROUGHNESS, "sheenRoughnessTexture", "KHR_materials_sheen", false},
+        {TEXTURE_SLOT_ANISOTROPY, "anisotropyTexture", "KHR_materials_anisotropy", false},
     }};
     return table;
 }

@@ -13,7 +13,35 @@
 
 #ifdef PATHCL_FULL_BSDF
 
-/* Local-frame evaluation of the non-delta lobes; wo.z > 0 is not required (shading
+#ifdef PATHCL_HAS_ANISOTROPY
+
+/* The specular reflection of an anisotropic material: the conductor's anisotropic lobe
+ * (always rough) and the dielectric layer's isotropic one (rough or a delta function),
+ * each with its own visible-normal density. */
+static inline void bsdf_eval_anisotropic_reflection(const BsdfParams* p, float3 wo, float3 wi, BsdfEval* e)
+{
+    if (!(wo.z > 0.0f))
+        return;
+    float3 h = wo + wi;
+    float len = length(h);
+    if (!(len > 0.0f))
+        return;
+    h /= len;
+    float cos_h = fabs(dot(wo, h));
+    float3 fc = p->metallic * fresnel_schlick(p->base_color, cos_h);
+    e->f_cos += fc * (conductor_ggx_d(p, h) * conductor_ggx_g1(p, wo) * conductor_ggx_g1(p, wi) / (4.0f * wo.z));
+    e->pdf += p->lobes.conductor * conductor_visible_pdf(p, wo, h) / (4.0f * cos_h);
+    if (p->alpha >= ALPHA_DELTA) {
+        float a2 = p->alpha * p->alpha;
+        float3 fd = fresnel_layer_reflection(p, fresnel_specular_layer(p, cos_h));
+        e->f_cos += fd * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
+        e->pdf += p->lobes.interface * interface_split(p, cos_h) * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
+    }
+}
+
+#endif /* PATHCL_HAS_ANISOTROPY */
+
+/* Evaluation of the non-delta lobes in the frame of bsdf_frame; wo.z > 0 is not required (shading
  * normals), the rough lobes vanish where it fails. */
 static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi, bool reflect)
 {
@@ -33,6 +61,12 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
              * rough conductor reflects everything. Sampled with the diffuse lobe. */
             e.f_cos += p->ms_scale * ((1.0f - p->ess_o) * (1.0f - ess_albedo(p, wi.z)) * wi.z);
         }
+#ifdef PATHCL_HAS_ANISOTROPY
+        if (bsdf_anisotropic(p)) {
+            bsdf_eval_anisotropic_reflection(p, wo, wi, &e);
+            return e;
+        }
+#endif
         if (rough && wo.z > 0.0f) {
             float3 h = wo + wi;
             float len = length(h);
@@ -104,7 +138,7 @@ static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* s
     if (!reflect && !transmit)
         return e;
     float3 t, b;
-    make_basis(sp->ns, &t, &b);
+    bsdf_frame(p, sp, &t, &b);
     return bsdf_eval_local(p, to_local(wo, t, b, sp->ns), to_local(wi, t, b, sp->ns), reflect);
 #endif
 }

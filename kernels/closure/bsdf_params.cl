@@ -3,7 +3,9 @@
  * shading point, so lobe choices, layer albedos and multiple-scattering scales are
  * computed once, not per evaluation. */
 #include "features.h"
+#include "geom/surface_point.cl"
 #include "types.h"
+#include "util/math.cl"
 
 /* GGX alpha below which the specular lobes are delta functions (pbrt-v4 uses the same). */
 #define ALPHA_DELTA 1.0e-3f
@@ -72,6 +74,11 @@ typedef struct {
     float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
     float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
     float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
+#ifdef PATHCL_HAS_ANISOTROPY
+    float alpha_t, alpha_b; /* the conductor's GGX alpha along and across the anisotropy
+                             * direction (both alpha when isotropic) */
+    float3 tangent;         /* the frame's x axis: the anisotropy direction, in the shading plane */
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
     float coat;       /* clearcoatFactor (0: no coat) */
     float coat_alpha; /* the coat's GGX alpha = clearcoatRoughness^2 */
@@ -90,11 +97,35 @@ typedef struct {
 #endif
 } BsdfParams;
 
+/* Whether the conductor's GGX lobe is anisotropic (KHR_materials_anisotropy). */
+static inline bool bsdf_anisotropic(const BsdfParams* p)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    return p->alpha_b != p->alpha_t;
+#else
+    return false;
+#endif
+}
+
+/* Whether the conductor's lobe is rough (else an ideal mirror): anisotropy can make a
+ * smooth conductor rough along one direction. */
+static inline bool conductor_rough(const BsdfParams* p)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    return p->alpha_t >= ALPHA_DELTA;
+#else
+    return p->alpha >= ALPHA_DELTA;
+#endif
+}
+
 /* Every lobe of the material is a delta function: light sampling cannot help there. */
 static inline bool bsdf_is_delta(const BsdfParams* p)
 {
 #ifdef PATHCL_FULL_BSDF
     bool delta = p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
+#ifdef PATHCL_HAS_ANISOTROPY
+    delta = delta && !(p->metallic > 0.0f && conductor_rough(p));
+#endif
 #ifdef PATHCL_HAS_CLEARCOAT
     delta = delta && !(p->coat > 0.0f && p->coat_alpha >= ALPHA_DELTA);
 #endif
@@ -105,4 +136,18 @@ static inline bool bsdf_is_delta(const BsdfParams* p)
 #else
     return false;
 #endif
+}
+
+/* The shading frame of the base material's lobes around sp->ns: t along the anisotropy
+ * direction for an anisotropic material, any other frame (make_basis) otherwise. */
+static inline void bsdf_frame(const BsdfParams* p, const SurfacePoint* sp, float3* t, float3* b)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (bsdf_anisotropic(p)) {
+        *t = p->tangent;
+        *b = cross(sp->ns, p->tangent);
+        return;
+    }
+#endif
+    make_basis(sp->ns, t, b);
 }

@@ -41,7 +41,7 @@ static inline BsdfSample coat_sample(const BsdfParams* p, const SurfacePoint* sp
     if (!(wo_c.z > 0.0f))
         return s;
     bool smooth = p->coat_alpha < ALPHA_DELTA;
-    float3 wm = smooth ? (float3)(0.0f, 0.0f, 1.0f) : ggx_sample_visible(wo_c, p->coat_alpha, u);
+    float3 wm = smooth ? (float3)(0.0f, 0.0f, 1.0f) : ggx_sample_visible(wo_c, p->coat_alpha, p->coat_alpha, u);
     float3 wi_c = 2.0f * dot(wo_c, wm) * wm - wo_c;
     s.wi = to_world(wi_c, t, b, p->coat_n);
     if (!(wi_c.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
@@ -90,7 +90,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
 {
     BsdfSample s = no_bsdf_sample();
     float3 t, b;
-    make_basis(sp->ns, &t, &b);
+    bsdf_frame(p, sp, &t, &b);
 #ifndef PATHCL_FULL_BSDF
     float3 wi = sample_cosine_hemisphere(u);
     s.wi = to_world(wi, t, b, sp->ns);
@@ -121,7 +121,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (u_lobe < lobes.diffuse) {
         wi = sample_cosine_hemisphere(u);
     } else if (u_lobe < lobes.diffuse + lobes.conductor) {
-        if (!rough) {
+        if (!conductor_rough(p)) {
             /* Ideal mirror: weight F / (selection probability). */
             wi = (float3)(-wo_l.x, -wo_l.y, wo_l.z);
             s.wi = to_world(wi, t, b, sp->ns);
@@ -141,14 +141,14 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
         }
         if (!(wo_l.z > 0.0f))
             return s;
-        float3 wm = ggx_sample_visible(wo_l, p->alpha, u);
+        float3 wm = conductor_sample_visible(p, wo_l, u);
         wi = 2.0f * dot(wo_l, wm) * wm - wo_l;
     } else {
         /* The interface: a visible facet, then reflection or refraction by its own split;
          * the rest of u_lobe's interval is the uniform number for that choice. */
         if (!(wo_l.z > 0.0f) || !(lobes.interface > 0.0f))
             return s;
-        float3 wm = rough ? ggx_sample_visible(wo_l, p->alpha, u) : (float3)(0.0f, 0.0f, 1.0f);
+        float3 wm = rough ? ggx_sample_visible(wo_l, p->alpha, p->alpha, u) : (float3)(0.0f, 0.0f, 1.0f);
         float c = dot(wo_l, wm);
         float split = interface_split(p, c);
         float u_split = (u_lobe - lobes.diffuse - lobes.conductor) / lobes.interface;

@@ -25,13 +25,19 @@ static inline float3 fresnel_specular_layer(const BsdfParams* p, float cos_i)
     return p->specular * (p->f0c + (1.0f - p->f0c) * s);
 }
 
-/* Reflectance of the specular reflection lobe: conductor and dielectric layer mixed. The
+/* Reflectance of the dielectric layer's share of the specular reflection lobe. The
  * transmissive share of the layer is the rough interface, whose energy is restored by
  * glass_scale (1 when smooth, or when there is none). */
-static inline float3 fresnel_reflection(const BsdfParams* p, float cos_i, float3 f_layer)
+static inline float3 fresnel_layer_reflection(const BsdfParams* p, float3 f_layer)
 {
     float layer_scale = (1.0f - p->transmission) + p->transmission * p->glass_scale;
-    return p->metallic * fresnel_schlick(p->base_color, cos_i) + (1.0f - p->metallic) * layer_scale * f_layer;
+    return (1.0f - p->metallic) * layer_scale * f_layer;
+}
+
+/* Reflectance of the specular reflection lobe: conductor and dielectric layer mixed. */
+static inline float3 fresnel_reflection(const BsdfParams* p, float cos_i, float3 f_layer)
+{
+    return p->metallic * fresnel_schlick(p->base_color, cos_i) + fresnel_layer_reflection(p, f_layer);
 }
 
 /* What the dielectric layer lets through to the transmission lobe. */

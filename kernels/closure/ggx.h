@@ -23,6 +23,22 @@ PATHCL_FN pcl_real ggx_g1(pcl_real3 w, pcl_real a2)
     return PCL_REAL(2.0) * c / (c + sqrt(w.z * w.z + a2 * (w.x * w.x + w.y * w.y)));
 }
 
+/* Anisotropic GGX: D(wm) with alpha ax along x and ay along y (KHR_materials_anisotropy;
+ * ax = ay = alpha is ggx_d), and Smith's G1 = 2 |cos| / (|cos| + sqrt(cos^2 + ax^2 x^2 +
+ * ay^2 y^2)). */
+PATHCL_FN pcl_real ggx_d_aniso(pcl_real3 wm, pcl_real ax, pcl_real ay)
+{
+    pcl_real x = wm.x / ax, y = wm.y / ay;
+    pcl_real d = x * x + y * y + wm.z * wm.z;
+    return PCL_REAL(1.0) / (PCL_REAL(3.14159265358979324) * ax * ay * d * d);
+}
+
+PATHCL_FN pcl_real ggx_g1_aniso(pcl_real3 w, pcl_real ax, pcl_real ay)
+{
+    pcl_real c = fabs(w.z);
+    return PCL_REAL(2.0) * c / (c + sqrt(w.z * w.z + ax * ax * w.x * w.x + ay * ay * w.y * w.y));
+}
+
 PATHCL_END
 
 #endif

@@ -27,11 +27,10 @@ static inline LobeChoice choose_lobes(const BsdfParams* p)
     float glass = mean3(f_layer) + (1.0f - max3(f_layer)) * mean3(p->base_color);
     c.interface = (1.0f - p->metallic) * ((1.0f - p->transmission) * coat + p->transmission * glass);
     bool has_interface = (p->specular > 0.0f && p->eta != 1.0f) || p->transmission > 0.0f;
-    if (rough) {
+    if (conductor_rough(p))
         c.conductor = fmax(c.conductor, LOBE_ESTIMATE_FLOOR * p->metallic);
-        if (has_interface)
-            c.interface = fmax(c.interface, LOBE_ESTIMATE_FLOOR * (1.0f - p->metallic));
-    }
+    if (rough && has_interface)
+        c.interface = fmax(c.interface, LOBE_ESTIMATE_FLOOR * (1.0f - p->metallic));
     float sum = 0.0f;
 #ifdef PATHCL_HAS_SHEEN
     /* The base lobes see what the sheen does not reflect; the sheen reflects from outside. */

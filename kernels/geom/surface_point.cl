@@ -22,6 +22,10 @@ typedef struct {
     float3 n_coat; /* the clear coat's normal: the interpolated one, which the base's normal
                     * map does not bend, bent by the coat's own (KHR_materials_clearcoat) */
 #endif
+#ifdef PATHCL_HAS_ANISOTROPY
+    float3 t_aniso; /* the direction of KHR_materials_anisotropy's larger roughness, in the
+                     * shading plane (texture/anisotropy.cl); 0 where it has none */
+#endif
     bool front_face; /* the ray hit the counter-clockwise (emitting) side */
     float area;
     int material;
@@ -94,6 +98,9 @@ static inline SurfacePoint surface_point(const KernelData* kd, Hit hit, float3 w
     sp.ns = ns;
 #ifdef PATHCL_HAS_CLEARCOAT
     sp.n_coat = ns;
+#endif
+#ifdef PATHCL_HAS_ANISOTROPY
+    sp.t_aniso = (float3)(0.0f);
 #endif
     /* Hanika's terminator offset: for each vertex, the part of p below the plane through
      * that vertex perpendicular to its normal (on wo's side), lifted out of it, weighted

@@ -9,6 +9,7 @@
 #include "integrator/path_state.cl"
 #include "kernel_data.cl"
 #include "light/triangle.cl"
+#include "texture/anisotropy.cl"
 #include "texture/material_inputs.cl"
 
 /* Everything shading knows about a hit. */
@@ -25,6 +26,9 @@ static inline ShadingPoint shade_surface_setup(const KernelData* kd, Hit hit, fl
     s.material = kd->materials[s.sp.material];
 #ifdef PATHCL_HAS_MATERIAL_INPUTS
     apply_material_inputs(&s.material, &s.sp, wo, hit, kd);
+#endif
+#ifdef PATHCL_HAS_ANISOTROPY
+    apply_anisotropy(&s.material, &s.sp, hit, kd);
 #endif
     s.bsdf = bsdf_params(&s.material, &s.sp, wo, kd->layer_albedo);
     return s;

@@ -9,30 +9,12 @@
 #include "bvh/traversal.cl"
 #include "features.h"
 #include "geom/surface_point.cl"
+#include "geom/tangent_frame.cl"
 #include "kernel_data.cl"
 #include "texture/lookup.cl"
 #include "texture/normal_map.cl"
 
 #ifdef PATHCL_HAS_MATERIAL_INPUTS
-
-#ifdef PATHCL_HAS_NORMAL_MAPS
-/* The hit triangle's vertex tangents in render space: an instance's are mapped as
- * directions (and renormalized), their handedness flipped by a mirroring map. */
-static inline TriangleTangents hit_tangents(const KernelData* kd, Hit hit)
-{
-    TriangleTangents t = kd->tangents[hit.triangle];
-#ifdef PATHCL_HAS_INSTANCES
-    Instance inst = kd->instances[hit.instance];
-    if (!(inst.flags & INSTANCE_IDENTITY)) {
-        float w = (inst.flags & INSTANCE_MIRRORED) ? -1.0f : 1.0f;
-        t.t0 = (float4)(normalize(affine_direction(inst.to_render, t.t0.xyz)), w * t.t0.w);
-        t.t1 = (float4)(normalize(affine_direction(inst.to_render, t.t1.xyz)), w * t.t1.w);
-        t.t2 = (float4)(normalize(affine_direction(inst.to_render, t.t2.xyz)), w * t.t2.w);
-    }
-#endif
-    return t;
-}
-#endif
 
 /* Applies the material's textures, the vertex colour and the normal map at a hit: `m` is
  * the hit triangle's material (a private copy), `sp` its surface point, wo the direction

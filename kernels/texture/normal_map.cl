@@ -2,6 +2,7 @@
  * bend that keeps a mapped normal from reflecting below the geometric surface. Compiled
  * only for scenes with normal textures (PATHCL_HAS_NORMAL_MAPS). */
 #include "features.h"
+#include "geom/tangent_frame.cl"
 #include "types.h"
 
 #ifdef PATHCL_HAS_NORMAL_MAPS
@@ -12,14 +13,9 @@
  * mapped vector is degenerate (a zero or NaN tangent, a texel of (0.5, 0.5, 0.5)). */
 static inline float3 normal_from_map(float3 n, TriangleTangents t, float b1, float b2, float3 texel, float scale)
 {
-    float b0 = 1.0f - b1 - b2;
-    float4 tw = b0 * t.t0 + b1 * t.t1 + b2 * t.t2;
-    float3 tangent = tw.xyz - dot(tw.xyz, n) * n;
-    float len = length(tangent);
-    if (!(len > 1.0e-6f) || !isfinite(len))
+    float3 tangent, bitangent;
+    if (!tangent_frame(n, t, b1, b2, &tangent, &bitangent))
         return n;
-    tangent /= len;
-    float3 bitangent = (tw.w < 0.0f ? -1.0f : 1.0f) * cross(n, tangent);
     float3 nt = (2.0f * texel - 1.0f) * (float3)(scale, scale, 1.0f);
     float3 mapped = nt.x * tangent + nt.y * bitangent + nt.z * n;
     float mapped_len = length(mapped);

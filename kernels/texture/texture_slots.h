@@ -17,6 +17,7 @@
 #define TEXTURE_SLOT_CLEARCOAT_NORMAL 9    /* the coat's tangent-space normal, scaled by clearcoat_normal_scale */
 #define TEXTURE_SLOT_SHEEN_COLOR 10        /* RGB (sRGB) scales sheenColorFactor */
 #define TEXTURE_SLOT_SHEEN_ROUGHNESS 11    /* A scales sheenRoughnessFactor */
-#define TEXTURE_SLOT_COUNT 12
+#define TEXTURE_SLOT_ANISOTROPY 12         /* RG direction in [-1, 1] tangent space, B scales anisotropyStrength */
+#define TEXTURE_SLOT_COUNT 13
 
 #endif

@@ -1,10 +1,11 @@
 /* Test kernels over the real BSDF code (kernels/closure/). The shading point has its
  * geometric and shading normal along `normal` (any unit vector: the kernels' own basis
- * code runs); directions are in world space. */
+ * code runs) and its anisotropy direction along `tangent` (orthogonal to it); directions
+ * are in world space. */
 #include "closure/bsdf.cl"
 #include "sample/sampler.cl"
 
-static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
+static inline SurfacePoint test_surface_point(float3 normal, float3 tangent, uint front_face)
 {
     SurfacePoint sp;
     sp.p = (float3)(0.0f);
@@ -15,6 +16,9 @@ static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
     sp.ns = normal;
 #ifdef PATHCL_HAS_CLEARCOAT
     sp.n_coat = normal;
+#endif
+#ifdef PATHCL_HAS_ANISOTROPY
+    sp.t_aniso = tangent;
 #endif
     sp.front_face = front_face != 0u;
     sp.area = 1.0f;
@@ -27,12 +31,12 @@ static inline SurfacePoint test_surface_point(float3 normal, uint front_face)
  *   dir_pdf = (wi, sample pdf)           (0 when there was no sample)
  *   weight  = (sample weight, 1 if delta)
  *   eval    = (bsdf_eval f_cos at wi, bsdf_eval pdf at wi) */
-__kernel void test_bsdf_sample(Material m, float4 normal, float4 wo, uint front_face, uint seed,
+__kernel void test_bsdf_sample(Material m, float4 normal, float4 tangent, float4 wo, uint front_face, uint seed,
                                __global const float* layer, __global float4* dir_pdf, __global float4* weight,
                                __global float4* eval)
 {
     uint i = get_global_id(0);
-    SurfacePoint sp = test_surface_point(normal.xyz, front_face);
+    SurfacePoint sp = test_surface_point(normal.xyz, tangent.xyz, front_face);
     BsdfParams p = bsdf_params(&m, &sp, wo.xyz, layer);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
     float u_lobe = sampler_get_1d(&s);
@@ -49,11 +53,11 @@ __kernel void test_bsdf_sample(Material m, float4 normal, float4 wo, uint front_
 }
 
 /* bsdf_eval for given pairs: out = (f_cos, pdf). */
-__kernel void test_bsdf_eval(Material m, float4 normal, uint front_face, __global const float* layer,
+__kernel void test_bsdf_eval(Material m, float4 normal, float4 tangent, uint front_face, __global const float* layer,
                              __global const float4* wo, __global const float4* wi, __global float4* out)
 {
     uint i = get_global_id(0);
-    SurfacePoint sp = test_surface_point(normal.xyz, front_face);
+    SurfacePoint sp = test_surface_point(normal.xyz, tangent.xyz, front_face);
     BsdfParams p = bsdf_params(&m, &sp, wo[i].xyz, layer);
     BsdfEval e = bsdf_eval(&p, &sp, wo[i].xyz, wi[i].xyz);
     out[i] = (float4)(e.f_cos, e.pdf);
@@ -62,7 +66,7 @@ __kernel void test_bsdf_eval(Material m, float4 normal, uint front_face, __globa
 /* Whether NEE is skipped at this material (every lobe a delta function). */
 __kernel void test_bsdf_is_delta(Material m, __global const float* layer, __global int* out)
 {
-    SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), 1u);
+    SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), 1u);
     BsdfParams p = bsdf_params(&m, &sp, (float3)(0.0f, 0.0f, 1.0f), layer);
     out[0] = bsdf_is_delta(&p) ? 1 : 0;
 }

@@ -23,7 +23,7 @@ const cl::Program& full_program()
 {
     static cl::Program p =
         test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION | FEATURE_SCHLICK_LAYER |
-                                                             FEATURE_CLEARCOAT | FEATURE_SHEEN);
+                                                             FEATURE_CLEARCOAT | FEATURE_SHEEN | FEATURE_ANISOTROPY);
     return p;
 }
 
@@ -50,6 +50,7 @@ Material make_material(const MaterialSpec& s)
     m.clearcoat = s.clearcoat;
     m.clearcoat_roughness = s.clearcoat_roughness;
     m.sheen = {s.sheen.x, s.sheen.y, s.sheen.z, s.sheen_roughness};
+    m.anisotropy = {s.anisotropy, 1.0f, 0.0f, 0.0f};
     return m;
 }
 
@@ -122,6 +123,14 @@ std::vector<MaterialSpec> reflective_materials()
     MaterialSpec coated_sheen = coated_plastic;
     coated_sheen.sheen = {0.5f, 0.5f, 1.0f};
     coated_sheen.sheen_roughness = 0.6f;
+    // KHR_materials_anisotropy (on the conductor): brushed metal, a part metal over a
+    // plastic, and a smooth metal made rough along one axis alone (alpha 1e-3 across it).
+    MaterialSpec brushed = conductor(0.3f, {0.95f, 0.9f, 0.85f});
+    brushed.anisotropy = 0.8f;
+    MaterialSpec aniso_half = half;
+    aniso_half.anisotropy = 0.5f;
+    MaterialSpec streak = conductor(0.0f, {0.9f, 0.6f, 0.3f});
+    streak.anisotropy = 0.6f;
     return {lambertian({0.5f, 0.6f, 0.7f}),
             conductor(0.2f),
             conductor(0.8f, {0.9f, 0.6f, 0.3f}),
@@ -135,7 +144,10 @@ std::vector<MaterialSpec> reflective_materials()
             velvet,
             sheen_plastic,
             sheen_metal,
-            coated_sheen};
+            coated_sheen,
+            brushed,
+            aniso_half,
+            streak};
 }
 
 glm::dvec3 incident(double c)
@@ -152,15 +164,15 @@ const cl::Buffer& layer_buffer()
 }
 
 Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face, std::size_t n,
-                    std::uint32_t seed, glm::dvec3 normal)
+                    std::uint32_t seed, glm::dvec3 tangent)
 {
     ClDevice& dev = test::test_device();
     cl::Buffer dir_pdf(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer weight(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer eval(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_bsdf_sample");
-    set_kernel_args(k, m, f4(normal), f4(wo), static_cast<cl_uint>(front_face), seed, layer_buffer(), dir_pdf, weight,
-                    eval);
+    set_kernel_args(k, m, f4(glm::dvec3(0, 0, 1)), f4(tangent), f4(wo), static_cast<cl_uint>(front_face), seed,
+                    layer_buffer(), dir_pdf, weight, eval);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     Samples s;
     s.dir_pdf.resize(n);
@@ -174,7 +186,7 @@ Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dv
 
 std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m, bool front_face,
                                   const std::vector<glm::dvec3>& wo, const std::vector<glm::dvec3>& wi,
-                                  glm::dvec3 normal)
+                                  glm::dvec3 normal, glm::dvec3 tangent)
 {
     ClDevice& dev = test::test_device();
     std::vector<pcl_float4> o, i;
@@ -187,7 +199,7 @@ std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m,
     cl::Buffer ib(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), i.data());
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_bsdf_eval");
-    set_kernel_args(k, m, f4(normal), static_cast<cl_uint>(front_face), layer_buffer(), ob, ib, out);
+    set_kernel_args(k, m, f4(normal), f4(tangent), static_cast<cl_uint>(front_face), layer_buffer(), ob, ib, out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<pcl_float4> r(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), r.data());
@@ -205,11 +217,11 @@ bool near_rel(double a, double b, double rel, double abs_floor)
 }
 
 Albedo directional_albedo(const cl::Program& program, const MaterialSpec& spec, double cos_o, bool front_face,
-                          bool energy, std::size_t n)
+                          bool energy, std::size_t n, glm::dvec3 tangent)
 {
     Material m = make_material(spec);
     test::ReferenceBsdf ref = test::ReferenceBsdf::from_material(m, front_face);
-    Samples s = sample_bsdf(program, m, incident(cos_o), front_face, n, 99);
+    Samples s = sample_bsdf(program, m, incident(cos_o), front_face, n, 99, tangent);
     Albedo a;
     glm::dvec3 sum(0.0), sum_sq(0.0);
     for (std::size_t i = 0; i < n; ++i) {

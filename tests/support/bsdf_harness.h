@@ -14,7 +14,8 @@
 
 namespace pathcl::test {
 
-// The program with every closure (glossy, transmission, ior 0, clear coat, sheen), built once.
+// The program with every closure (glossy, transmission, ior 0, clear coat, sheen,
+// anisotropy), built once.
 const cl::Program& full_program();
 // The program a scene of Lambertian materials only gets (no glossy or transmission code).
 const cl::Program& lambertian_program();
@@ -28,6 +29,7 @@ struct MaterialSpec {
     float clearcoat = 0.0f, clearcoat_roughness = 0.0f;
     glm::vec3 sheen{0.0f}; // KHR_materials_sheen colour and roughness
     float sheen_roughness = 0.0f;
+    float anisotropy = 0.0f; // KHR_materials_anisotropy strength, along the frame's x axis
 };
 
 Material make_material(const MaterialSpec& s);
@@ -35,8 +37,8 @@ MaterialSpec conductor(float roughness, glm::vec3 base = glm::vec3(1.0f));
 MaterialSpec dielectric(float roughness, float ior = 1.5f, bool thin = false);
 MaterialSpec lambertian(glm::vec3 base);
 // Lambertian, rough conductors, plastics (plain and tinted specular), a part metal, a
-// specular-glossiness (ior 0) material, three clear-coated ones and four with a sheen: the
-// reflective materials the eval and energy tests sweep.
+// specular-glossiness (ior 0) material, three clear-coated ones, four with a sheen and
+// three anisotropic ones: the reflective materials the eval and energy tests sweep.
 std::vector<MaterialSpec> reflective_materials();
 
 // wo at angle theta from +Z with cos theta = c, in the xz plane turned by 0.3 rad about Z
@@ -51,14 +53,16 @@ struct Samples {
 };
 
 // test_bsdf_sample from wo, n samples: (direction, pdf), weight and bsdf_eval (f_cos, pdf)
-// of each.
+// of each. The shading point's normal is +Z and its anisotropy direction `tangent` (in
+// the XY plane).
 Samples sample_bsdf(const cl::Program& program, const Material& m, const glm::dvec3& wo, bool front_face, std::size_t n,
-                    std::uint32_t seed = 17, glm::dvec3 normal = {0, 0, 1});
+                    std::uint32_t seed = 17, glm::dvec3 tangent = {1, 0, 0});
 
-// bsdf_eval (f_cos, pdf) for each pair.
+// bsdf_eval (f_cos, pdf) for each pair, at a shading point with this normal and
+// anisotropy direction (orthogonal unit vectors).
 std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m, bool front_face,
                                   const std::vector<glm::dvec3>& wo, const std::vector<glm::dvec3>& wi,
-                                  glm::dvec3 normal = {0, 0, 1});
+                                  glm::dvec3 normal = {0, 0, 1}, glm::dvec3 tangent = {1, 0, 0});
 
 glm::dvec3 xyz(const pcl_float4& v);
 
@@ -74,6 +78,6 @@ struct Albedo {
 // scaled by 1/eta^2 (and out of it by eta^2); `energy` undoes that so the result is the
 // fraction of energy scattered, which must not exceed 1.
 Albedo directional_albedo(const cl::Program& program, const MaterialSpec& spec, double cos_o, bool front_face,
-                          bool energy, std::size_t n = 200000);
+                          bool energy, std::size_t n = 200000, glm::dvec3 tangent = {1, 0, 0});
 
 } // namespace pathcl::test

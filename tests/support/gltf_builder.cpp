@@ -346,4 +346,12 @@ void set_sheen(tinygltf::Material& m, const std::vector<double>& color, double r
     m.extensions["KHR_materials_sheen"] = tinygltf::Value(o);
 }
 
+void set_anisotropy(tinygltf::Material& m, double strength, double rotation)
+{
+    tinygltf::Value::Object o;
+    o["anisotropyStrength"] = tinygltf::Value(strength);
+    o["anisotropyRotation"] = tinygltf::Value(rotation);
+    m.extensions["KHR_materials_anisotropy"] = tinygltf::Value(o);
+}
+
 } // namespace pathcl::test

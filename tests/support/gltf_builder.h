@@ -95,5 +95,7 @@ tinygltf::Value texture_info(int index, int texcoord = 0);
 void set_clearcoat(tinygltf::Material& m, double factor, double roughness);
 // Gives material `m` KHR_materials_sheen with these factors.
 void set_sheen(tinygltf::Material& m, const std::vector<double>& color, double roughness);
+// KHR_materials_anisotropy with these strength and rotation (radians).
+void set_anisotropy(tinygltf::Material& m, double strength, double rotation = 0.0);
 
 } // namespace pathcl::test

@@ -27,12 +27,17 @@ double mean3(const glm::dvec3& v)
 }
 
 // Heitz's distribution of visible normals: G1(wo) max(0, wo.m) D(m) / wo.z.
-double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double alpha)
+double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double ax, double ay)
 {
     double c = glm::dot(wo, m);
     if (c <= 0.0 || wo.z <= 0.0)
         return 0.0;
-    return ggx_g1(wo, alpha) * c * ggx_d(m, alpha) / wo.z;
+    return ggx_g1(wo, ax, ay) * c * ggx_d(m, ax, ay) / wo.z;
+}
+
+double visible_normal_pdf(const glm::dvec3& wo, const glm::dvec3& m, double alpha)
+{
+    return visible_normal_pdf(wo, m, alpha, alpha);
 }
 
 } // namespace
@@ -56,6 +61,30 @@ double ggx_g1(const glm::dvec3& w, double alpha)
     return 1.0 / (1.0 + lambda);
 }
 
+// Heitz 2014: D = 1 / (pi ax ay cos^4 (1 + tan^2 (cos^2 phi / ax^2 + sin^2 phi / ay^2))^2),
+// Lambda = (sqrt(1 + a(phi)^2 tan^2) - 1) / 2 with a(phi)^2 = ax^2 cos^2 phi + ay^2 sin^2 phi.
+double ggx_d(const glm::dvec3& m, double ax, double ay)
+{
+    if (m.z <= 0.0)
+        return 0.0;
+    double cos2 = m.z * m.z, sin2 = std::max(0.0, 1.0 - cos2), tan2 = sin2 / cos2;
+    double c2 = sin2 > 0.0 ? m.x * m.x / sin2 : 1.0, s2 = sin2 > 0.0 ? m.y * m.y / sin2 : 0.0;
+    double k = 1.0 + tan2 * (c2 / (ax * ax) + s2 / (ay * ay));
+    return 1.0 / (kPi * ax * ay * cos2 * cos2 * k * k);
+}
+
+double ggx_g1(const glm::dvec3& w, double ax, double ay)
+{
+    double cos2 = w.z * w.z;
+    if (cos2 == 0.0)
+        return 0.0;
+    double sin2 = std::max(0.0, 1.0 - cos2), tan2 = sin2 / cos2;
+    double c2 = sin2 > 0.0 ? w.x * w.x / sin2 : 1.0, s2 = sin2 > 0.0 ? w.y * w.y / sin2 : 0.0;
+    double a2 = ax * ax * c2 + ay * ay * s2;
+    double lambda = 0.5 * (std::sqrt(1.0 + a2 * tan2) - 1.0);
+    return 1.0 / (1.0 + lambda);
+}
+
 ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
 {
     ReferenceBsdf r;
@@ -63,7 +92,14 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
     r.specular_color = {m.specular_color.x, m.specular_color.y, m.specular_color.z};
     r.specular = m.specular_color.w;
     r.metallic = m.metallic;
-    r.alpha = static_cast<double>(m.roughness) * m.roughness;
+    r.alpha = r.alpha_t = r.alpha_b = static_cast<double>(m.roughness) * m.roughness;
+    if (m.anisotropy.x > 0.0f) {
+        // KHR_materials_anisotropy on the conductor: mix(alpha, 1, strength^2) along the
+        // direction; across it the material's alpha, at least kAlphaDelta when rough.
+        double s = m.anisotropy.x;
+        r.alpha_t = r.alpha + (1.0 - r.alpha) * s * s;
+        r.alpha_b = r.alpha_t >= kAlphaDelta ? std::max(r.alpha, kAlphaDelta) : r.alpha_t;
+    }
     r.transmission = m.transmission;
     r.thin = (m.flags & MATERIAL_THIN_WALLED) != 0;
     r.ior = m.ior;
@@ -81,6 +117,11 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
 bool ReferenceBsdf::rough() const
 {
     return alpha >= kAlphaDelta;
+}
+
+bool ReferenceBsdf::conductor_rough() const
+{
+    return alpha_t >= kAlphaDelta;
 }
 
 // The dielectric layer: KHR_materials_specular's F0 colour and weight, with the exact
@@ -213,7 +254,7 @@ double ReferenceBsdf::glass_scale(double cos_o) const
 
 glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(double cos_o, double cos_i) const
 {
-    if (!rough() || metallic <= 0.0)
+    if (!rough() || anisotropic() || metallic <= 0.0) // an anisotropic conductor: single scattering
         return glm::dvec3(0.0);
     double e_avg = ess_average();
     if (1.0 - e_avg <= 1e-4)
@@ -245,7 +286,7 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - cos_o, 5.0);
     Lobes l{};
     l.diffuse = inside ? 0.0 : (1.0 - metallic) * (1.0 - transmission) * mean3(base_color * (glm::dvec3(1.0) - e_o));
-    if (rough() && metallic > 0.0 && 1.0 - ess_average() > 1e-4) { // the multiple-scattering lobe
+    if (rough() && !anisotropic() && metallic > 0.0 && 1.0 - ess_average() > 1e-4) { // multiple scattering
         glm::dvec3 f_avg = base_color + (glm::dvec3(1.0) - base_color) / 21.0;
         double e_avg = ess_average();
         glm::dvec3 f_ms = f_avg * f_avg * e_avg / (glm::dvec3(1.0) - f_avg * (1.0 - e_avg));
@@ -257,11 +298,10 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
     l.interface = (1.0 - metallic) * ((1.0 - transmission) * dielectric_coat + transmission * glass);
     const double floor = 0.02; // kernels/bsdf.cl LOBE_ESTIMATE_FLOOR
     bool has_interface = (specular > 0.0 && eta != 1.0) || transmission > 0.0;
-    if (rough()) {
+    if (conductor_rough())
         l.conductor = std::max(l.conductor, floor * metallic);
-        if (has_interface)
-            l.interface = std::max(l.interface, floor * (1.0 - metallic));
-    }
+    if (rough() && has_interface)
+        l.interface = std::max(l.interface, floor * (1.0 - metallic));
     // Under a sheen the base lobes see what it does not reflect from wo (its albedo capped
     // at 1); the sheen reflects only from outside.
     if (max3(sheen_color) > 0.0) {
@@ -383,9 +423,19 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
                             wi.z;
         }
         f += multiple_scattering_f_cos(std::max(wo.z, 0.0), wi.z);
-        if (rough() && wo.z > 0.0)
+        if (wo.z > 0.0 && anisotropic()) {
+            // The conductor's anisotropic lobe, then the dielectric layer's isotropic one.
+            glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - c, 5.0);
+            f += metallic * schlick *
+                 (ggx_d(h, alpha_t, alpha_b) * ggx_g1(wo, alpha_t, alpha_b) * ggx_g1(wi, alpha_t, alpha_b) /
+                  (4.0 * wo.z));
+            if (rough())
+                f += (specular_reflectance(c, wo.z) - metallic * schlick) *
+                     (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+        } else if (rough() && wo.z > 0.0) {
             f += specular_reflectance(c, wo.z) *
                  (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+        }
         return f;
     }
     if (wi.z == 0.0 || !rough() || wo.z <= 0.0 || transmission <= 0.0)
@@ -422,7 +472,13 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
             glm::dvec3 h = glm::normalize(wo + wi);
             p += l.coat * visible_normal_pdf(wo, h, coat_alpha) / (4.0 * glm::dot(wo, h));
         }
-        if (rough() && wo.z > 0.0) {
+        if (wo.z > 0.0 && anisotropic()) {
+            glm::dvec3 h = glm::normalize(wo + wi);
+            double c = std::abs(glm::dot(wo, h));
+            p += l.conductor * visible_normal_pdf(wo, h, alpha_t, alpha_b) / (4.0 * c);
+            if (rough())
+                p += l.interface * interface_split(c, wo.z) * visible_normal_pdf(wo, h, alpha) / (4.0 * c);
+        } else if (rough() && wo.z > 0.0) {
             glm::dvec3 h = glm::normalize(wo + wi);
             double c = std::abs(glm::dot(wo, h));
             double select = l.conductor + l.interface * interface_split(c, std::max(wo.z, 0.0));

@@ -14,13 +14,19 @@
 
 namespace pathcl::test {
 
-// GGX (Trowbridge-Reitz) normal distribution D(m) and Smith's masking G1(w) for alpha.
+// GGX (Trowbridge-Reitz) normal distribution D(m) and Smith's masking G1(w) for alpha,
+// and anisotropic, for alpha ax along x and ay along y.
 double ggx_d(const glm::dvec3& m, double alpha);
 double ggx_g1(const glm::dvec3& w, double alpha);
+double ggx_d(const glm::dvec3& m, double ax, double ay);
+double ggx_g1(const glm::dvec3& w, double ax, double ay);
 
 struct ReferenceBsdf {
     glm::dvec3 base_color{1.0}, specular_color{1.0};
     double specular = 1.0, metallic = 0.0, alpha = 1.0, transmission = 0.0;
+    // KHR_materials_anisotropy: the conductor's alpha along x (the direction) and along y;
+    // both alpha when isotropic. Its lobe is then single-scattering.
+    double alpha_t = 1.0, alpha_b = 1.0;
     double eta = 1.5; // ior of the side wi refracts into over the ior of wo's side
     double ior = 1.5;
     bool thin = true;
@@ -32,7 +38,9 @@ struct ReferenceBsdf {
     // The material as the kernel reads it, hit from the front (eta = ior) or the back.
     static ReferenceBsdf from_material(const Material& m, bool front_face);
 
-    bool rough() const; // false: the specular lobes are delta functions
+    bool rough() const;           // false: the dielectric's specular lobes are delta functions
+    bool conductor_rough() const; // false: the conductor is an ideal mirror
+    bool anisotropic() const { return alpha_t != alpha_b; }
 
     // f(wo, wi) |cos theta_i| over the non-delta lobes.
     glm::dvec3 f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const;

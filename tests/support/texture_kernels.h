@@ -15,8 +15,8 @@
 
 namespace pathcl::test {
 
-inline constexpr std::uint32_t kTextureFeatures =
-    FEATURE_TEXTURES | FEATURE_NORMAL_MAPS | FEATURE_VERTEX_COLORS | FEATURE_CLEARCOAT | FEATURE_SHEEN;
+inline constexpr std::uint32_t kTextureFeatures = FEATURE_TEXTURES | FEATURE_NORMAL_MAPS | FEATURE_VERTEX_COLORS |
+                                                  FEATURE_CLEARCOAT | FEATURE_SHEEN | FEATURE_ANISOTROPY;
 
 // Built once, with kTextureFeatures.
 const cl::Program& texture_program();
