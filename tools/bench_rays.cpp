@@ -2,13 +2,15 @@
 // kernels in tests/kernels/trace_test_kernels.cl) against Embree 3 on the same rays and
 // the same machine: closest hit and any hit, for incoherent rays (origins uniform in the
 // scene's bounds, directions uniform on the sphere, like diffuse bounces) and coherent
-// ones (the scene camera's primary rays). Embree runs its single-ray API on one thread
-// per core, which is what pathcl's per-work-item kernels compare with.
+// ones (the scene camera's primary rays). Embree runs on one thread per core, through its
+// single-ray API (what pathcl's one ray per work-item compares with) and through its
+// 16-ray packet API (rtcIntersect16 / rtcOccluded16 on consecutive rays), which is how
+// Mitsuba 3's LLVM backend traces on a 16-wide machine.
 //
 //   bench_rays SCENE.gltf [--rays N] [--runs R] [--device I]
 //
 // Prints, per case, min / median / max million rays per second over R timed runs (after
-// one warm-up) and the ratio of the medians.
+// one warm-up) and the ratios of the medians.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -174,12 +176,26 @@ struct Embree {
         rtcReleaseDevice(device);
     }
 
+    // On one thread per core: `work(t, threads)` traces thread t's share.
+    template <class Work>
+    static Stats on_every_core(int runs, std::size_t n, Work work)
+    {
+        unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+        return time_runs(runs, n, [&] {
+            std::vector<std::thread> pool;
+            for (unsigned t = 1; t < threads; ++t)
+                pool.emplace_back(work, t, threads);
+            work(0, threads);
+            for (std::thread& th : pool)
+                th.join();
+        });
+    }
+
     Stats run(const Rays& r, bool any_hit, int runs)
     {
         std::size_t n = r.origin.size();
-        unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-        std::vector<float> sink(threads, 0.0f);
-        auto work = [&](unsigned t) {
+        std::vector<float> sink(std::max(1u, std::thread::hardware_concurrency()), 0.0f);
+        auto work = [&](unsigned t, unsigned threads) {
             RTCIntersectContext ctx;
             rtcInitIntersectContext(&ctx);
             float acc = 0.0f;
@@ -207,14 +223,47 @@ struct Embree {
             }
             sink[t] = acc;
         };
-        return time_runs(runs, n, [&] {
-            std::vector<std::thread> pool;
-            for (unsigned t = 1; t < threads; ++t)
-                pool.emplace_back(work, t);
-            work(0);
-            for (std::thread& th : pool)
-                th.join();
-        });
+        return on_every_core(runs, n, work);
+    }
+
+    // The same rays through the 16-ray packet API: consecutive rays make a packet.
+    Stats run_packets(const Rays& r, bool any_hit, int runs)
+    {
+        std::size_t n = r.origin.size();
+        std::vector<float> sink(std::max(1u, std::thread::hardware_concurrency()), 0.0f);
+        auto work = [&](unsigned t, unsigned threads) {
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            alignas(64) int valid[16];
+            alignas(64) RTCRayHit16 rh;
+            float acc = 0.0f;
+            for (std::size_t first = 16 * t; first < n; first += 16 * static_cast<std::size_t>(threads)) {
+                for (std::size_t k = 0; k < 16; ++k) {
+                    std::size_t i = std::min(first + k, n - 1);
+                    valid[k] = first + k < n ? -1 : 0;
+                    rh.ray.org_x[k] = r.origin[i].x;
+                    rh.ray.org_y[k] = r.origin[i].y;
+                    rh.ray.org_z[k] = r.origin[i].z;
+                    rh.ray.dir_x[k] = r.dir[i].x;
+                    rh.ray.dir_y[k] = r.dir[i].y;
+                    rh.ray.dir_z[k] = r.dir[i].z;
+                    rh.ray.tnear[k] = 0.0f;
+                    rh.ray.tfar[k] = INFINITY;
+                    rh.ray.mask[k] = ~0u;
+                    rh.ray.time[k] = 0.0f;
+                    rh.ray.flags[k] = 0;
+                    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                }
+                if (any_hit)
+                    rtcOccluded16(valid, scene, &ctx, &rh.ray);
+                else
+                    rtcIntersect16(valid, scene, &ctx, &rh);
+                for (std::size_t k = 0; k < 16; ++k)
+                    acc += rh.ray.tfar[k];
+            }
+            sink[t] = acc;
+        };
+        return on_every_core(runs, n, work);
     }
 };
 
@@ -240,16 +289,17 @@ int main(int argc, char** argv)
         const SceneArrays& ds = cs.arrays;
         Pathcl pc(device, ds);
         Embree em(ds);
-        std::printf("%s: %zu triangles, %zu rays per run, %d runs; Mrays/s min / median / max\n", path.c_str(),
-                    ds.triangles.size(), rays, runs);
+        std::printf("%s: %zu triangles, %zu rays per run, %d runs; Mrays/s min / median / max (pathcl / embree)\n",
+                    path.c_str(), ds.triangles.size(), rays, runs);
         Rays incoherent = incoherent_rays(scene, rays), primary = primary_rays(scene, rays);
         rays = primary.origin.size();
         for (auto [name, r] : {std::pair{"incoherent", &incoherent}, std::pair{"primary", &primary}})
             for (bool any : {false, true}) {
-                Stats p = pc.run(*r, any, runs), e = em.run(*r, any, runs);
-                std::printf(
-                    "  %-10s %-7s pathcl %6.2f / %6.2f / %6.2f | embree %6.2f / %6.2f / %6.2f | pathcl/embree %.2f\n",
-                    name, any ? "any" : "closest", p.min, p.median, p.max, e.min, e.median, e.max, p.median / e.median);
+                Stats p = pc.run(*r, any, runs), e = em.run(*r, any, runs), q = em.run_packets(*r, any, runs);
+                std::printf("  %-10s %-7s pathcl %6.2f / %6.2f / %6.2f | embree %6.2f / %6.2f / %6.2f (%.2f) | embree "
+                            "16-ray packets %6.2f / %6.2f / %6.2f (%.2f)\n",
+                            name, any ? "any" : "closest", p.min, p.median, p.max, e.min, e.median, e.max,
+                            p.median / e.median, q.min, q.median, q.max, p.median / q.median);
             }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_rays: error: %s\n", e.what());
