@@ -1,6 +1,7 @@
 // Build-time generator of the dielectric layer's albedo table (host/render/layer_albedo.h):
-// writes a C++ source defining pathcl::layer_albedo_table(). Run by CMake; takes about a
-// second, which every render would otherwise pay on its first glossy material.
+// writes a C++ source defining pathcl::layer_albedo_table(). Run by CMake; takes about ten
+// seconds on two cores (most of it the anisotropic table), which every render would
+// otherwise pay on its first glossy material.
 //   make_layer_albedo_table OUT.cpp
 #include <cstdio>
 #include <fstream>

@@ -4,6 +4,8 @@
 #include "render/compile_scene.h"
 #include "render/layer_albedo.h"
 
+#include "closure/layer_table.h"
+
 #include <cmath>
 
 namespace pathcl {
@@ -42,8 +44,13 @@ void compile_materials(const Scene& scene, const KernelFeatures& features, Scene
         arrays.materials.push_back(dm);
     }
     if (features.has(FEATURE_GLOSSY) || features.has(FEATURE_TRANSMISSION) || features.has(FEATURE_CLEARCOAT) ||
-        features.has(FEATURE_SHEEN) || features.has(FEATURE_ANISOTROPY))
-        arrays.layer_albedo = layer_albedo_table();
+        features.has(FEATURE_SHEEN) || features.has(FEATURE_ANISOTROPY)) {
+        // The anisotropic albedo (two thirds of the table) only where the kernels can read
+        // it: a program with FEATURE_ANISOTROPY.
+        const std::vector<float>& table = layer_albedo_table();
+        arrays.layer_albedo.assign(
+            table.begin(), table.begin() + (features.has(FEATURE_ANISOTROPY) ? LAYER_TABLE_SIZE : LAYER_TABLE_ANISO));
+    }
 }
 
 } // namespace pathcl

@@ -34,6 +34,38 @@ double grid_mu(int i)
     return std::max(t * t, 1e-6);
 }
 
+// The anisotropy table's grids: sqrt(cos theta), cos phi and the two roughnesses,
+// each uniform.
+double aniso_grid_mu(int i)
+{
+    double t = static_cast<double>(i) / (LAYER_ANISO_MU_RES - 1);
+    return std::max(t * t * t * t, 1e-6); // cos theta^(1/4): grazing angles, where E bends, get more points
+}
+
+double aniso_grid(int k, int n)
+{
+    return static_cast<double>(k) / (n - 1);
+}
+
+// The weights w_k of the average over phi in [0, pi/2] of a function linear in c =
+// cos phi between the grid points c_k: the average of each hat function, in closed form.
+std::vector<double> azimuth_weights()
+{
+    const int n = LAYER_ANISO_V_RES;
+    std::vector<double> w(n, 0.0);
+    for (int k = 0; k + 1 < n; ++k) {
+        double c0 = aniso_grid(k, n), c1 = aniso_grid(k + 1, n);
+        double p_hi = std::acos(c0), p_lo = std::acos(c1); // c grows as phi falls
+        double span = p_hi - p_lo, cos_integral = std::sin(p_hi) - std::sin(p_lo);
+        // f = f_k (c1 - c) / dc + f_k+1 (c - c0) / dc, integrated over phi.
+        w[k] += (c1 * span - cos_integral) / (c1 - c0);
+        w[k + 1] += (cos_integral - c0 * span) / (c1 - c0);
+    }
+    for (double& x : w)
+        x /= kPi / 2.0;
+    return w;
+}
+
 double grid_roughness(int j)
 {
     return static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
@@ -46,7 +78,7 @@ double grid_eta(int k)
 }
 
 // 2 * integral over mu in [0, 1] of mu times the interpolant the kernels read: linear in
-// t = sqrt(mu) between grid points, so 2 mu dmu = 4 t^3 dt.
+// t = sqrt(mu) between the n grid points, so 2 mu dmu = 4 t^3 dt.
 double cosine_average(const float* f)
 {
     double h = 1.0 / (LAYER_MU_RES - 1), sum = 0.0;
@@ -55,6 +87,20 @@ double cosine_average(const float* f)
         double p4 = std::pow(t1, 4) - std::pow(t0, 4), p5 = std::pow(t1, 5) - std::pow(t0, 5);
         // f = (f_i (t1 - t) + f_i+1 (t - t0)) / h
         sum += (f[i] * (t1 * p4 - 0.8 * p5) + f[i + 1] * (0.8 * p5 - t0 * p4)) / h;
+    }
+    return sum;
+}
+
+// The same for the anisotropy table's interpolant, linear in t = cos theta^(1/4) between
+// its LAYER_ANISO_MU_RES points: 2 mu dmu = 8 t^7 dt.
+double quartic_cosine_average(const float* f)
+{
+    double h = 1.0 / (LAYER_ANISO_MU_RES - 1), sum = 0.0;
+    for (int i = 0; i + 1 < LAYER_ANISO_MU_RES; ++i) {
+        double t0 = i * h, t1 = (i + 1) * h;
+        double p8 = std::pow(t1, 8) - std::pow(t0, 8), p9 = std::pow(t1, 9) - std::pow(t0, 9);
+        // f = (f_i (t1 - t) + f_i+1 (t - t0)) / h, times 8 t^7, integrated.
+        sum += (f[i] * (t1 * p8 - 8.0 / 9.0 * p9) + f[i + 1] * (8.0 / 9.0 * p9 - t0 * p8)) / h;
     }
     return sum;
 }
@@ -112,6 +158,30 @@ std::vector<float> compute_layer_albedo_table(int panels)
         for (int i = 0; i < LAYER_MU_RES; ++i)
             t[LAYER_TABLE_SHEEN + j * LAYER_MU_RES + i] =
                 static_cast<float>(integrate_sheen_albedo(grid_mu(i), grid_roughness(j), panels / 4));
+    // The anisotropic lobe, (s, r) blocks shared by two threads; then each block's average
+    // over the hemisphere of the interpolant the kernels read (bilinear in sqrt(cos) and v).
+    auto aniso_blocks = [&](int first, int step) {
+        for (int sr = first; sr < LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES; sr += step) {
+            double along = aniso_grid(sr / LAYER_ANISO_ROUGH_RES, LAYER_ANISO_T_RES);
+            double roughness = aniso_grid(sr % LAYER_ANISO_ROUGH_RES, LAYER_ANISO_ROUGH_RES);
+            for (int k = 0; k < LAYER_ANISO_V_RES; ++k)
+                for (int i = 0; i < LAYER_ANISO_MU_RES; ++i)
+                    t[LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK + k * LAYER_ANISO_MU_RES + i] =
+                        static_cast<float>(integrate_anisotropic_albedo(
+                            aniso_grid_mu(i), aniso_grid(k, LAYER_ANISO_V_RES), along, roughness, panels / 4));
+        }
+    };
+    std::thread aniso_helper(aniso_blocks, 1, 2);
+    aniso_blocks(0, 2);
+    aniso_helper.join();
+    const std::vector<double> w = azimuth_weights();
+    for (int sr = 0; sr < LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES; ++sr) {
+        double avg = 0.0;
+        for (int k = 0; k < LAYER_ANISO_V_RES; ++k)
+            avg += w[static_cast<std::size_t>(k)] *
+                   quartic_cosine_average(&t[LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK + k * LAYER_ANISO_MU_RES]);
+        t[LAYER_TABLE_ANISO_AVG + sr] = static_cast<float>(avg);
+    }
     return t;
 }
 
@@ -126,27 +196,29 @@ namespace {
 // are located by bisection so each smooth piece is integrated on its own. Accurate to
 // ~1e-4 at 16 panels (1e-7 away from grazing), not the ~1e-3 of a stratified mean. wo
 // lies in the xz plane, so the integrand is even in phi and [0, pi] suffices.
+// Anisotropic: alpha ax along x and ay along y, wo anywhere; the whole cap is integrated
+// unless `half_cap` (wo in the xz plane, ax = ay).
 template <class Label, class Accumulate>
-void integrate_visible_normals(double cos_theta, double alpha, int panels, const Label& label,
-                               const Accumulate& accumulate)
+void integrate_visible_normals(const glm::dvec3& wo, double ax, double ay, bool half_cap, int panels,
+                               const Label& label, const Accumulate& accumulate)
 {
     static constexpr double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
                                      0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
     static constexpr double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066278921548, 0.3626837833783620,
                                      0.3626837833783620, 0.3137066278921548, 0.2223810344533745, 0.1012285362903763};
-    const glm::dvec3 wo(std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta);
-    const glm::dvec3 w = glm::normalize(glm::dvec3(wo.x * alpha, wo.y * alpha, wo.z));
-    const double z_lo = -w.z, cap_area = kPi * (1.0 - z_lo); // half the cap: phi in [0, pi]
+    const glm::dvec3 w = glm::normalize(glm::dvec3(wo.x * ax, wo.y * ay, wo.z));
+    const double turn = half_cap ? kPi : 2.0 * kPi;
+    const double z_lo = -w.z, cap_area = turn * (1.0 - z_lo); // the cap, or half of it: phi in [0, turn]
     const int sign_steps = 32;
     for (int panel = 0; panel < panels; ++panel) {
-        double p0 = kPi * panel / panels, p1 = kPi * (panel + 1) / panels;
+        double p0 = turn * panel / panels, p1 = turn * (panel + 1) / panels;
         for (int gp = 0; gp < 8; ++gp) {
             double phi = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * gx[gp], wphi = 0.5 * (p1 - p0) * gw[gp];
             double cp = std::cos(phi), sp = std::sin(phi);
             auto normal = [&](double z) {
                 double st = std::sqrt(std::max(0.0, 1.0 - z * z));
                 glm::dvec3 h = glm::dvec3(st * cp, st * sp, z) + w;
-                return glm::normalize(glm::dvec3(h.x * alpha, h.y * alpha, std::max(h.z, 0.0)));
+                return glm::normalize(glm::dvec3(h.x * ax, h.y * ay, std::max(h.z, 0.0)));
             };
             auto piece = [&](double a, double b) {
                 for (int half = 0; half < 2; ++half) { // two Gauss panels per piece
@@ -178,6 +250,15 @@ void integrate_visible_normals(double cos_theta, double alpha, int panels, const
             piece(start, 1.0);
         }
     }
+}
+
+// The isotropic case: wo at cos_theta in the xz plane, half the cap.
+template <class Label, class Accumulate>
+void integrate_visible_normals(double cos_theta, double alpha, int panels, const Label& label,
+                               const Accumulate& accumulate)
+{
+    const glm::dvec3 wo(std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta);
+    integrate_visible_normals(wo, alpha, alpha, true, panels, label, accumulate);
 }
 
 glm::dvec3 reflect(const glm::dvec3& wo, const glm::dvec3& m)
@@ -239,6 +320,24 @@ double integrate_dielectric_albedo(double cos_theta, double roughness, double et
                                   if (refract(wo, m, eta, wt) && wt.z < 0.0)
                                       e += weight * (1.0 - f) * smith_g1(wt, alpha);
                               });
+    return e;
+}
+
+double integrate_anisotropic_albedo(double cos_theta, double cos_phi, double along, double roughness, int panels)
+{
+    double ax = along * along, ay = ggx_anisotropic_alpha_b(roughness * roughness, ax);
+    if (ax < ALPHA_DELTA)
+        return 1.0; // a mirror (the kernels' delta lobe)
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+    const glm::dvec3 wo(sin_theta * cos_phi, sin_theta * std::sqrt(std::max(0.0, 1.0 - cos_phi * cos_phi)), cos_theta);
+    double e = 0.0;
+    integrate_visible_normals(
+        wo, ax, ay, false, panels, [](const glm::dvec3& m, const glm::dvec3& w) { return reflect(w, m).z > 0.0; },
+        [&](const glm::dvec3& m, const glm::dvec3& w, double weight) {
+            glm::dvec3 wi = reflect(w, m);
+            if (wi.z > 0.0)
+                e += weight * ggx_g1_aniso(wi, ax, ay);
+        });
     return e;
 }
 

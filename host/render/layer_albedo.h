@@ -43,6 +43,14 @@ LayerAlbedo integrate_layer_albedo(double cos_theta, double roughness, double et
 // cos theta at sheenRoughness `roughness`, by Gauss-Legendre over the hemisphere.
 double integrate_sheen_albedo(double cos_theta, double roughness, int panels = 16);
 
+// The albedo with Fresnel 1 of the anisotropic GGX lobe of KHR_materials_anisotropy with
+// alpha_t = along^2 along the direction and alpha_b = ggx_anisotropic_alpha_b(roughness^2,
+// alpha_t) across it (closure/ggx.h), from the
+// direction at cos theta whose azimuth phi from the anisotropy direction has cosine
+// cos_phi, by the quadrature of integrate_layer_albedo over the whole cap of visible
+// normals (1 for a mirror).
+double integrate_anisotropic_albedo(double cos_theta, double cos_phi, double along, double roughness, int panels = 16);
+
 // 2 * integral of layer_curve(mu, eta) mu dmu: the smooth layer's hemispherical average
 // of the normalized Fresnel curve (Schlick's for eta 0: 1/21), exact (the kernels use it
 // below ALPHA_DELTA).

@@ -81,12 +81,13 @@
  *
  * KHR_materials_anisotropy makes the conductor's lobe anisotropic GGX in the frame of
  * bsdf_frame (x along the direction texture/anisotropy.cl finds): alpha_t = mix(alpha, 1,
- * strength^2) along it, alpha_b = max(alpha, ALPHA_DELTA) across. It is single-scattering
- * (no Kulla-Conty lobe): the isotropic table of the masking loss, read at the material's
- * roughness, gained 1.3 % of energy at grazing angles along the direction. The dielectric
- * layer and the transmission lobes keep the isotropic alpha, since the diffuse base's
- * albedo scaling and the interface's compensation are isotropic tables (read at the
- * direction's projected roughness, a white anisotropic plastic gained 0.9 %).
+ * strength^2) along it, alpha_b = max(alpha, ALPHA_DELTA) across. Its Kulla-Conty lobe
+ * reads the anisotropic albedo E_aniso over cos theta x azimuth x both roughnesses
+ * (LAYER_TABLE_ANISO), with which a white brushed metal reflects 0.995 to 1.002 of the
+ * light (an isotropic table read at any one roughness gained up to 1.3 % at grazing
+ * angles). The dielectric layer and the transmission lobes keep the isotropic alpha, since
+ * the diffuse base's albedo scaling and the interface's compensation are isotropic tables
+ * (read at the direction's projected roughness, a white anisotropic plastic gained 0.9 %).
  *
  * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
  * the interface with probabilities estimated from their albedos at the macro normal
@@ -133,7 +134,9 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
          * stays finite. */
         float s = m->anisotropy.x;
         p.alpha_t = mix(p.alpha, 1.0f, s * s);
-        p.alpha_b = p.alpha_t >= ALPHA_DELTA ? fmax(p.alpha, ALPHA_DELTA) : p.alpha_t;
+        p.alpha_b = ggx_anisotropic_alpha_b(p.alpha, p.alpha_t);
+        p.aniso_t = sqrt(p.alpha_t) * (float)(LAYER_ANISO_T_RES - 1);
+        p.aniso_r = m->roughness * (float)(LAYER_ANISO_ROUGH_RES - 1);
         float3 t = sp->t_aniso - dot(sp->t_aniso, sp->ns) * sp->ns;
         float len = length(t);
         float3 b;
@@ -151,23 +154,11 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.cos_o = clamp(dot(wo, sp->ns), 0.0f, 1.0f);
     p.glass_scale = 1.0f;
     p.ms_scale = p.ms_albedo = (float3)(0.0f);
-    p.ess_o = 1.0f;
+    p.ess_o = p.conductor_e_o = 1.0f;
 #ifndef PATHCL_SINGLE_SCATTERING
     if (p.alpha >= ALPHA_DELTA) {
         /* Energy lost to masking, restored (multiple-scattering compensation). */
         p.ess_o = ess_albedo(&p, p.cos_o);
-        if (p.metallic > 0.0f && !bsdf_anisotropic(&p)) {
-            /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
-            int r0 = min((int)p.layer_r, LAYER_ROUGH_RES - 2);
-            float e_avg =
-                mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
-            float3 f_avg = p.base_color + (1.0f - p.base_color) * (1.0f / 21.0f);
-            float3 f_ms = f_avg * f_avg * e_avg / (1.0f - f_avg * (1.0f - e_avg));
-            if (1.0f - e_avg > 1e-4f) { /* else the loss is below 1e-4: nothing to restore */
-                p.ms_scale = p.metallic * f_ms * INV_PI / (1.0f - e_avg);
-                p.ms_albedo = p.metallic * f_ms * (1.0f - p.ess_o);
-            }
-        }
         /* A rough interface with the exact Fresnel factor (specular 1, white specular
          * colour) loses 1 - G(cos_o); its lobes are divided by G, as Turquin (2019) does.
          * A thin sheet's lobe pair has the reflection lobe's albedo E_ss. */
@@ -175,6 +166,28 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
         if (p.transmission > 0.0f && exact_fresnel) {
             float g = p.thin ? p.ess_o : interface_albedo(&p, p.cos_o);
             p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
+        }
+    }
+    if (conductor_rough(&p) && p.metallic > 0.0f) {
+        /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
+        float e_avg;
+#ifdef PATHCL_HAS_ANISOTROPY
+        if (bsdf_anisotropic(&p)) {
+            float3 wo_l = (float3)(dot(wo, p.tangent), dot(wo, cross(sp->ns, p.tangent)), p.cos_o);
+            p.conductor_e_o = aniso_albedo(&p, wo_l);
+            e_avg = aniso_albedo_average(&p);
+        } else
+#endif
+        {
+            p.conductor_e_o = p.ess_o;
+            int r0 = min((int)p.layer_r, LAYER_ROUGH_RES - 2);
+            e_avg = mix(layer[LAYER_TABLE_ESS_AVG + r0], layer[LAYER_TABLE_ESS_AVG + r0 + 1], p.layer_r - (float)r0);
+        }
+        float3 f_avg = p.base_color + (1.0f - p.base_color) * (1.0f / 21.0f);
+        float3 f_ms = f_avg * f_avg * e_avg / (1.0f - f_avg * (1.0f - e_avg));
+        if (1.0f - e_avg > 1e-4f) { /* else the loss is below 1e-4: nothing to restore */
+            p.ms_scale = p.metallic * f_ms * INV_PI / (1.0f - e_avg);
+            p.ms_albedo = p.metallic * f_ms * (1.0f - p.conductor_e_o);
         }
     }
 #endif

@@ -56,10 +56,10 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
             float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo(p, wi.z));
             e.f_cos = p->diffuse_scale * k * wi.z;
         }
-        if (rough && p->metallic > 0.0f) {
+        if (conductor_rough(p) && p->metallic > 0.0f) {
             /* Kulla and Conty's multiple-scattering lobe: reciprocal, and with it a white
              * rough conductor reflects everything. Sampled with the diffuse lobe. */
-            e.f_cos += p->ms_scale * ((1.0f - p->ess_o) * (1.0f - ess_albedo(p, wi.z)) * wi.z);
+            e.f_cos += p->ms_scale * ((1.0f - p->conductor_e_o) * (1.0f - conductor_albedo(p, wi)) * wi.z);
         }
 #ifdef PATHCL_HAS_ANISOTROPY
         if (bsdf_anisotropic(p)) {

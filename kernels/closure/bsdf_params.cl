@@ -2,13 +2,12 @@
  * evaluation return. bsdf_params (closure/bsdf.cl) fills it from the Material once per
  * shading point, so lobe choices, layer albedos and multiple-scattering scales are
  * computed once, not per evaluation. */
+#include "closure/ggx.h"
 #include "features.h"
 #include "geom/surface_point.cl"
 #include "types.h"
 #include "util/math.cl"
 
-/* GGX alpha below which the specular lobes are delta functions (pbrt-v4 uses the same). */
-#define ALPHA_DELTA 1.0e-3f
 /* Smallest selection probability estimate of a rough specular or transmission lobe that
  * exists: the estimates come from the macro normal, the lobes from the microfacets. */
 #define LOBE_ESTIMATE_FLOOR 0.02f
@@ -71,6 +70,7 @@ typedef struct {
     __global const float* layer; /* LAYER_* tables */
     float layer_r, layer_x;      /* continuous table coordinates of roughness and ior */
     float ess_o;                 /* GGX albedo with Fresnel 1 from wo (rough lobes) */
+    float conductor_e_o;         /* ... of the conductor's lobe (anisotropic or ess_o) */
     float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
     float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
     float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
@@ -78,6 +78,7 @@ typedef struct {
     float alpha_t, alpha_b; /* the conductor's GGX alpha along and across the anisotropy
                              * direction (both alpha when isotropic) */
     float3 tangent;         /* the frame's x axis: the anisotropy direction, in the shading plane */
+    float aniso_t, aniso_r; /* continuous E_aniso table coordinates of the roughness along and across */
 #endif
 #ifdef PATHCL_HAS_CLEARCOAT
     float coat;       /* clearcoatFactor (0: no coat) */

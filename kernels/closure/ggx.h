@@ -6,7 +6,19 @@
 
 #include "util/compat.h"
 
+/* GGX alpha below which a lobe is a delta function (pbrt-v4 uses the same). */
+#define ALPHA_DELTA PCL_REAL(1.0e-3)
+
 PATHCL_BEGIN
+
+/* KHR_materials_anisotropy's alpha across the direction, for the material's alpha
+ * (roughness^2) and alpha_t = mix(alpha, 1, strength^2) along it: the material's own, kept
+ * clear of 0 (at least ALPHA_DELTA) so that D stays finite, unless the lobe is a delta
+ * function along the direction too (alpha_t below ALPHA_DELTA: then alpha_t). */
+PATHCL_FN pcl_real ggx_anisotropic_alpha_b(pcl_real alpha, pcl_real alpha_t)
+{
+    return alpha_t >= ALPHA_DELTA ? fmax(alpha, ALPHA_DELTA) : alpha_t;
+}
 
 /* GGX normal distribution D(wm) for alpha^2 = a2 (wm.z > 0). Written with sin^2 = x^2 + y^2
  * so that tiny alpha keeps its precision near the peak. */

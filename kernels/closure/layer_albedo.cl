@@ -98,6 +98,49 @@ static inline float3 layer_average(const BsdfParams* p, const Material* m)
     return p->specular * (p->f0c * (e_ss - b) + b);
 }
 
+#ifdef PATHCL_HAS_ANISOTROPY
+
+/* The anisotropic conductor's GGX albedo with Fresnel 1 (the E_aniso table) from the
+ * direction w in the frame of bsdf_frame: linear in cos theta^(1/4), in |cos| of w's
+ * azimuth from the direction (1 along the normal, where every azimuth agrees), and in the
+ * roughnesses along and across the direction (p->aniso_t, p->aniso_r, continuous
+ * coordinates). */
+static inline float aniso_albedo(const BsdfParams* p, float3 w)
+{
+    float mu = sqrt(sqrt(clamp(fabs(w.z), 0.0f, 1.0f))) * (float)(LAYER_ANISO_MU_RES - 1);
+    float xy2 = w.x * w.x + w.y * w.y;
+    float c = (xy2 > 0.0f ? clamp(fabs(w.x) / sqrt(xy2), 0.0f, 1.0f) : 1.0f) * (float)(LAYER_ANISO_V_RES - 1);
+    int t0 = min((int)p->aniso_t, LAYER_ANISO_T_RES - 2), r0 = min((int)p->aniso_r, LAYER_ANISO_ROUGH_RES - 2);
+    float e[4];
+    for (int k = 0; k < 4; ++k) {
+        int block = (t0 + (k >> 1)) * LAYER_ANISO_ROUGH_RES + r0 + (k & 1);
+        e[k] = layer_bilinear(p->layer, LAYER_TABLE_ANISO + block * LAYER_ANISO_BLOCK, LAYER_ANISO_MU_RES, c,
+                              LAYER_ANISO_V_RES, mu);
+    }
+    float fr = p->aniso_r - (float)r0;
+    return mix(mix(e[0], e[1], fr), mix(e[2], e[3], fr), p->aniso_t - (float)t0);
+}
+
+/* Its cosine-weighted average over the hemisphere. */
+static inline float aniso_albedo_average(const BsdfParams* p)
+{
+    return layer_bilinear(p->layer, LAYER_TABLE_ANISO_AVG, LAYER_ANISO_ROUGH_RES, p->aniso_t, LAYER_ANISO_T_RES,
+                          p->aniso_r);
+}
+
+#endif /* PATHCL_HAS_ANISOTROPY */
+
+/* The GGX albedo with Fresnel 1 of the conductor's lobe from the direction w in the frame
+ * of bsdf_frame (its multiple-scattering compensation's E). */
+static inline float conductor_albedo(const BsdfParams* p, float3 w)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (bsdf_anisotropic(p))
+        return aniso_albedo(p, w);
+#endif
+    return ess_albedo(p, w.z);
+}
+
 #ifdef PATHCL_HAS_CLEARCOAT
 
 /* The clear coat is a dielectric layer of ior 1.5 (KHR_materials_clearcoat), F0 = 0.04. */

@@ -12,7 +12,15 @@
  *                   x' on a 16-point grid
  *   E_sheen[r][mu]  albedo of the KHR_materials_sheen lobe with colour 1 (closure/sheen.h),
  *                   r = sheenRoughness; above 1 at grazing angles for smooth sheens
- * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 278,784 bytes. */
+ *   E_aniso[t][r][c][mu]   albedo with Fresnel 1 of the anisotropic GGX lobe of
+ *                   KHR_materials_anisotropy (alpha t^2 along the direction, max(r^2,
+ *                   1e-3) across it: t = sqrt(alpha_t) and r the roughnesses along and
+ *                   across) from a direction at cos theta = mu^4 (grazing angles, where
+ *                   it bends, get more points) whose azimuth phi from the direction has
+ *                   |cos phi| = c; its own grid (LAYER_ANISO_*), 524,288 bytes
+ *   E_aniso_avg[t][r]  its cosine-weighted average over the hemisphere (all azimuths)
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 807,168 bytes; a
+ * program without anisotropy gets the first 278,784 (up to LAYER_TABLE_ANISO). */
 #ifndef PATHCL_CLOSURE_LAYER_TABLE_H
 #define PATHCL_CLOSURE_LAYER_TABLE_H
 
@@ -29,6 +37,13 @@
 #define LAYER_TABLE_GLASS_OUT (LAYER_TABLE_B_AVG + LAYER_B_ROWS * LAYER_ROUGH_RES)
 #define LAYER_TABLE_GLASS_IN (LAYER_TABLE_GLASS_OUT + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_SHEEN (LAYER_TABLE_GLASS_IN + LAYER_GLASS_ETA_RES * LAYER_ROUGH_RES * LAYER_MU_RES)
-#define LAYER_TABLE_SIZE (LAYER_TABLE_SHEEN + LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_ANISO_MU_RES 16
+#define LAYER_ANISO_V_RES 8
+#define LAYER_ANISO_ROUGH_RES 32
+#define LAYER_ANISO_T_RES 32
+#define LAYER_ANISO_BLOCK (LAYER_ANISO_V_RES * LAYER_ANISO_MU_RES) /* one (t, r) pair's table */
+#define LAYER_TABLE_ANISO (LAYER_TABLE_SHEEN + LAYER_ROUGH_RES * LAYER_MU_RES)
+#define LAYER_TABLE_ANISO_AVG (LAYER_TABLE_ANISO + LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES * LAYER_ANISO_BLOCK)
+#define LAYER_TABLE_SIZE (LAYER_TABLE_ANISO_AVG + LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES)
 
 #endif

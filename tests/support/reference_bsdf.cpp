@@ -14,7 +14,7 @@ namespace pathcl::test {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kAlphaDelta = 1e-3; // kernels/bsdf.cl ALPHA_DELTA
+constexpr double kAlphaDelta = 1e-3; // kernels/closure/ggx.h ALPHA_DELTA
 
 double max3(const glm::dvec3& v)
 {
@@ -93,6 +93,7 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
     r.specular = m.specular_color.w;
     r.metallic = m.metallic;
     r.alpha = r.alpha_t = r.alpha_b = static_cast<double>(m.roughness) * m.roughness;
+    r.perceptual_roughness = m.roughness;
     if (m.anisotropy.x > 0.0f) {
         // KHR_materials_anisotropy on the conductor: mix(alpha, 1, strength^2) along the
         // direction; across it the material's alpha, at least kAlphaDelta when rough.
@@ -252,16 +253,49 @@ double ReferenceBsdf::glass_scale(double cos_o) const
     return g > 1e-3 ? 1.0 / g : 1.0;
 }
 
-glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(double cos_o, double cos_i) const
+// E_aniso as the kernels read it, written out independently: bilinear in (|cos phi|,
+// cos theta^(1/4)) within each (sqrt(alpha_t), roughness) block, then linear in those.
+double ReferenceBsdf::conductor_albedo(const glm::dvec3& w) const
 {
-    if (!rough() || anisotropic() || metallic <= 0.0) // an anisotropic conductor: single scattering
+    if (!anisotropic())
+        return ess(std::max(w.z, 0.0));
+    const std::vector<float>& t = layer_albedo_table();
+    double xy2 = w.x * w.x + w.y * w.y, v = xy2 > 0.0 ? std::abs(w.x) / std::sqrt(xy2) : 1.0;
+    double row = v * (LAYER_ANISO_V_RES - 1),
+           col = std::pow(std::min(std::abs(w.z), 1.0), 0.25) * (LAYER_ANISO_MU_RES - 1);
+    double ft = std::sqrt(alpha_t) * (LAYER_ANISO_T_RES - 1), fr = perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1);
+    int t0 = std::min(static_cast<int>(ft), LAYER_ANISO_T_RES - 2);
+    int r0 = std::min(static_cast<int>(fr), LAYER_ANISO_ROUGH_RES - 2);
+    auto block = [&](int si, int ri) {
+        int offset = LAYER_TABLE_ANISO + (si * LAYER_ANISO_ROUGH_RES + ri) * LAYER_ANISO_BLOCK;
+        return table_at(t, offset, LAYER_ANISO_MU_RES, row, LAYER_ANISO_V_RES, col);
+    };
+    double a = ft - t0, b = fr - r0;
+    return (1 - a) * ((1 - b) * block(t0, r0) + b * block(t0, r0 + 1)) +
+           a * ((1 - b) * block(t0 + 1, r0) + b * block(t0 + 1, r0 + 1));
+}
+
+double ReferenceBsdf::conductor_albedo_average() const
+{
+    if (!anisotropic())
+        return ess_average();
+    return table_at(layer_albedo_table(), LAYER_TABLE_ANISO_AVG, LAYER_ANISO_ROUGH_RES,
+                    std::sqrt(alpha_t) * (LAYER_ANISO_T_RES - 1), LAYER_ANISO_T_RES,
+                    perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1));
+}
+
+glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
+{
+    if (!conductor_rough() || metallic <= 0.0)
         return glm::dvec3(0.0);
-    double e_avg = ess_average();
+    double e_avg = conductor_albedo_average();
     if (1.0 - e_avg <= 1e-4)
         return glm::dvec3(0.0);
     glm::dvec3 f_avg = base_color + (glm::dvec3(1.0) - base_color) / 21.0;
     glm::dvec3 f_ms = f_avg * f_avg * e_avg / (glm::dvec3(1.0) - f_avg * (1.0 - e_avg));
-    return metallic * f_ms * ((1.0 - ess(cos_o)) * (1.0 - ess(cos_i)) / (kPi * (1.0 - e_avg)) * cos_i);
+    glm::dvec3 wo_up(wo.x, wo.y, std::max(wo.z, 0.0));
+    return metallic * f_ms *
+           ((1.0 - conductor_albedo(wo_up)) * (1.0 - conductor_albedo(wi)) / (kPi * (1.0 - e_avg)) * wi.z);
 }
 
 glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h, double cos_o) const
@@ -277,20 +311,21 @@ glm::dvec3 ReferenceBsdf::transmittance(double cos_h, double cos_o) const
     return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission * glass_scale(cos_o));
 }
 
-ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
+ReferenceBsdf::Lobes ReferenceBsdf::lobes(const glm::dvec3& wo) const
 {
-    if (cos_o == cached_cos_o_)
+    if (wo == cached_wo_)
         return cached_lobes_;
+    const double cos_o = std::max(wo.z, 0.0);
     glm::dvec3 layer = layer_fresnel(*this, cos_o);
     glm::dvec3 e_o = inside ? glm::dvec3(0.0) : layer_albedo(cos_o);
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - cos_o, 5.0);
     Lobes l{};
     l.diffuse = inside ? 0.0 : (1.0 - metallic) * (1.0 - transmission) * mean3(base_color * (glm::dvec3(1.0) - e_o));
-    if (rough() && !anisotropic() && metallic > 0.0 && 1.0 - ess_average() > 1e-4) { // multiple scattering
+    if (conductor_rough() && metallic > 0.0 && 1.0 - conductor_albedo_average() > 1e-4) { // multiple scattering
         glm::dvec3 f_avg = base_color + (glm::dvec3(1.0) - base_color) / 21.0;
-        double e_avg = ess_average();
+        double e_avg = conductor_albedo_average();
         glm::dvec3 f_ms = f_avg * f_avg * e_avg / (glm::dvec3(1.0) - f_avg * (1.0 - e_avg));
-        l.diffuse += mean3(metallic * f_ms * (1.0 - ess(cos_o)));
+        l.diffuse += mean3(metallic * f_ms * (1.0 - conductor_albedo(glm::dvec3(wo.x, wo.y, cos_o))));
     }
     l.conductor = metallic * mean3(schlick);
     double dielectric_coat = mean3(inside ? layer : e_o);
@@ -329,7 +364,7 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(double cos_o) const
         l.coat /= sum;
         l.sheen /= sum;
     }
-    cached_cos_o_ = cos_o;
+    cached_wo_ = wo;
     cached_lobes_ = l;
     return l;
 }
@@ -422,7 +457,7 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
                             (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) * (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] *
                             wi.z;
         }
-        f += multiple_scattering_f_cos(std::max(wo.z, 0.0), wi.z);
+        f += multiple_scattering_f_cos(wo, wi);
         if (wo.z > 0.0 && anisotropic()) {
             // The conductor's anisotropic lobe, then the dielectric layer's isotropic one.
             glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - c, 5.0);
@@ -463,7 +498,7 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
 
 double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
 {
-    Lobes l = lobes(std::max(wo.z, 0.0));
+    Lobes l = lobes(wo);
     if (wi.z > 0.0) {
         double p = l.diffuse * wi.z / kPi; // diffuse and multiple-scattering lobes
         if (wo.z > 0.0)

@@ -24,9 +24,10 @@ double ggx_g1(const glm::dvec3& w, double ax, double ay);
 struct ReferenceBsdf {
     glm::dvec3 base_color{1.0}, specular_color{1.0};
     double specular = 1.0, metallic = 0.0, alpha = 1.0, transmission = 0.0;
-    // KHR_materials_anisotropy: the conductor's alpha along x (the direction) and along y;
-    // both alpha when isotropic. Its lobe is then single-scattering.
-    double alpha_t = 1.0, alpha_b = 1.0;
+    // KHR_materials_anisotropy: the conductor's alpha along x (the direction) and along y,
+    // both alpha when isotropic; the roughness its albedo table is read at (with
+    // sqrt(alpha_t)).
+    double alpha_t = 1.0, alpha_b = 1.0, perceptual_roughness = 1.0;
     double eta = 1.5; // ior of the side wi refracts into over the ior of wo's side
     double ior = 1.5;
     bool thin = true;
@@ -52,13 +53,13 @@ struct ReferenceBsdf {
     struct Lobes {
         double diffuse, conductor, interface, coat, sheen;
     };
-    Lobes lobes(double cos_o) const;
+    Lobes lobes(const glm::dvec3& wo) const;
     // Probability that the interface reflects (not refracts) at a facet seen at cos c.
     double interface_split(double c, double cos_o) const;
 
 private:
-    // lobes() for the last cos_o asked (the chi-square integration asks millions of times).
-    mutable double cached_cos_o_ = -1.0;
+    // lobes() for the last wo asked (the chi-square integration asks millions of times).
+    mutable glm::dvec3 cached_wo_{0.0, 0.0, -2.0};
     mutable Lobes cached_lobes_{};
 
 public:
@@ -75,7 +76,11 @@ public:
     double ess_average() const;
     double interface_albedo(double cos_theta) const;
     double glass_scale(double cos_o) const;
-    glm::dvec3 multiple_scattering_f_cos(double cos_o, double cos_i) const;
+    // The conductor's: ess, or with anisotropy the E_aniso table at w's cos theta and
+    // azimuth, and its average; the Kulla-Conty lobe they make.
+    double conductor_albedo(const glm::dvec3& w) const;
+    double conductor_albedo_average() const;
+    glm::dvec3 multiple_scattering_f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const;
 
     // The dielectric layer's directional albedo E(cos theta) and its cosine-weighted
     // average, as the kernels read them: interpolated from layer_albedo_table() for a
