@@ -34,8 +34,8 @@ double grid_mu(int i)
     return std::max(t * t, 1e-6);
 }
 
-// The anisotropy table's grids: sqrt(cos theta), cos phi and the two roughnesses,
-// each uniform.
+// The anisotropy table's grids: cos theta^(1/4), |cos phi| and the two roughnesses
+// (sqrt(alpha_t) and the material's), each uniform.
 double aniso_grid_mu(int i)
 {
     double t = static_cast<double>(i) / (LAYER_ANISO_MU_RES - 1);
@@ -78,7 +78,7 @@ double grid_eta(int k)
 }
 
 // 2 * integral over mu in [0, 1] of mu times the interpolant the kernels read: linear in
-// t = sqrt(mu) between the n grid points, so 2 mu dmu = 4 t^3 dt.
+// t = sqrt(mu) between grid points, so 2 mu dmu = 4 t^3 dt.
 double cosine_average(const float* f)
 {
     double h = 1.0 / (LAYER_MU_RES - 1), sum = 0.0;
@@ -158,8 +158,9 @@ std::vector<float> compute_layer_albedo_table(int panels)
         for (int i = 0; i < LAYER_MU_RES; ++i)
             t[LAYER_TABLE_SHEEN + j * LAYER_MU_RES + i] =
                 static_cast<float>(integrate_sheen_albedo(grid_mu(i), grid_roughness(j), panels / 4));
-    // The anisotropic lobe, (s, r) blocks shared by two threads; then each block's average
-    // over the hemisphere of the interpolant the kernels read (bilinear in sqrt(cos) and v).
+    // The anisotropic lobe, (sqrt(alpha_t), roughness) blocks shared by two threads; then
+    // each block's average over the hemisphere of the interpolant the kernels read
+    // (bilinear in cos theta^(1/4) and |cos phi|).
     auto aniso_blocks = [&](int first, int step) {
         for (int sr = first; sr < LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES; sr += step) {
             double along = aniso_grid(sr / LAYER_ANISO_ROUGH_RES, LAYER_ANISO_T_RES);

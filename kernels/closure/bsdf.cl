@@ -173,8 +173,9 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
         float e_avg;
 #ifdef PATHCL_HAS_ANISOTROPY
         if (bsdf_anisotropic(&p)) {
-            float3 wo_l = (float3)(dot(wo, p.tangent), dot(wo, cross(sp->ns, p.tangent)), p.cos_o);
-            p.conductor_e_o = aniso_albedo(&p, wo_l);
+            float3 t, b;
+            bsdf_frame(&p, sp, &t, &b);
+            p.conductor_e_o = aniso_albedo(&p, (float3)(dot(wo, t), dot(wo, b), p.cos_o));
             e_avg = aniso_albedo_average(&p);
         } else
 #endif
