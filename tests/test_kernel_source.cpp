@@ -23,7 +23,8 @@ std::string compile_alone(const std::string& file, std::uint32_t features)
     source.root = file;
     std::string text = assemble_kernel_source(source);
     cl::Program program(dev.context, text);
-    std::string options = base_build_options() + " " + KernelFeatures{features}.define();
+    std::string defines = KernelFeatures{features}.define();
+    std::string options = base_build_options(dev.info, defines) + " " + defines;
     try {
         program.compile(options.c_str());
     } catch (const cl::Error&) {

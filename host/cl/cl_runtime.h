@@ -19,6 +19,10 @@ struct DeviceInfo {
     unsigned long long global_memory = 0;
     unsigned long long max_allocation = 0; // the largest single buffer (CL_DEVICE_MAX_MEM_ALLOC_SIZE)
     bool fp64 = false;
+    // CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT: the device can divide and take square roots
+    // correctly rounded, as IEEE 754 does, when a program asks for it (PoCL on CPUs
+    // does either way; NVIDIA's driver only when asked).
+    bool correctly_rounded_divide_sqrt = false;
 };
 
 std::vector<DeviceInfo> list_devices();
@@ -46,7 +50,12 @@ struct ProgramBuild {
 // pathcl::Error naming the first error line of the build log.
 ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& source = {});
 
-// The options every build gets: strict IEEE float (no fast math), OpenCL C 1.2.
-std::string base_build_options();
+// The option `--fast-math` adds to a program's build options.
+inline constexpr const char* kUnsafeMathOption = "-cl-unsafe-math-optimizations";
+
+// The options every program is built with on `device`, before the program's own
+// `options`: OpenCL C 1.2, and division and square root correctly rounded wherever the
+// device offers it, unless `options` ask for unsafe math.
+std::string base_build_options(const DeviceInfo& device, const std::string& options);
 
 } // namespace pathcl

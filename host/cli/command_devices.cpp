@@ -17,10 +17,10 @@ Command add_devices_command(CLI::App& app)
                     return 1;
                 }
                 for (const DeviceInfo& d : list)
-                    std::printf("%d: %s | %s | %s | %u compute units | %.1f GiB | %s%s\n", d.index, d.platform.c_str(),
-                                d.name.c_str(), d.type.c_str(), d.compute_units,
+                    std::printf("%d: %s | %s | %s | %u compute units | %.1f GiB | %s%s%s\n", d.index,
+                                d.platform.c_str(), d.name.c_str(), d.type.c_str(), d.compute_units,
                                 static_cast<double>(d.global_memory) / (1024.0 * 1024.0 * 1024.0), d.version.c_str(),
-                                d.fp64 ? " | fp64" : "");
+                                d.fp64 ? " | fp64" : "", d.correctly_rounded_divide_sqrt ? " | IEEE div/sqrt" : "");
                 return 0;
             }};
 }
