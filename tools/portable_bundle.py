@@ -80,9 +80,11 @@ def write_stub(soname, importers, out_dir, work):
                 wanted[name].add(version)
     source = ["static char zero[256] __attribute__((aligned(64)));"]
     by_version = collections.defaultdict(list)
+    stubbed = set()
     for i, (name, version, size, typ, defined) in enumerate(dynamic_symbols(find_library(soname))):
-        if not defined or name not in wanted or name in sum(by_version.values(), []):
+        if not defined or name not in wanted or name in stubbed:
             continue
+        stubbed.add(name)
         if typ in ("FUNC", "IFUNC", "NOTYPE"):
             source.append(f'void* s{i}(void) __asm__("{name}");\nvoid* s{i}(void) {{ return zero; }}')
         elif typ == "TLS":
@@ -92,7 +94,7 @@ def write_stub(soname, importers, out_dir, work):
         by_version[version].append(name)
     # Every version an importer asks of this library must exist, even with no symbol left.
     versions = set(v for v in by_version if v)
-    for name in sum(by_version.values(), []):
+    for name in stubbed:
         versions |= {v for v in wanted[name] if v}
     script = [v + " { global: " + "".join(f'"{n}"; ' for n in by_version.get(v, [])) + "};" for v in sorted(versions)]
     if None in by_version:
