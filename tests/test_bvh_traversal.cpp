@@ -3,6 +3,7 @@
 // the closest distance must agree exactly; a traversal that culls a box it should enter
 // shows up as a different (farther) hit or a miss.
 #include <bit>
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -102,6 +103,10 @@ void expect_same_closest_hits(const TraceResults& r, const DeviceMesh& mesh)
         hits += tf >= 0;
         // Same hit/miss, and the same distance (ties between triangles at one t allowed).
         bool same = (tb < 0) == (tf < 0) && (tf < 0 || r.bvh[i].x == r.brute[i].x);
+        // The same triangle has the same barycentric weights, to the bit.
+        if (tb >= 0 && tb == tf)
+            same = same && std::bit_cast<std::uint32_t>(r.bvh[i].y) == std::bit_cast<std::uint32_t>(r.brute[i].y) &&
+                   std::bit_cast<std::uint32_t>(r.bvh[i].z) == std::bit_cast<std::uint32_t>(r.brute[i].z);
         if (!same && mismatches++ < 5)
             ADD_FAILURE() << "ray " << i << ": bvh tri " << tb << " t " << r.bvh[i].x << ", brute force tri " << tf
                           << " t " << r.brute[i].x;
@@ -126,6 +131,81 @@ TEST(BvhTraversal, JitteredSphereMatchesBruteForce100kRays)
     std::vector<pcl_float4> o, d;
     random_rays(100000, 6, o, d);
     expect_same_closest_hits(trace(mesh, o, d), mesh);
+}
+
+// bvh_visibility (shadow rays: the first hit in (0, t_max) ends the search, children in
+// no order) against the closest hit by brute force: blocked exactly when brute force
+// finds a hit closer than t_max. Rays whose closest hit lies within a few ulps of t_max
+// are left out (the two compare t in different forms there) and counted.
+void expect_any_hits_match(const DeviceMesh& mesh, std::uint32_t seed, float t_max)
+{
+    ClDevice& dev = test::test_device();
+    std::vector<pcl_float4> o, d;
+    random_rays(100000, seed, o, d);
+    TraceResults r = trace(mesh, o, d);
+    std::size_t n = o.size();
+    cl::Buffer ob = to_device(o), db = to_device(d), nodes = to_device(mesh.nodes), tris = to_device(mesh.triangles);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_int));
+    cl::Kernel k(program(), "test_any_hit");
+    set_kernel_args(k, ob, db, nodes, tris, t_max, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<cl_int> blocked(n);
+    dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(cl_int), blocked.data());
+    std::size_t mismatches = 0, near_t_max = 0, hits = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool hit = std::bit_cast<int>(r.brute[i].w) >= 0;
+        const float t = r.brute[i].x;
+        if (hit && std::fabs(t - t_max) <= 4e-7f * t_max) {
+            ++near_t_max;
+            continue;
+        }
+        const bool expect = hit && t < t_max;
+        hits += expect;
+        if (expect != (blocked[i] != 0) && mismatches++ < 5)
+            ADD_FAILURE() << "ray " << i << ": any hit " << blocked[i] << ", brute force closest t " << t;
+    }
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_LT(near_t_max, 10u);
+    EXPECT_GT(hits, n / 10) << "too few blocked rays for a meaningful comparison";
+    EXPECT_LT(hits, n - n / 10) << "too few open rays for a meaningful comparison";
+}
+
+TEST(BvhTraversal, AnyHitMatchesBruteForce100kRays)
+{
+    expect_any_hits_match(make_mesh(test::random_triangle_soup(3000, 12)), 7, 0.5f);
+    expect_any_hits_match(make_mesh(test::jittered_sphere(30, 60, 4)), 8, 1.0f);
+}
+
+TEST(BvhTraversal, AxisParallelRaysInABoxFacePlaneAreNotCulled)
+{
+    // A floor (y = 0, x and z in [0, 1]) with a wall standing on it (x = 0) and a block
+    // on it whose faces lie at x = 0.25 and 0.75. Rays straight down (direction (0, -1, 0))
+    // whose origins lie exactly in those planes hit the floor or the block at an edge, as
+    // brute force finds. The slab test meets 0 x infinity there; where that is NaN and
+    // fmin/fmax pass the other operand (infinity) the box is culled: broken variant seen
+    // failing (every such ray missed).
+    std::vector<glm::vec3> v;
+    auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+        for (const glm::vec3& p : {a, b, c, a, c, d})
+            v.push_back(p);
+    };
+    quad({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});                                             // floor
+    quad({0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1});                                             // wall
+    quad({0.25f, 0.5f, 0.25f}, {0.25f, 0.5f, 0.75f}, {0.75f, 0.5f, 0.75f}, {0.75f, 0.5f, 0.25f}); // block top
+    quad({0.25f, 0, 0.25f}, {0.25f, 0.5f, 0.25f}, {0.75f, 0.5f, 0.25f}, {0.75f, 0, 0.25f});       // block side
+    DeviceMesh mesh = make_mesh(v);
+    std::vector<pcl_float4> o, d;
+    for (float x : {0.0f, 0.25f, 0.75f, 1.0f})
+        for (int i = 1; i < 64; ++i) {
+            o.push_back({x, 2.0f, static_cast<float>(i) / 64.0f, 0});
+            d.push_back({0, -1, 0, 0});
+        }
+    TraceResults r = trace(mesh, o, d);
+    expect_same_closest_hits(r, mesh);
+    std::size_t misses = 0;
+    for (const pcl_float4& h : r.bvh)
+        misses += std::bit_cast<int>(h.w) < 0;
+    EXPECT_EQ(misses, 0u) << "of " << r.bvh.size() << " rays in the planes of box faces";
 }
 
 TEST(BvhTraversal, ClosedSphereHasNoHolesFromInside)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -13,6 +14,15 @@ namespace {
 constexpr int kBins = 32;
 constexpr float kTraversalCost = 1.0f; // relative to one triangle test
 constexpr float kIntersectCost = 1.0f;
+
+float widen_down(float x)
+{
+    return std::nextafter(x, -std::numeric_limits<float>::infinity());
+}
+float widen_up(float x)
+{
+    return std::nextafter(x, std::numeric_limits<float>::infinity());
+}
 
 struct Box {
     glm::vec3 lo{std::numeric_limits<float>::infinity()};
@@ -172,9 +182,12 @@ struct Builder {
         std::int32_t* count = &node.count.x;
         for (int j = 0; j < 4; ++j) {
             const bool used = j < k;
-            for (int a = 0; a < 3; ++a) { // an empty slot gets an inverted box
-                lo[a][j] = used ? kids[j].box.lo[a] : std::numeric_limits<float>::infinity();
-                hi[a][j] = used ? kids[j].box.hi[a] : -std::numeric_limits<float>::infinity();
+            // An empty slot gets an inverted box. A used one is widened by one ulp
+            // outwards, so that a ray parallel to an axis in the plane of a face is
+            // strictly inside the slab (traversal.cl ray_box_entry4).
+            for (int a = 0; a < 3; ++a) {
+                lo[a][j] = used ? widen_down(kids[j].box.lo[a]) : std::numeric_limits<float>::infinity();
+                hi[a][j] = used ? widen_up(kids[j].box.hi[a]) : -std::numeric_limits<float>::infinity();
             }
             count[j] = used ? kids[j].count : 0;
             index[j] = used ? (kids[j].count > 0 ? kids[j].index : collapse(kids[j].index)) : -1;
