@@ -56,7 +56,9 @@ Rays incoherent_rays(const Scene& scene, std::size_t n)
 
 Rays primary_rays(const Scene& scene, std::size_t n)
 {
-    std::uint32_t side = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n)));
+    // A square image whose side is a multiple of 8, so that the ray count is a multiple of
+    // the kernels' 64-item work-groups (for any n >= 64).
+    std::uint32_t side = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n))) / 8 * 8;
     Camera c = compile_camera(scene.camera, side, side);
     Rays r;
     for (std::uint32_t y = 0; y < side; ++y)
@@ -280,6 +282,10 @@ int main(int argc, char** argv)
     app.add_option("--runs", runs, "timed runs after one warm-up")->capture_default_str()->check(CLI::Range(1, 1000));
     app.add_option("--device", device, "OpenCL device index")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
+    if (rays == 0 || rays % 64 != 0) {
+        std::fprintf(stderr, "bench_rays: error: --rays %zu is not a positive multiple of 64\n", rays);
+        return 2;
+    }
     try {
         // Embree here gets the triangles in render space: instanced meshes are copied.
         SceneChoice copies;
