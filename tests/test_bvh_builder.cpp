@@ -1,6 +1,7 @@
 // BVH invariants on the host: every triangle in exactly one leaf, boxes tight (one ulp
-// wider than their contents) and nested, no empty leaves, depth within the kernels' stack.
+// wider than their contents, 2 FLT_MIN near zero) and nested, no empty leaves, depth within the kernels' stack.
 #include <bit>
+#include <cfloat>
 #include <cmath>
 #include <functional>
 
@@ -47,10 +48,11 @@ void check_tree(const Bvh& bvh, const BvhBuildInput& in, bool allow_empty_child)
                 ulo = glm::min(ulo, in.box_min[t]);
                 uhi = glm::max(uhi, in.box_max[t]);
             }
-            // Stored boxes are widened by one ulp outwards (traversal.cl ray_box_entry4).
+            // Stored boxes are widened outwards by one ulp, and by at least 2 FLT_MIN near
+            // zero (traversal.cl ray_box_entry4).
             for (int a = 0; a < 3; ++a) {
-                ulo[a] = std::nextafter(ulo[a], -INFINITY);
-                uhi[a] = std::nextafter(uhi[a], INFINITY);
+                ulo[a] = std::min(std::nextafter(ulo[a], -INFINITY), ulo[a] - 2.0f * FLT_MIN);
+                uhi[a] = std::max(std::nextafter(uhi[a], INFINITY), uhi[a] + 2.0f * FLT_MIN);
             }
         } else {
             ASSERT_GE(ref.index, 0);

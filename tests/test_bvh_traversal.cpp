@@ -50,10 +50,18 @@ const cl::Program& program()
     return p;
 }
 
+// The same kernels as a device without single-precision denormals runs them (OpenCL 1.2
+// makes them optional): every denormal result is flushed to zero.
+const cl::Program& program_without_denormals()
+{
+    static cl::Program p = test::build_test_program("trace_test_kernels.cl", 0, {}, "-cl-denorms-are-zero");
+    return p;
+}
+
 // The BVH's closest hits and those of `brute_kernel` over every triangle (the real
 // triangle test, or the naive one the watertightness test shows failing).
 TraceResults trace(const DeviceMesh& mesh, const std::vector<pcl_float4>& origins, const std::vector<pcl_float4>& dirs,
-                   const char* brute_kernel = "test_trace_brute_force")
+                   const char* brute_kernel = "test_trace_brute_force", const cl::Program& prog = program())
 {
     ClDevice& dev = test::test_device();
     std::size_t n = origins.size();
@@ -61,9 +69,9 @@ TraceResults trace(const DeviceMesh& mesh, const std::vector<pcl_float4>& origin
                tris = to_device(mesh.triangles);
     cl::Buffer out_bvh(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer out_brute(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
-    cl::Kernel k1(program(), "test_trace_closest");
+    cl::Kernel k1(prog, "test_trace_closest");
     set_kernel_args(k1, o, d, nodes, tris, out_bvh);
-    cl::Kernel k2(program(), brute_kernel);
+    cl::Kernel k2(prog, brute_kernel);
     set_kernel_args(k2, o, d, tris, static_cast<cl_uint>(mesh.triangles.size()), out_brute);
     dev.queue.enqueueNDRangeKernel(k1, cl::NullRange, cl::NDRange(n));
     dev.queue.enqueueNDRangeKernel(k2, cl::NullRange, cl::NDRange(n));
@@ -181,9 +189,11 @@ TEST(BvhTraversal, AxisParallelRaysInABoxFacePlaneAreNotCulled)
     // A floor (y = 0, x and z in [0, 1]) with a wall standing on it (x = 0) and a block
     // on it whose faces lie at x = 0.25 and 0.75. Rays straight down (direction (0, -1, 0))
     // whose origins lie exactly in those planes hit the floor or the block at an edge, as
-    // brute force finds. The slab test meets 0 x infinity there; where that is NaN and
-    // fmin/fmax pass the other operand (infinity) the box is culled: broken variant seen
-    // failing (every such ray missed).
+    // brute force finds; also on a device that flushes denormals (the box widening must
+    // keep the distance from a plane at 0 to its widened plane a normal number). Broken
+    // variants seen failing: the slab test with fmin/fmax and unwidened boxes (0 x inf is
+    // NaN, fmin passes the other operand and culls the box: 126 of 252 rays missed);
+    // boxes widened by one ulp only (without denormals, rays in the plane x = 0 missed).
     std::vector<glm::vec3> v;
     auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
         for (const glm::vec3& p : {a, b, c, a, c, d})
@@ -200,12 +210,15 @@ TEST(BvhTraversal, AxisParallelRaysInABoxFacePlaneAreNotCulled)
             o.push_back({x, 2.0f, static_cast<float>(i) / 64.0f, 0});
             d.push_back({0, -1, 0, 0});
         }
-    TraceResults r = trace(mesh, o, d);
-    expect_same_closest_hits(r, mesh);
-    std::size_t misses = 0;
-    for (const pcl_float4& h : r.bvh)
-        misses += std::bit_cast<int>(h.w) < 0;
-    EXPECT_EQ(misses, 0u) << "of " << r.bvh.size() << " rays in the planes of box faces";
+    for (const cl::Program* prog : {&program(), &program_without_denormals()}) {
+        SCOPED_TRACE(prog == &program() ? "with denormals" : "denormals flushed to zero");
+        TraceResults r = trace(mesh, o, d, "test_trace_brute_force", *prog);
+        expect_same_closest_hits(r, mesh);
+        std::size_t misses = 0;
+        for (const pcl_float4& h : r.bvh)
+            misses += std::bit_cast<int>(h.w) < 0;
+        EXPECT_EQ(misses, 0u) << "of " << r.bvh.size() << " rays in the planes of box faces";
+    }
 }
 
 TEST(BvhTraversal, ClosedSphereHasNoHolesFromInside)

@@ -15,13 +15,18 @@ constexpr int kBins = 32;
 constexpr float kTraversalCost = 1.0f; // relative to one triangle test
 constexpr float kIntersectCost = 1.0f;
 
+// A box bound moved outwards by one ulp, and by at least twice the smallest normal float
+// near zero, where one ulp is a denormal: a device without denormals (optional in OpenCL
+// 1.2) would flush the distance to the moved plane to zero, and 0 x inf is NaN again.
 float widen_down(float x)
 {
-    return std::nextafter(x, -std::numeric_limits<float>::infinity());
+    return std::min(std::nextafter(x, -std::numeric_limits<float>::infinity()),
+                    x - 2.0f * std::numeric_limits<float>::min());
 }
 float widen_up(float x)
 {
-    return std::nextafter(x, std::numeric_limits<float>::infinity());
+    return std::max(std::nextafter(x, std::numeric_limits<float>::infinity()),
+                    x + 2.0f * std::numeric_limits<float>::min());
 }
 
 struct Box {
@@ -182,8 +187,8 @@ struct Builder {
         std::int32_t* count = &node.count.x;
         for (int j = 0; j < 4; ++j) {
             const bool used = j < k;
-            // An empty slot gets an inverted box. A used one is widened by one ulp
-            // outwards, so that a ray parallel to an axis in the plane of a face is
+            // An empty slot gets an inverted box. A used one is widened outwards (one ulp,
+            // widen_down/up), so that a ray parallel to an axis in the plane of a face is
             // strictly inside the slab (traversal.cl ray_box_entry4).
             for (int a = 0; a < 3; ++a) {
                 lo[a][j] = used ? widen_down(kids[j].box.lo[a]) : std::numeric_limits<float>::infinity();

@@ -52,9 +52,10 @@ static inline RayTraversal instance_ray(const Instance* inst, const RayTraversal
  *
  * min and max, not fmin and fmax (whose NaN handling costs a compare and a blend per
  * lane on CPUs): the only NaN is 0 x inf, a ray parallel to an axis starting exactly in
- * a slab's plane. The builder widens every box by one ulp outwards, so a ray in the plane
- * of a face of the geometry's box is strictly inside its slab (its t range is +-inf, no
- * NaN), and a NaN is met only by a ray in the widened plane, one ulp outside the
+ * a slab's plane. The builder widens every box outwards (one ulp; near zero two of the
+ * smallest normal floats, which a device without denormals does not flush), so a ray in
+ * the plane of a face of the geometry's box is strictly inside its slab (its t range is
+ * +-inf, no NaN), and a NaN is met only by a ray in the widened plane, outside the
  * geometry, which touches nothing in the box: culling it or entering it is right either
  * way. */
 static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, float tmax)

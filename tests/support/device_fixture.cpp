@@ -24,13 +24,17 @@ std::string read_text_file(const std::string& path)
     return ss.str();
 }
 
-cl::Program build_test_program(const std::string& file, std::uint32_t features, const std::vector<KernelPatch>& patches)
+cl::Program build_test_program(const std::string& file, std::uint32_t features, const std::vector<KernelPatch>& patches,
+                               const std::string& extra_options)
 {
     ProgramSource source;
     source.root = "tests/kernels/" + file;
     source.text = read_text_file(std::string(PATHCL_SOURCE_DIR) + "/" + source.root);
     source.patches = patches;
-    return build_program(test_device(), KernelFeatures{features}.define(), source).program;
+    std::string options = KernelFeatures{features}.define();
+    if (!extra_options.empty())
+        options += " " + extra_options;
+    return build_program(test_device(), options, source).program;
 }
 
 std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const SceneArrays& arrays, glm::vec3 ref,

@@ -22,9 +22,11 @@ namespace pathcl::test {
 ClDevice& test_device();
 
 // tests/kernels/<file>, assembled with the kernel tree and built with the feature mask
-// (FEATURE_* bits), and the patches (deliberately broken variants) applied.
+// (FEATURE_* bits), and the patches (deliberately broken variants) applied; extra_options
+// are added to the build options (e.g. -cl-denorms-are-zero, to behave as a device
+// without single-precision denormals).
 cl::Program build_test_program(const std::string& file, std::uint32_t features = 0,
-                               const std::vector<KernelPatch>& patches = {});
+                               const std::vector<KernelPatch>& patches = {}, const std::string& extra_options = "");
 
 std::string read_text_file(const std::string& path);
 
