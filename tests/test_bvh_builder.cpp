@@ -1,5 +1,6 @@
-// BVH invariants on the host: every triangle in exactly one leaf, boxes tight (one ulp
-// wider than their contents, 2 FLT_MIN near zero) and nested, no empty leaves, depth within the kernels' stack.
+// BVH invariants on the host: every triangle in exactly one leaf, boxes tight (their
+// contents widened by one ulp, by 2 FLT_MIN near zero) and nested, no empty leaves, depth
+// within the kernels' stack.
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -76,7 +77,7 @@ void check_tree(const Bvh& bvh, const BvhBuildInput& in, bool allow_empty_child)
             }
             EXPECT_TRUE(used >= 2 || allow_empty_child) << "an inner node with fewer than two children";
         }
-        // Tight: the box is exactly the union of what it holds, one ulp wider.
+        // Tight: the box is exactly the union of what it holds (leaves widened as above).
         EXPECT_EQ(ulo, lo);
         EXPECT_EQ(uhi, hi);
     };
