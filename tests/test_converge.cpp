@@ -106,6 +106,7 @@ TEST_F(ToolRun, InterruptedConvergeKeepsItsRows)
     const std::string common = " -o study --vary sampler=independent,sobol --width 32 --height 32 --seeds 3 "
                                "--reference-spp 64 --quiet";
     ASSERT_EQ(run("converge " + kCornell + common + " --spp-ladder 1"), 0) << text("stderr.txt");
+    std::filesystem::remove(dir_ / "study" / "convergence.csv"); // the rows to wait for are the next run's
     std::string binary = PATHCL_BINARY;
     std::string cmd = "cd '" + dir_.string() + "' && exec '" + binary + "' converge " + kCornell + common +
                       " --spp-ladder 1,2,4,8,16,32,64,128,256,512,1024,2048,4096,8192,16384 >stdout.txt "
@@ -113,7 +114,20 @@ TEST_F(ToolRun, InterruptedConvergeKeepsItsRows)
     const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
     pid_t pid = 0;
     ASSERT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
-    std::this_thread::sleep_for(std::chrono::seconds(3));
+    // Interrupted once its first row is written (a fixed 3 s delay failed on a loaded
+    // machine), well before it can finish. The rows go to the CSV's staged copy
+    // (.convergence.csv.tmp*, flushed row by row) until the study commits them.
+    auto rows_started = [&] {
+        std::error_code ec;
+        for (const auto& e : std::filesystem::directory_iterator(dir_ / "study", ec))
+            if (e.path().filename().string().rfind(".convergence.csv.tmp", 0) == 0 &&
+                lines_of(text("study/" + e.path().filename().string())).size() >= 2)
+                return true;
+        return false;
+    };
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!rows_started() && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
     kill(pid, SIGINT);
     int status = 0;
     waitpid(pid, &status, 0);
