@@ -58,6 +58,15 @@ TEST(BsdfEval, AgreesWithTheReferenceModelEverywhere)
     MaterialSpec sheet = dielectric(0.6f, 1.5f, true);
     sheet.transmission = 0.5f;
     materials.push_back(sheet);
+    // KHR_materials_anisotropy on transmission: a thin sheet (its lobe pair anisotropic)
+    // and a solid (its interface isotropic, in the anisotropic frame).
+    MaterialSpec brushed_sheet = dielectric(0.2f, 1.5f, true);
+    brushed_sheet.transmission = 0.7f;
+    brushed_sheet.anisotropy = 0.6f;
+    materials.push_back(brushed_sheet);
+    MaterialSpec brushed_glass = dielectric(0.3f);
+    brushed_glass.anisotropy = 0.6f;
+    materials.push_back(brushed_glass);
     const glm::dvec3 normal = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
     glm::dvec3 t = glm::normalize(glm::cross(normal, glm::dvec3(1, 0, 0))), b = glm::cross(normal, t);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * normal; };

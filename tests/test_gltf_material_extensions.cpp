@@ -188,6 +188,36 @@ TEST(GltfMaterialExtensions, AnisotropyWithoutTangentsOrTexcoordsWarnsAndOutOfRa
 }
 }
 
+TEST(GltfMaterialExtensions, AnisotropyOnATransmittingSolidSaysItIsApproximate)
+{
+    // A transmitting solid keeps the isotropic roughness on its interface: one warning
+    // line naming the material. A thin-walled transmitter and an opaque plastic are
+    // anisotropic as the extension says, without a word.
+    auto material = [](double transmission, double thickness) {
+        return [=](tinygltf::Material& m) {
+            set_anisotropy(m, 0.5);
+            tinygltf::Value::Object t, v;
+            t["transmissionFactor"] = tinygltf::Value(transmission);
+            m.extensions["KHR_materials_transmission"] = tinygltf::Value(t);
+            v["thicknessFactor"] = tinygltf::Value(thickness);
+            m.extensions["KHR_materials_volume"] = tinygltf::Value(v);
+        };
+    };
+    ::testing::internal::CaptureStderr();
+    import(tilted_triangle_with(material(0.8, 0.1)));
+    std::string err = ::testing::internal::GetCapturedStderr();
+    const std::string said = "test.gltf: material 0 (): KHR_materials_anisotropy on a transmitting solid is "
+                             "approximate: its interface keeps the isotropic roughness\n";
+    ASSERT_NE(err.find(said), std::string::npos) << err;
+    EXPECT_EQ(err.find(said, err.find(said) + 1), std::string::npos) << "said twice: " << err;
+    for (auto [transmission, thickness] : {std::pair{0.8, 0.0}, std::pair{0.0, 0.1}}) {
+        ::testing::internal::CaptureStderr();
+        import(tilted_triangle_with(material(transmission, thickness)));
+        err = ::testing::internal::GetCapturedStderr();
+        EXPECT_EQ(err.find("isotropic"), std::string::npos) << transmission << " " << thickness << ": " << err;
+    }
+}
+
 TEST(GltfMaterialExtensions, ClearcoatOutOfRangeIsAnError)
 {
     // Factors outside [0, 1], and a clearcoatNormalTexture scale that is not a number, are

@@ -103,8 +103,9 @@ TEST(RenderSheen, SheenSpheresRenderTheSameByBsdfSamplingAndMis)
 TEST(RenderAnisotropy, BrushedSpheresRenderTheSameByBsdfSamplingAndMis)
 {
     // Brushed gold along the parallels (strength 0.8), and a part metal over a plastic
-    // brushed along the meridians (rotation pi / 2) under a rough coat. Broken variant seen
-    // to fail: the conductor's visible-normal density with the isotropic alpha in bsdf_eval.
+    // brushed along the meridians (rotation pi / 2; the plastic's dielectric layer
+    // anisotropic too) under a rough coat. Broken variant seen to fail: the conductor's
+    // visible-normal density with the isotropic alpha in bsdf_eval.
     test::GltfBuilder b;
     test::GltfBuilder::Pbr gold;
     gold.base_color = {0.95f, 0.7f, 0.3f};

@@ -66,6 +66,16 @@ std::vector<double> azimuth_weights()
     return w;
 }
 
+// The anisotropic layer's ior grid: x = LAYER_X_MAX (k / (n - 1))^2, denser towards
+// ior 1, where B changes fastest with x (the normalized curve steps up at grazing angles
+// for any ior above 1 and is 0 at ior 1).
+double aniso_grid_eta(int k)
+{
+    double u = static_cast<double>(k) / (LAYER_ANISO_ETA_RES - 1);
+    double x = static_cast<double>(LAYER_X_MAX) * u * u;
+    return (1.0 + x) / (1.0 - x);
+}
+
 double grid_roughness(int j)
 {
     return static_cast<double>(j) / (LAYER_ROUGH_RES - 1);
@@ -158,30 +168,45 @@ std::vector<float> compute_layer_albedo_table(int panels)
         for (int i = 0; i < LAYER_MU_RES; ++i)
             t[LAYER_TABLE_SHEEN + j * LAYER_MU_RES + i] =
                 static_cast<float>(integrate_sheen_albedo(grid_mu(i), grid_roughness(j), panels / 4));
-    // The anisotropic lobe, (sqrt(alpha_t), roughness) blocks shared by two threads; then
-    // each block's average over the hemisphere of the interpolant the kernels read
-    // (bilinear in cos theta^(1/4) and |cos phi|).
+    // The anisotropic lobe, (sqrt(alpha_t), roughness) blocks shared by two threads, with
+    // Fresnel 1 and with the normalized Fresnel curves of its own ior grid; then each
+    // block's average over the hemisphere of the interpolant the kernels read (bilinear
+    // in cos theta^(1/4) and |cos phi|).
+    std::vector<double> aniso_etas(LAYER_ANISO_ETA_RES);
+    for (int k = 0; k < LAYER_ANISO_ETA_RES; ++k)
+        aniso_etas[static_cast<std::size_t>(k)] = aniso_grid_eta(k);
+    const int aniso_blocks_n = LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES;
+    auto aniso_b = [&](int k, int sr) { return LAYER_TABLE_ANISO_B + (k * aniso_blocks_n + sr) * LAYER_ANISO_BLOCK; };
     auto aniso_blocks = [&](int first, int step) {
-        for (int sr = first; sr < LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES; sr += step) {
+        std::vector<double> b_row;
+        for (int sr = first; sr < aniso_blocks_n; sr += step) {
             double along = aniso_grid(sr / LAYER_ANISO_ROUGH_RES, LAYER_ANISO_T_RES);
             double roughness = aniso_grid(sr % LAYER_ANISO_ROUGH_RES, LAYER_ANISO_ROUGH_RES);
-            for (int k = 0; k < LAYER_ANISO_V_RES; ++k)
-                for (int i = 0; i < LAYER_ANISO_MU_RES; ++i)
-                    t[LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK + k * LAYER_ANISO_MU_RES + i] =
-                        static_cast<float>(integrate_anisotropic_albedo(
-                            aniso_grid_mu(i), aniso_grid(k, LAYER_ANISO_V_RES), along, roughness, panels / 4));
+            for (int c = 0; c < LAYER_ANISO_V_RES; ++c)
+                for (int i = 0; i < LAYER_ANISO_MU_RES; ++i) {
+                    int at = c * LAYER_ANISO_MU_RES + i;
+                    t[LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK + at] = static_cast<float>(
+                        integrate_anisotropic_layer_albedo(aniso_grid_mu(i), aniso_grid(c, LAYER_ANISO_V_RES), along,
+                                                           roughness, aniso_etas, b_row, panels / 4));
+                    for (int k = 0; k < LAYER_ANISO_ETA_RES; ++k)
+                        t[aniso_b(k, sr) + at] = static_cast<float>(b_row[static_cast<std::size_t>(k)]);
+                }
         }
     };
     std::thread aniso_helper(aniso_blocks, 1, 2);
     aniso_blocks(0, 2);
     aniso_helper.join();
     const std::vector<double> w = azimuth_weights();
-    for (int sr = 0; sr < LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES; ++sr) {
+    auto block_average = [&](int offset) {
         double avg = 0.0;
-        for (int k = 0; k < LAYER_ANISO_V_RES; ++k)
-            avg += w[static_cast<std::size_t>(k)] *
-                   quartic_cosine_average(&t[LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK + k * LAYER_ANISO_MU_RES]);
-        t[LAYER_TABLE_ANISO_AVG + sr] = static_cast<float>(avg);
+        for (int c = 0; c < LAYER_ANISO_V_RES; ++c)
+            avg += w[static_cast<std::size_t>(c)] * quartic_cosine_average(&t[offset + c * LAYER_ANISO_MU_RES]);
+        return static_cast<float>(avg);
+    };
+    for (int sr = 0; sr < aniso_blocks_n; ++sr) {
+        t[LAYER_TABLE_ANISO_AVG + sr] = block_average(LAYER_TABLE_ANISO + sr * LAYER_ANISO_BLOCK);
+        for (int k = 0; k < LAYER_ANISO_ETA_RES; ++k)
+            t[LAYER_TABLE_ANISO_B_AVG + k * aniso_blocks_n + sr] = block_average(aniso_b(k, sr));
     }
     return t;
 }
@@ -324,21 +349,70 @@ double integrate_dielectric_albedo(double cos_theta, double roughness, double et
     return e;
 }
 
+namespace {
+
+// A direction at cos theta whose azimuth from x has cosine cos_phi (y >= 0).
+glm::dvec3 direction_at(double cos_theta, double cos_phi)
+{
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+    return {sin_theta * cos_phi, sin_theta * std::sqrt(std::max(0.0, 1.0 - cos_phi * cos_phi)), cos_theta};
+}
+
+} // namespace
+
+double integrate_anisotropic_layer_albedo(double cos_theta, double cos_phi, double along, double roughness,
+                                          const std::vector<double>& etas, std::vector<double>& b_out, int panels)
+{
+    double ax = along * along, ay = ggx_anisotropic_alpha_b(roughness * roughness, ax);
+    b_out.assign(etas.size(), 0.0);
+    if (ax < ALPHA_DELTA) { // a mirror (the kernels' delta lobe): the Fresnel curves themselves
+        for (std::size_t k = 0; k < etas.size(); ++k)
+            b_out[k] = layer_curve(cos_theta, etas[k]);
+        return 1.0;
+    }
+    double e = 0.0;
+    integrate_visible_normals(
+        direction_at(cos_theta, cos_phi), ax, ay, false, panels,
+        [](const glm::dvec3& m, const glm::dvec3& w) { return reflect(w, m).z > 0.0; },
+        [&](const glm::dvec3& m, const glm::dvec3& w, double weight) {
+            glm::dvec3 wi = reflect(w, m);
+            if (!(wi.z > 0.0))
+                return;
+            double g = weight * ggx_g1_aniso(wi, ax, ay), c = glm::dot(w, m);
+            e += g;
+            for (std::size_t k = 0; k < etas.size(); ++k)
+                b_out[k] += g * layer_curve(c, etas[k]);
+        });
+    return e;
+}
+
 double integrate_anisotropic_albedo(double cos_theta, double cos_phi, double along, double roughness, int panels)
+{
+    std::vector<double> b;
+    return integrate_anisotropic_layer_albedo(cos_theta, cos_phi, along, roughness, {}, b, panels);
+}
+
+double integrate_anisotropic_dielectric_albedo(double cos_theta, double cos_phi, double along, double roughness,
+                                               double eta, int panels)
 {
     double ax = along * along, ay = ggx_anisotropic_alpha_b(roughness * roughness, ax);
     if (ax < ALPHA_DELTA)
-        return 1.0; // a mirror (the kernels' delta lobe)
-    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-    const glm::dvec3 wo(sin_theta * cos_phi, sin_theta * std::sqrt(std::max(0.0, 1.0 - cos_phi * cos_phi)), cos_theta);
+        return 1.0;
     double e = 0.0;
-    integrate_visible_normals(
-        wo, ax, ay, false, panels, [](const glm::dvec3& m, const glm::dvec3& w) { return reflect(w, m).z > 0.0; },
-        [&](const glm::dvec3& m, const glm::dvec3& w, double weight) {
-            glm::dvec3 wi = reflect(w, m);
-            if (wi.z > 0.0)
-                e += weight * ggx_g1_aniso(wi, ax, ay);
-        });
+    auto label = [&](const glm::dvec3& m, const glm::dvec3& wo) {
+        glm::dvec3 wt;
+        bool refracts = refract(wo, m, eta, wt);
+        return (reflect(wo, m).z > 0.0 ? 1 : 0) | (refracts ? 2 : 0) | (refracts && wt.z < 0.0 ? 4 : 0);
+    };
+    integrate_visible_normals(direction_at(cos_theta, cos_phi), ax, ay, false, panels, label,
+                              [&](const glm::dvec3& m, const glm::dvec3& wo, double weight) {
+                                  double f = fresnel_dielectric(glm::dot(wo, m), eta);
+                                  glm::dvec3 wr = reflect(wo, m), wt;
+                                  if (wr.z > 0.0)
+                                      e += weight * f * ggx_g1_aniso(wr, ax, ay);
+                                  if (refract(wo, m, eta, wt) && wt.z < 0.0)
+                                      e += weight * (1.0 - f) * ggx_g1_aniso(wt, ax, ay);
+                              });
     return e;
 }
 

@@ -51,6 +51,15 @@ double integrate_sheen_albedo(double cos_theta, double roughness, int panels = 1
 // normals (1 for a mirror).
 double integrate_anisotropic_albedo(double cos_theta, double cos_phi, double along, double roughness, int panels = 16);
 
+// The same lobe's albedo with Fresnel 1 (the result) and with the normalized Fresnel
+// curve of each eta in `etas` (into b): the dielectric layer of an anisotropic material.
+double integrate_anisotropic_layer_albedo(double cos_theta, double cos_phi, double along, double roughness,
+                                          const std::vector<double>& etas, std::vector<double>& b, int panels = 16);
+
+// integrate_dielectric_albedo for the anisotropic lobe (alpha as above).
+double integrate_anisotropic_dielectric_albedo(double cos_theta, double cos_phi, double along, double roughness,
+                                               double eta, int panels = 16);
+
 // 2 * integral of layer_curve(mu, eta) mu dmu: the smooth layer's hemispherical average
 // of the normalized Fresnel curve (Schlick's for eta 0: 1/21), exact (the kernels use it
 // below ALPHA_DELTA).

@@ -226,6 +226,10 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
         out.transmission = 0.0f;
         out.textures[TEXTURE_SLOT_TRANSMISSION] = SceneTexture{};
     }
+    if (out.anisotropy > 0.0f && out.transmission > 0.0f && !out.thin_walled)
+        warn(source + ": " + where +
+             ": KHR_materials_anisotropy on a transmitting solid is approximate: its interface keeps the "
+             "isotropic roughness");
     return out;
 }
 

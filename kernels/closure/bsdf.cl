@@ -79,15 +79,19 @@
  * wherever E_s <= 1. It reflects only from outside a solid but scales the base from both
  * sides, as the coat does.
  *
- * KHR_materials_anisotropy makes the conductor's lobe anisotropic GGX in the frame of
- * bsdf_frame (x along the direction texture/anisotropy.cl finds): alpha_t = mix(alpha, 1,
- * strength^2) along it, alpha_b = max(alpha, ALPHA_DELTA) across. Its Kulla-Conty lobe
+ * KHR_materials_anisotropy makes the GGX lobes anisotropic in the frame of bsdf_frame (x
+ * along the direction texture/anisotropy.cl finds): alpha_t = mix(alpha, 1, strength^2)
+ * along it, alpha_b = max(alpha, ALPHA_DELTA) across. The conductor's Kulla-Conty lobe
  * reads the anisotropic albedo E_aniso over cos theta x azimuth x both roughnesses
  * (LAYER_TABLE_ANISO), with which a white brushed metal reflects 0.995 to 1.002 of the
  * light (an isotropic table read at any one roughness gained up to 1.3 % at grazing
- * angles). The dielectric layer and the transmission lobes keep the isotropic alpha, since
- * the diffuse base's albedo scaling and the interface's compensation are isotropic tables
- * (read at the direction's projected roughness, a white anisotropic plastic gained 0.9 %).
+ * angles). The dielectric layer shares the anisotropic lobe (layer_anisotropic), and its
+ * albedo E for the diffuse base's scaling is f0 (E_aniso - B_aniso) + B_aniso, B_aniso
+ * over the ior as well (LAYER_TABLE_ANISO_B); a thin sheet's lobe pair is divided by
+ * E_aniso. A white brushed plastic reflects 0.9987 to 1.0035 of the light. A solid that
+ * transmits keeps the isotropic alpha on its whole interface: its refraction's
+ * compensation would need the interface albedo over both roughnesses, the azimuth and the
+ * ior from both sides, and no isotropic reading stands in for it.
  *
  * Sampling picks the diffuse base (with the multiple-scattering lobe), the conductor or
  * the interface with probabilities estimated from their albedos at the macro normal
@@ -128,6 +132,7 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
 #ifdef PATHCL_FULL_BSDF
 #ifdef PATHCL_HAS_ANISOTROPY
     p.alpha_t = p.alpha_b = p.alpha;
+    p.layer_aniso = false;
     if (m->anisotropy.x > 0.0f) {
         /* KHR_materials_anisotropy: the conductor's alpha along the direction grows
          * towards 1; across it alpha_b (the material's own) is kept clear of 0 so that D
@@ -144,6 +149,10 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
             p.tangent = t / len;
         else
             make_basis(sp->ns, &p.tangent, &b); /* no tangent frame: some direction */
+        /* The dielectric layer shares the anisotropic lobe, but not on a transmitting solid
+         * (its refraction's compensation would need tables over one more axis) nor at ior
+         * 0 (Schlick's curve has no anisotropic table). */
+        p.layer_aniso = bsdf_anisotropic(&p) && !(p.transmission > 0.0f && !p.thin) && m->ior != 0.0f;
     }
 #endif
     float r = (m->ior - 1.0f) / (m->ior + 1.0f);
@@ -155,6 +164,15 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.glass_scale = 1.0f;
     p.ms_scale = p.ms_albedo = (float3)(0.0f);
     p.ess_o = p.conductor_e_o = 1.0f;
+#ifdef PATHCL_HAS_ANISOTROPY
+    float3 wo_l = (float3)(0.0f, 0.0f, p.cos_o); /* wo in the frame of bsdf_frame, when anisotropic */
+    if (bsdf_anisotropic(&p)) {
+        float3 t, b;
+        bsdf_frame(&p, sp, &t, &b);
+        wo_l = (float3)(dot(wo, t), dot(wo, b), p.cos_o);
+        p.aniso_x = sqrt(clamp(r / LAYER_X_MAX, 0.0f, 1.0f)) * (float)(LAYER_ANISO_ETA_RES - 1);
+    }
+#endif
 #ifndef PATHCL_SINGLE_SCATTERING
     if (p.alpha >= ALPHA_DELTA) {
         /* Energy lost to masking, restored (multiple-scattering compensation). */
@@ -168,14 +186,20 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
             p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
         }
     }
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(&p) && p.thin && p.transmission > 0.0f && p.specular == 1.0f &&
+        all(p.specular_color == (float3)(1.0f))) {
+        /* The anisotropic sheet's lobe pair has the anisotropic lobe's albedo. */
+        float g = aniso_albedo(&p, wo_l);
+        p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
+    }
+#endif
     if (conductor_rough(&p) && p.metallic > 0.0f) {
         /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
         float e_avg;
 #ifdef PATHCL_HAS_ANISOTROPY
         if (bsdf_anisotropic(&p)) {
-            float3 t, b;
-            bsdf_frame(&p, sp, &t, &b);
-            p.conductor_e_o = aniso_albedo(&p, (float3)(dot(wo, t), dot(wo, b), p.cos_o));
+            p.conductor_e_o = aniso_albedo(&p, wo_l);
             e_avg = aniso_albedo_average(&p);
         } else
 #endif
@@ -206,8 +230,18 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.sheen_r = m->sheen.w * (float)(LAYER_ROUGH_RES - 1);
     p.sheen_e_o = p.sheen_max > 0.0f ? sheen_albedo(&p, p.cos_o) : 0.0f;
 #endif
-    p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
-    float3 one_minus_avg = 1.0f - layer_average(&p, m);
+    float3 layer_avg;
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(&p)) {
+        p.layer_o = aniso_layer_albedo(&p, wo_l); /* never inside: the layer is on no solid */
+        layer_avg = aniso_layer_average(&p);
+    } else
+#endif
+    {
+        p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
+        layer_avg = layer_average(&p, m);
+    }
+    float3 one_minus_avg = 1.0f - layer_avg;
     float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
     /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
     p.diffuse_scale =

@@ -16,8 +16,8 @@
 #ifdef PATHCL_HAS_ANISOTROPY
 
 /* The specular reflection of an anisotropic material: the conductor's anisotropic lobe
- * (always rough) and the dielectric layer's isotropic one (rough or a delta function),
- * each with its own visible-normal density. */
+ * (always rough) and the dielectric layer's lobe (anisotropic alike, or on a transmitting
+ * solid isotropic, rough or a delta function), each with its own visible-normal density. */
 static inline void bsdf_eval_anisotropic_reflection(const BsdfParams* p, float3 wo, float3 wi, BsdfEval* e)
 {
     if (!(wo.z > 0.0f))
@@ -31,11 +31,10 @@ static inline void bsdf_eval_anisotropic_reflection(const BsdfParams* p, float3 
     float3 fc = p->metallic * fresnel_schlick(p->base_color, cos_h);
     e->f_cos += fc * (conductor_ggx_d(p, h) * conductor_ggx_g1(p, wo) * conductor_ggx_g1(p, wi) / (4.0f * wo.z));
     e->pdf += p->lobes.conductor * conductor_visible_pdf(p, wo, h) / (4.0f * cos_h);
-    if (p->alpha >= ALPHA_DELTA) {
-        float a2 = p->alpha * p->alpha;
+    if (interface_rough(p)) {
         float3 fd = fresnel_layer_reflection(p, fresnel_specular_layer(p, cos_h));
-        e->f_cos += fd * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
-        e->pdf += p->lobes.interface * interface_split(p, cos_h) * ggx_visible_pdf(wo, h, a2) / (4.0f * cos_h);
+        e->f_cos += fd * (interface_dgg(p, h, wo, wi) / (4.0f * wo.z));
+        e->pdf += p->lobes.interface * interface_split(p, cos_h) * interface_visible_pdf(p, wo, h) / (4.0f * cos_h);
     }
 }
 
@@ -53,7 +52,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
     if (reflect) {
         e.pdf = p->lobes.diffuse * wi.z * INV_PI; /* the diffuse and multiple-scattering lobes */
         if (!p->inside) {
-            float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo(p, wi.z));
+            float3 k = (1.0f - p->layer_o) * (1.0f - layer_albedo_towards(p, wi));
             e.f_cos = p->diffuse_scale * k * wi.z;
         }
         if (conductor_rough(p) && p->metallic > 0.0f) {
@@ -81,7 +80,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
         }
         return e;
     }
-    if (!rough || !(wo.z > 0.0f) || p->transmission <= 0.0f)
+    if (!interface_rough(p) || !(wo.z > 0.0f) || p->transmission <= 0.0f)
         return e;
     float3 wm;
     float dwm_dwi; /* Jacobian of the half vector map */
@@ -94,7 +93,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
         if (!(c > 0.0f))
             return e;
         dwm_dwi = 1.0f / (4.0f * c);
-        btdf = ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z);
+        btdf = interface_dgg(p, wm, wo, wi) / (4.0f * wo.z);
     } else {
         /* Walter et al. 2007; radiance is divided by eta^2 as it crosses. */
         wm = normalize(wi * p->eta + wo);
@@ -112,7 +111,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
     float3 f_layer = fresnel_specular_layer(p, c);
     float t = base_weight(p, f_layer) * p->transmission * p->glass_scale;
     e.f_cos = p->base_color * (t * btdf);
-    e.pdf = p->lobes.interface * (1.0f - interface_split(p, c)) * ggx_visible_pdf(wo, wm, a2) * dwm_dwi;
+    e.pdf = p->lobes.interface * (1.0f - interface_split(p, c)) * interface_visible_pdf(p, wo, wm) * dwm_dwi;
     return e;
 }
 

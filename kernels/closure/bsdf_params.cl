@@ -75,10 +75,12 @@ typedef struct {
     float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
     float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
 #ifdef PATHCL_HAS_ANISOTROPY
-    float alpha_t, alpha_b; /* the conductor's GGX alpha along and across the anisotropy
+    float alpha_t, alpha_b; /* the anisotropic lobes' GGX alpha along and across the anisotropy
                              * direction (both alpha when isotropic) */
     float3 tangent;         /* the frame's x axis: the anisotropy direction, in the shading plane */
     float aniso_t, aniso_r; /* continuous E_aniso table coordinates of the roughness along and across */
+    bool layer_aniso;       /* the dielectric layer's lobe is anisotropic too (layer_anisotropic) */
+    float aniso_x;          /* continuous B_aniso table coordinate of the ior */
 #endif
 #ifdef PATHCL_HAS_CLEARCOAT
     float coat;       /* clearcoatFactor (0: no coat) */
@@ -119,13 +121,31 @@ static inline bool conductor_rough(const BsdfParams* p)
 #endif
 }
 
+/* Whether the dielectric layer's GGX lobe is anisotropic with the conductor's alphas: on
+ * every anisotropic material but a solid that transmits (its interface, reflection and
+ * refraction alike, keeps the isotropic alpha; see closure/bsdf.cl) and ior 0. */
+static inline bool layer_anisotropic(const BsdfParams* p)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    return p->layer_aniso;
+#else
+    return false;
+#endif
+}
+
+/* Whether the dielectric interface's lobes are rough (else delta functions). */
+static inline bool interface_rough(const BsdfParams* p)
+{
+    return layer_anisotropic(p) || p->alpha >= ALPHA_DELTA;
+}
+
 /* Every lobe of the material is a delta function: light sampling cannot help there. */
 static inline bool bsdf_is_delta(const BsdfParams* p)
 {
 #ifdef PATHCL_FULL_BSDF
     bool delta = p->alpha < ALPHA_DELTA && (1.0f - p->metallic) * (1.0f - p->transmission) == 0.0f;
 #ifdef PATHCL_HAS_ANISOTROPY
-    delta = delta && !(p->metallic > 0.0f && conductor_rough(p));
+    delta = delta && !(p->metallic > 0.0f && conductor_rough(p)) && !(p->metallic < 1.0f && layer_anisotropic(p));
 #endif
 #ifdef PATHCL_HAS_CLEARCOAT
     delta = delta && !(p->coat > 0.0f && p->coat_alpha >= ALPHA_DELTA);

@@ -115,7 +115,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (lobes.sheen > 0.0f && u_lobe >= sheen_end - lobes.sheen)
         return sheen_sample(p, sp, wo, u);
 #endif
-    bool rough = p->alpha >= ALPHA_DELTA;
+    bool rough = interface_rough(p);
     float3 wi;
     bool reflect = true;
     if (u_lobe < lobes.diffuse) {
@@ -148,7 +148,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
          * the rest of u_lobe's interval is the uniform number for that choice. */
         if (!(wo_l.z > 0.0f) || !(lobes.interface > 0.0f))
             return s;
-        float3 wm = rough ? ggx_sample_visible(wo_l, p->alpha, p->alpha, u) : (float3)(0.0f, 0.0f, 1.0f);
+        float3 wm = rough ? interface_sample_visible(p, wo_l, u) : (float3)(0.0f, 0.0f, 1.0f);
         float c = dot(wo_l, wm);
         float split = interface_split(p, c);
         float u_split = (u_lobe - lobes.diffuse - lobes.conductor) / lobes.interface;

@@ -1,6 +1,8 @@
 /* Lookups in the layer albedo tables (closure/layer_table.h): the GGX lobe's albedo, the
  * rough dielectric interface's energy albedo, and the dielectric layer's directional
- * albedo E and its average, linear in sqrt(cos theta), roughness and ior. */
+ * albedo E and its average, linear in sqrt(cos theta), roughness and ior; with
+ * anisotropy, the anisotropic lobe's albedo and the anisotropic layer's E, linear in cos
+ * theta^(1/4), |cos phi|, both roughnesses (and the ior). */
 #include "closure/bsdf_params.cl"
 #include "closure/fresnel.h"
 #include "closure/fresnel_layer.cl"
@@ -100,25 +102,48 @@ static inline float3 layer_average(const BsdfParams* p, const Material* m)
 
 #ifdef PATHCL_HAS_ANISOTROPY
 
-/* The anisotropic conductor's GGX albedo with Fresnel 1 (the E_aniso table) from the
- * direction w in the frame of bsdf_frame: linear in cos theta^(1/4), in |cos| of w's
- * azimuth from the direction (1 along the normal, where every azimuth agrees), and in the
- * roughnesses along and across the direction (p->aniso_t, p->aniso_r, continuous
- * coordinates). */
-static inline float aniso_albedo(const BsdfParams* p, float3 w)
+/* Where a direction w in the frame of bsdf_frame reads the anisotropic tables: the
+ * continuous (|cos phi|, cos theta^(1/4)) coordinates within a (t, r) block, and the
+ * block pair's corner and weights (roughness along and across). */
+typedef struct {
+    float c, mu;
+    int t0, r0;
+    float ft, fr;
+} AnisoCoords;
+
+static inline AnisoCoords aniso_coords(const BsdfParams* p, float3 w)
 {
-    float mu = sqrt(sqrt(clamp(fabs(w.z), 0.0f, 1.0f))) * (float)(LAYER_ANISO_MU_RES - 1);
+    AnisoCoords a;
+    a.mu = sqrt(sqrt(clamp(fabs(w.z), 0.0f, 1.0f))) * (float)(LAYER_ANISO_MU_RES - 1);
     float xy2 = w.x * w.x + w.y * w.y;
-    float c = (xy2 > 0.0f ? clamp(fabs(w.x) / sqrt(xy2), 0.0f, 1.0f) : 1.0f) * (float)(LAYER_ANISO_V_RES - 1);
-    int t0 = min((int)p->aniso_t, LAYER_ANISO_T_RES - 2), r0 = min((int)p->aniso_r, LAYER_ANISO_ROUGH_RES - 2);
+    a.c = (xy2 > 0.0f ? clamp(fabs(w.x) / sqrt(xy2), 0.0f, 1.0f) : 1.0f) * (float)(LAYER_ANISO_V_RES - 1);
+    a.t0 = min((int)p->aniso_t, LAYER_ANISO_T_RES - 2);
+    a.r0 = min((int)p->aniso_r, LAYER_ANISO_ROUGH_RES - 2);
+    a.fr = p->aniso_r - (float)a.r0;
+    a.ft = p->aniso_t - (float)a.t0;
+    return a;
+}
+
+/* One anisotropic table (E_aniso, or one ior's B_aniso) at offset, interpolated at a. */
+static inline float aniso_lookup(const BsdfParams* p, int offset, const AnisoCoords* a)
+{
     float e[4];
     for (int k = 0; k < 4; ++k) {
-        int block = (t0 + (k >> 1)) * LAYER_ANISO_ROUGH_RES + r0 + (k & 1);
-        e[k] = layer_bilinear(p->layer, LAYER_TABLE_ANISO + block * LAYER_ANISO_BLOCK, LAYER_ANISO_MU_RES, c,
-                              LAYER_ANISO_V_RES, mu);
+        int block = (a->t0 + (k >> 1)) * LAYER_ANISO_ROUGH_RES + a->r0 + (k & 1);
+        e[k] = layer_bilinear(p->layer, offset + block * LAYER_ANISO_BLOCK, LAYER_ANISO_MU_RES, a->c, LAYER_ANISO_V_RES,
+                              a->mu);
     }
-    float fr = p->aniso_r - (float)r0;
-    return mix(mix(e[0], e[1], fr), mix(e[2], e[3], fr), p->aniso_t - (float)t0);
+    return mix(mix(e[0], e[1], a->fr), mix(e[2], e[3], a->fr), a->ft);
+}
+
+/* The anisotropic GGX albedo with Fresnel 1 (the E_aniso table) from the direction w in
+ * the frame of bsdf_frame: linear in cos theta^(1/4), in |cos| of w's azimuth from the
+ * direction (1 along the normal, where every azimuth agrees), and in the roughnesses along
+ * and across the direction (p->aniso_t, p->aniso_r, continuous coordinates). */
+static inline float aniso_albedo(const BsdfParams* p, float3 w)
+{
+    AnisoCoords a = aniso_coords(p, w);
+    return aniso_lookup(p, LAYER_TABLE_ANISO, &a);
 }
 
 /* Its cosine-weighted average over the hemisphere. */
@@ -126,6 +151,38 @@ static inline float aniso_albedo_average(const BsdfParams* p)
 {
     return layer_bilinear(p->layer, LAYER_TABLE_ANISO_AVG, LAYER_ANISO_ROUGH_RES, p->aniso_t, LAYER_ANISO_T_RES,
                           p->aniso_r);
+}
+
+/* The anisotropic dielectric layer's directional albedo E(w) per channel, from E_aniso
+ * and B_aniso (linear in its ior coordinate p->aniso_x as well), E = f0 (E_ss - B) + B. */
+static inline float3 aniso_layer_albedo(const BsdfParams* p, float3 w)
+{
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f);
+    AnisoCoords a = aniso_coords(p, w);
+    float e_ss = aniso_lookup(p, LAYER_TABLE_ANISO, &a);
+    const int per_ior = LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES * LAYER_ANISO_BLOCK;
+    int x0 = min((int)p->aniso_x, LAYER_ANISO_ETA_RES - 2);
+    float b0 = aniso_lookup(p, LAYER_TABLE_ANISO_B + x0 * per_ior, &a);
+    float b1 = aniso_lookup(p, LAYER_TABLE_ANISO_B + (x0 + 1) * per_ior, &a);
+    float b = mix(b0, b1, p->aniso_x - (float)x0);
+    return p->specular * (p->f0c * (e_ss - b) + b);
+}
+
+/* Its cosine-weighted average over the hemisphere (all azimuths). */
+static inline float3 aniso_layer_average(const BsdfParams* p)
+{
+    if (!(p->specular > 0.0f))
+        return (float3)(0.0f);
+    const int per_ior = LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES;
+    int x0 = min((int)p->aniso_x, LAYER_ANISO_ETA_RES - 2);
+    float b0 = layer_bilinear(p->layer, LAYER_TABLE_ANISO_B_AVG + x0 * per_ior, LAYER_ANISO_ROUGH_RES, p->aniso_t,
+                              LAYER_ANISO_T_RES, p->aniso_r);
+    float b1 = layer_bilinear(p->layer, LAYER_TABLE_ANISO_B_AVG + (x0 + 1) * per_ior, LAYER_ANISO_ROUGH_RES, p->aniso_t,
+                              LAYER_ANISO_T_RES, p->aniso_r);
+    float b = mix(b0, b1, p->aniso_x - (float)x0);
+    float e_ss = aniso_albedo_average(p);
+    return p->specular * (p->f0c * (e_ss - b) + b);
 }
 
 #endif /* PATHCL_HAS_ANISOTROPY */
@@ -139,6 +196,17 @@ static inline float conductor_albedo(const BsdfParams* p, float3 w)
         return aniso_albedo(p, w);
 #endif
     return ess_albedo(p, w.z);
+}
+
+/* The dielectric layer's directional albedo towards w (in the frame of bsdf_frame, w.z
+ * = cos theta): layer_albedo, or the anisotropic layer's. */
+static inline float3 layer_albedo_towards(const BsdfParams* p, float3 w)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(p))
+        return aniso_layer_albedo(p, w);
+#endif
+    return layer_albedo(p, w.z);
 }
 
 #ifdef PATHCL_HAS_CLEARCOAT

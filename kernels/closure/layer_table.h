@@ -19,7 +19,12 @@
  *                   it bends, get more points) whose azimuth phi from the direction has
  *                   |cos phi| = c; its own grid (LAYER_ANISO_*), 524,288 bytes
  *   E_aniso_avg[t][r]  its cosine-weighted average over the hemisphere (all azimuths)
- * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 807,168 bytes; a
+ *   B_aniso[x"][t][r][c][mu]  the same lobe's albedo with the normalized Fresnel curve
+ *                   s(c) (the dielectric layer of an anisotropic material), x" on a grid
+ *                   of its own, x = LAYER_X_MAX (k / (LAYER_ANISO_ETA_RES - 1))^2 (B
+ *                   bends fastest near ior 1)
+ *   B_aniso_avg[x"][t][r]  its cosine-weighted average over the hemisphere
+ * Row r = 0 holds the smooth interface (E_ss = 1, B = s(mu), G = 1). 7,147,776 bytes; a
  * program without anisotropy gets the first 278,784 (up to LAYER_TABLE_ANISO). */
 #ifndef PATHCL_CLOSURE_LAYER_TABLE_H
 #define PATHCL_CLOSURE_LAYER_TABLE_H
@@ -44,6 +49,10 @@
 #define LAYER_ANISO_BLOCK (LAYER_ANISO_V_RES * LAYER_ANISO_MU_RES) /* one (t, r) pair's table */
 #define LAYER_TABLE_ANISO (LAYER_TABLE_SHEEN + LAYER_ROUGH_RES * LAYER_MU_RES)
 #define LAYER_TABLE_ANISO_AVG (LAYER_TABLE_ANISO + LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES * LAYER_ANISO_BLOCK)
-#define LAYER_TABLE_SIZE (LAYER_TABLE_ANISO_AVG + LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES)
+#define LAYER_ANISO_ETA_RES 12 /* x = LAYER_X_MAX (k / 11)^2 */
+#define LAYER_TABLE_ANISO_B (LAYER_TABLE_ANISO_AVG + LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES)
+#define LAYER_TABLE_ANISO_B_AVG                                                                                        \
+    (LAYER_TABLE_ANISO_B + LAYER_ANISO_ETA_RES * LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES * LAYER_ANISO_BLOCK)
+#define LAYER_TABLE_SIZE (LAYER_TABLE_ANISO_B_AVG + LAYER_ANISO_ETA_RES * LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES)
 
 #endif

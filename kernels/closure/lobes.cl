@@ -14,7 +14,7 @@
  * Under a clear coat the base lobes' estimates are scaled by what the coat passes. */
 static inline LobeChoice choose_lobes(const BsdfParams* p)
 {
-    bool rough = p->alpha >= ALPHA_DELTA;
+    bool rough = interface_rough(p);
     float3 f_layer = fresnel_specular_layer(p, p->cos_o);
     LobeChoice c;
     c.diffuse =

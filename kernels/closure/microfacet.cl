@@ -65,6 +65,38 @@ static inline float3 conductor_sample_visible(const BsdfParams* p, float3 wo, fl
 #endif
 }
 
+/* A visible facet of the dielectric interface's lobe (anisotropic on layer_anisotropic
+ * materials); wo.z > 0. */
+static inline float3 interface_sample_visible(const BsdfParams* p, float3 wo, float2 u)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(p))
+        return ggx_sample_visible(wo, p->alpha_t, p->alpha_b, u);
+#endif
+    return ggx_sample_visible(wo, p->alpha, p->alpha, u);
+}
+
+/* The interface lobe's D G1(wo) G1(wi) and the density of its visible normal wm seen from
+ * wo (times G1(wo) c D / wo.z), anisotropic or not; wo.z > 0. */
+static inline float interface_dgg(const BsdfParams* p, float3 wm, float3 wo, float3 wi)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(p))
+        return conductor_ggx_d(p, wm) * conductor_ggx_g1(p, wo) * conductor_ggx_g1(p, wi);
+#endif
+    float a2 = p->alpha * p->alpha;
+    return ggx_d(wm, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2);
+}
+
+static inline float interface_visible_pdf(const BsdfParams* p, float3 wo, float3 wm)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(p))
+        return conductor_visible_pdf(p, wo, wm);
+#endif
+    return ggx_visible_pdf(wo, wm, p->alpha * p->alpha);
+}
+
 /* Refraction of wo about n (wo on n's side), eta = far ior / near ior. False under TIR. */
 static inline bool refract_dir(float3 wo, float3 n, float eta, float3* wt)
 {

@@ -123,14 +123,21 @@ std::vector<MaterialSpec> reflective_materials()
     MaterialSpec coated_sheen = coated_plastic;
     coated_sheen.sheen = {0.5f, 0.5f, 1.0f};
     coated_sheen.sheen_roughness = 0.6f;
-    // KHR_materials_anisotropy (on the conductor): brushed metal, a part metal over a
-    // plastic, and a smooth metal made rough along one axis alone (alpha 1e-3 across it).
+    // KHR_materials_anisotropy: brushed metal, a part metal over a plastic, a smooth
+    // metal made rough along one axis alone (alpha 1e-3 across it), a brushed plastic
+    // (the dielectric layer anisotropic over the diffuse base), and a smooth tinted
+    // plastic made rough along one axis.
     MaterialSpec brushed = conductor(0.3f, {0.95f, 0.9f, 0.85f});
     brushed.anisotropy = 0.8f;
     MaterialSpec aniso_half = half;
     aniso_half.anisotropy = 0.5f;
     MaterialSpec streak = conductor(0.0f, {0.9f, 0.6f, 0.3f});
     streak.anisotropy = 0.6f;
+    MaterialSpec brushed_plastic = plastic;
+    brushed_plastic.anisotropy = 0.7f;
+    MaterialSpec streak_plastic = tinted;
+    streak_plastic.roughness = 0.0f;
+    streak_plastic.anisotropy = 0.5f;
     return {lambertian({0.5f, 0.6f, 0.7f}),
             conductor(0.2f),
             conductor(0.8f, {0.9f, 0.6f, 0.3f}),
@@ -147,7 +154,9 @@ std::vector<MaterialSpec> reflective_materials()
             coated_sheen,
             brushed,
             aniso_half,
-            streak};
+            streak,
+            brushed_plastic,
+            streak_plastic};
 }
 
 glm::dvec3 incident(double c)

@@ -38,7 +38,7 @@ MaterialSpec dielectric(float roughness, float ior = 1.5f, bool thin = false);
 MaterialSpec lambertian(glm::vec3 base);
 // Lambertian, rough conductors, plastics (plain and tinted specular), a part metal, a
 // specular-glossiness (ior 0) material, three clear-coated ones, four with a sheen and
-// three anisotropic ones: the reflective materials the eval and energy tests sweep.
+// five anisotropic ones: the reflective materials the eval and energy tests sweep.
 std::vector<MaterialSpec> reflective_materials();
 
 // wo at angle theta from +Z with cos theta = c, in the xz plane turned by 0.3 rad about Z

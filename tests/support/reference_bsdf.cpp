@@ -117,7 +117,18 @@ ReferenceBsdf ReferenceBsdf::from_material(const Material& m, bool front_face)
 
 bool ReferenceBsdf::rough() const
 {
-    return alpha >= kAlphaDelta;
+    return layer_anisotropic() || alpha >= kAlphaDelta;
+}
+
+// The interface lobe's alphas along x and y: the conductor's where the layer is anisotropic.
+static double interface_ax(const ReferenceBsdf& b)
+{
+    return b.layer_anisotropic() ? b.alpha_t : b.alpha;
+}
+
+static double interface_ay(const ReferenceBsdf& b)
+{
+    return b.layer_anisotropic() ? b.alpha_b : b.alpha;
 }
 
 bool ReferenceBsdf::conductor_rough() const
@@ -174,6 +185,14 @@ static glm::dvec3 f0_colour(const ReferenceBsdf& b)
     return glm::min(r * r * b.specular_color, glm::dvec3(1.0));
 }
 
+// The anisotropic layer's ior coordinate: x = (ior - 1) / (ior + 1) on the grid
+// LAYER_X_MAX (k / (LAYER_ANISO_ETA_RES - 1))^2.
+static double aniso_ior_coordinate(const ReferenceBsdf& m)
+{
+    double r = (m.ior - 1.0) / (m.ior + 1.0);
+    return std::sqrt(std::clamp(r / LAYER_X_MAX, 0.0, 1.0)) * (LAYER_ANISO_ETA_RES - 1);
+}
+
 glm::dvec3 ReferenceBsdf::layer_albedo(double mu) const
 {
     glm::dvec3 f0c = f0_colour(*this);
@@ -195,7 +214,20 @@ glm::dvec3 ReferenceBsdf::layer_average() const
 {
     glm::dvec3 f0c = f0_colour(*this);
     double e_ss, b;
-    if (!rough()) {
+    if (layer_anisotropic()) {
+        if (specular <= 0.0)
+            return glm::dvec3(0.0);
+        double x = aniso_ior_coordinate(*this);
+        int x0 = std::min(static_cast<int>(x), LAYER_ANISO_ETA_RES - 2);
+        const int per_ior = LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES;
+        auto avg = [&](int k) {
+            return table_at(layer_albedo_table(), LAYER_TABLE_ANISO_B_AVG + k * per_ior, LAYER_ANISO_ROUGH_RES,
+                            std::sqrt(alpha_t) * (LAYER_ANISO_T_RES - 1), LAYER_ANISO_T_RES,
+                            perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1));
+        };
+        e_ss = conductor_albedo_average();
+        b = avg(x0) + (x - x0) * (avg(x0 + 1) - avg(x0));
+    } else if (!rough()) {
         e_ss = 1.0;
         b = smooth_layer_average(ior);
     } else {
@@ -244,35 +276,44 @@ double ReferenceBsdf::interface_albedo(double mu) const
     return g0 + (x - x0) * (g1 - g0);
 }
 
-double ReferenceBsdf::glass_scale(double cos_o) const
+double ReferenceBsdf::glass_scale(const glm::dvec3& wo) const
 {
     bool exact_fresnel = specular == 1.0 && specular_color == glm::dvec3(1.0);
     if (!rough() || transmission <= 0.0 || !exact_fresnel)
         return 1.0;
-    double g = thin ? ess(cos_o) : interface_albedo(cos_o);
+    double cos_o = std::max(wo.z, 0.0);
+    double g = thin ? (layer_anisotropic() ? conductor_albedo(glm::dvec3(wo.x, wo.y, cos_o)) : ess(cos_o))
+                    : interface_albedo(cos_o);
     return g > 1e-3 ? 1.0 / g : 1.0;
 }
 
-// E_aniso as the kernels read it, written out independently: bilinear in (|cos phi|,
-// cos theta^(1/4)) within each (sqrt(alpha_t), roughness) block, then linear in those.
-double ReferenceBsdf::conductor_albedo(const glm::dvec3& w) const
+// An anisotropic table (E_aniso, or B_aniso of one ior) as the kernels read it, written
+// out independently: bilinear in (|cos phi|, cos theta^(1/4)) within each (sqrt(alpha_t),
+// roughness) block, then linear in those.
+static double aniso_table_at(const ReferenceBsdf& m, int table, const glm::dvec3& w)
 {
-    if (!anisotropic())
-        return ess(std::max(w.z, 0.0));
     const std::vector<float>& t = layer_albedo_table();
     double xy2 = w.x * w.x + w.y * w.y, v = xy2 > 0.0 ? std::abs(w.x) / std::sqrt(xy2) : 1.0;
     double row = v * (LAYER_ANISO_V_RES - 1),
            col = std::pow(std::min(std::abs(w.z), 1.0), 0.25) * (LAYER_ANISO_MU_RES - 1);
-    double ft = std::sqrt(alpha_t) * (LAYER_ANISO_T_RES - 1), fr = perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1);
+    double ft = std::sqrt(m.alpha_t) * (LAYER_ANISO_T_RES - 1),
+           fr = m.perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1);
     int t0 = std::min(static_cast<int>(ft), LAYER_ANISO_T_RES - 2);
     int r0 = std::min(static_cast<int>(fr), LAYER_ANISO_ROUGH_RES - 2);
     auto block = [&](int si, int ri) {
-        int offset = LAYER_TABLE_ANISO + (si * LAYER_ANISO_ROUGH_RES + ri) * LAYER_ANISO_BLOCK;
+        int offset = table + (si * LAYER_ANISO_ROUGH_RES + ri) * LAYER_ANISO_BLOCK;
         return table_at(t, offset, LAYER_ANISO_MU_RES, row, LAYER_ANISO_V_RES, col);
     };
     double a = ft - t0, b = fr - r0;
     return (1 - a) * ((1 - b) * block(t0, r0) + b * block(t0, r0 + 1)) +
            a * ((1 - b) * block(t0 + 1, r0) + b * block(t0 + 1, r0 + 1));
+}
+
+double ReferenceBsdf::conductor_albedo(const glm::dvec3& w) const
+{
+    if (!anisotropic())
+        return ess(std::max(w.z, 0.0));
+    return aniso_table_at(*this, LAYER_TABLE_ANISO, w);
 }
 
 double ReferenceBsdf::conductor_albedo_average() const
@@ -282,6 +323,21 @@ double ReferenceBsdf::conductor_albedo_average() const
     return table_at(layer_albedo_table(), LAYER_TABLE_ANISO_AVG, LAYER_ANISO_ROUGH_RES,
                     std::sqrt(alpha_t) * (LAYER_ANISO_T_RES - 1), LAYER_ANISO_T_RES,
                     perceptual_roughness * (LAYER_ANISO_ROUGH_RES - 1));
+}
+
+glm::dvec3 ReferenceBsdf::layer_albedo(const glm::dvec3& w) const
+{
+    if (!layer_anisotropic())
+        return layer_albedo(std::max(w.z, 0.0));
+    if (specular <= 0.0)
+        return glm::dvec3(0.0);
+    double x = aniso_ior_coordinate(*this);
+    int x0 = std::min(static_cast<int>(x), LAYER_ANISO_ETA_RES - 2);
+    const int per_ior = LAYER_ANISO_T_RES * LAYER_ANISO_ROUGH_RES * LAYER_ANISO_BLOCK;
+    double b0 = aniso_table_at(*this, LAYER_TABLE_ANISO_B + x0 * per_ior, w);
+    double b1 = aniso_table_at(*this, LAYER_TABLE_ANISO_B + (x0 + 1) * per_ior, w);
+    double b = b0 + (x - x0) * (b1 - b0), e_ss = conductor_albedo(w);
+    return specular * (f0_colour(*this) * (e_ss - b) + b);
 }
 
 glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const
@@ -298,17 +354,17 @@ glm::dvec3 ReferenceBsdf::multiple_scattering_f_cos(const glm::dvec3& wo, const 
            ((1.0 - conductor_albedo(wo_up)) * (1.0 - conductor_albedo(wi)) / (kPi * (1.0 - e_avg)) * wi.z);
 }
 
-glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h, double cos_o) const
+glm::dvec3 ReferenceBsdf::specular_reflectance(double cos_h, const glm::dvec3& wo) const
 {
     double m = std::clamp(1.0 - cos_h, 0.0, 1.0);
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(m, 5.0);
-    double layer_scale = (1.0 - transmission) + transmission * glass_scale(cos_o);
+    double layer_scale = (1.0 - transmission) + transmission * glass_scale(wo);
     return metallic * schlick + (1.0 - metallic) * layer_scale * layer_fresnel(*this, cos_h);
 }
 
-glm::dvec3 ReferenceBsdf::transmittance(double cos_h, double cos_o) const
+glm::dvec3 ReferenceBsdf::transmittance(double cos_h, const glm::dvec3& wo) const
 {
-    return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission * glass_scale(cos_o));
+    return base_color * (base_weight(*this, layer_fresnel(*this, cos_h)) * transmission * glass_scale(wo));
 }
 
 ReferenceBsdf::Lobes ReferenceBsdf::lobes(const glm::dvec3& wo) const
@@ -317,7 +373,7 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(const glm::dvec3& wo) const
         return cached_lobes_;
     const double cos_o = std::max(wo.z, 0.0);
     glm::dvec3 layer = layer_fresnel(*this, cos_o);
-    glm::dvec3 e_o = inside ? glm::dvec3(0.0) : layer_albedo(cos_o);
+    glm::dvec3 e_o = inside ? glm::dvec3(0.0) : layer_albedo(glm::dvec3(wo.x, wo.y, cos_o));
     glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - cos_o, 5.0);
     Lobes l{};
     l.diffuse = inside ? 0.0 : (1.0 - metallic) * (1.0 - transmission) * mean3(base_color * (glm::dvec3(1.0) - e_o));
@@ -369,12 +425,12 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(const glm::dvec3& wo) const
     return l;
 }
 
-double ReferenceBsdf::interface_split(double c, double cos_o) const
+double ReferenceBsdf::interface_split(double c, const glm::dvec3& wo) const
 {
     glm::dvec3 layer = layer_fresnel(*this, c);
-    double layer_scale = (1.0 - transmission) + transmission * glass_scale(cos_o);
+    double layer_scale = (1.0 - transmission) + transmission * glass_scale(wo);
     double r = layer_scale * mean3(layer);
-    double t = transmission * glass_scale(cos_o) * (1.0 - max3(layer)) * mean3(base_color);
+    double t = transmission * glass_scale(wo) * (1.0 - max3(layer)) * mean3(base_color);
     return r + t > 0.0 ? r / (r + t) : 1.0;
 }
 
@@ -454,22 +510,23 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
             for (int ch = 0; ch < 3; ++ch)
                 if (norm[ch] > 1e-6)
                     f[ch] = base_color[ch] * (1.0 - metallic) * (1.0 - transmission) / kPi *
-                            (1.0 - layer_albedo(std::max(wo.z, 0.0))[ch]) * (1.0 - layer_albedo(wi.z)[ch]) / norm[ch] *
-                            wi.z;
+                            (1.0 - layer_albedo(glm::dvec3(wo.x, wo.y, std::max(wo.z, 0.0)))[ch]) *
+                            (1.0 - layer_albedo(wi)[ch]) / norm[ch] * wi.z;
         }
         f += multiple_scattering_f_cos(wo, wi);
         if (wo.z > 0.0 && anisotropic()) {
-            // The conductor's anisotropic lobe, then the dielectric layer's isotropic one.
+            // The conductor's anisotropic lobe, then the dielectric layer's (anisotropic alike
+            // unless on a transmitting solid).
             glm::dvec3 schlick = base_color + (glm::dvec3(1.0) - base_color) * std::pow(1.0 - c, 5.0);
             f += metallic * schlick *
                  (ggx_d(h, alpha_t, alpha_b) * ggx_g1(wo, alpha_t, alpha_b) * ggx_g1(wi, alpha_t, alpha_b) /
                   (4.0 * wo.z));
+            double ax = interface_ax(*this), ay = interface_ay(*this);
             if (rough())
-                f += (specular_reflectance(c, wo.z) - metallic * schlick) *
-                     (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+                f += (specular_reflectance(c, wo) - metallic * schlick) *
+                     (ggx_d(h, ax, ay) * ggx_g1(wo, ax, ay) * ggx_g1(wi, ax, ay) / (4.0 * wo.z));
         } else if (rough() && wo.z > 0.0) {
-            f += specular_reflectance(c, wo.z) *
-                 (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+            f += specular_reflectance(c, wo) * (ggx_d(h, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
         }
         return f;
     }
@@ -481,7 +538,8 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
         double c = glm::dot(wo, m);
         if (c <= 0.0)
             return glm::dvec3(0.0);
-        return transmittance(c, wo.z) * (ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) / (4.0 * wo.z));
+        double ax = interface_ax(*this), ay = interface_ay(*this);
+        return transmittance(c, wo) * (ggx_d(m, ax, ay) * ggx_g1(wo, ax, ay) * ggx_g1(wi, ax, ay) / (4.0 * wo.z));
     }
     // Walter et al. 2007, radiance scaled by 1/eta^2 across the interface.
     glm::dvec3 m = glm::normalize(wi * eta + wo);
@@ -493,7 +551,7 @@ glm::dvec3 ReferenceBsdf::base_f_cos(const glm::dvec3& wo, const glm::dvec3& wi)
     double denom = (di + dn / eta) * (di + dn / eta);
     double ft =
         ggx_d(m, alpha) * ggx_g1(wo, alpha) * ggx_g1(wi, alpha) * std::abs(di * dn) / (wo.z * denom * eta * eta);
-    return transmittance(dn, wo.z) * ft;
+    return transmittance(dn, wo) * ft;
 }
 
 double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
@@ -512,11 +570,12 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
             double c = std::abs(glm::dot(wo, h));
             p += l.conductor * visible_normal_pdf(wo, h, alpha_t, alpha_b) / (4.0 * c);
             if (rough())
-                p += l.interface * interface_split(c, wo.z) * visible_normal_pdf(wo, h, alpha) / (4.0 * c);
+                p += l.interface * interface_split(c, wo) *
+                     visible_normal_pdf(wo, h, interface_ax(*this), interface_ay(*this)) / (4.0 * c);
         } else if (rough() && wo.z > 0.0) {
             glm::dvec3 h = glm::normalize(wo + wi);
             double c = std::abs(glm::dot(wo, h));
-            double select = l.conductor + l.interface * interface_split(c, std::max(wo.z, 0.0));
+            double select = l.conductor + l.interface * interface_split(c, wo);
             p += select * visible_normal_pdf(wo, h, alpha) / (4.0 * c);
         }
         return p;
@@ -526,7 +585,8 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     if (thin) {
         glm::dvec3 m = glm::normalize(wo + glm::dvec3(wi.x, wi.y, -wi.z));
         double c = glm::dot(wo, m);
-        return c > 0.0 ? l.interface * (1.0 - interface_split(c, wo.z)) * visible_normal_pdf(wo, m, alpha) / (4.0 * c)
+        return c > 0.0 ? l.interface * (1.0 - interface_split(c, wo)) *
+                             visible_normal_pdf(wo, m, interface_ax(*this), interface_ay(*this)) / (4.0 * c)
                        : 0.0;
     }
     glm::dvec3 m = glm::normalize(wi * eta + wo);
@@ -536,7 +596,7 @@ double ReferenceBsdf::pdf(const glm::dvec3& wo, const glm::dvec3& wi) const
     if (dn <= 0.0 || di >= 0.0)
         return 0.0;
     double denom = (di + dn / eta) * (di + dn / eta);
-    return l.interface * (1.0 - interface_split(dn, wo.z)) * visible_normal_pdf(wo, m, alpha) * std::abs(di) / denom;
+    return l.interface * (1.0 - interface_split(dn, wo)) * visible_normal_pdf(wo, m, alpha) * std::abs(di) / denom;
 }
 
 } // namespace pathcl::test

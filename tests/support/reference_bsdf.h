@@ -42,6 +42,9 @@ struct ReferenceBsdf {
     bool rough() const;           // false: the dielectric's specular lobes are delta functions
     bool conductor_rough() const; // false: the conductor is an ideal mirror
     bool anisotropic() const { return alpha_t != alpha_b; }
+    // The dielectric layer shares the conductor's anisotropic alphas, except on a solid
+    // that transmits and at ior 0.
+    bool layer_anisotropic() const { return anisotropic() && !(transmission > 0.0 && !thin) && ior != 0.0; }
 
     // f(wo, wi) |cos theta_i| over the non-delta lobes.
     glm::dvec3 f_cos(const glm::dvec3& wo, const glm::dvec3& wi) const;
@@ -55,7 +58,7 @@ struct ReferenceBsdf {
     };
     Lobes lobes(const glm::dvec3& wo) const;
     // Probability that the interface reflects (not refracts) at a facet seen at cos c.
-    double interface_split(double c, double cos_o) const;
+    double interface_split(double c, const glm::dvec3& wo) const;
 
 private:
     // lobes() for the last wo asked (the chi-square integration asks millions of times).
@@ -65,9 +68,9 @@ private:
 public:
     // Reflectance of the specular reflection lobe and transmittance weight of the
     // transmission lobe (without the 1/eta^2 radiance scaling) at cos(wo, microfacet),
-    // with the rough interface's energy compensation for wo at cos_o.
-    glm::dvec3 specular_reflectance(double cos_h, double cos_o) const;
-    glm::dvec3 transmittance(double cos_h, double cos_o) const;
+    // with the rough interface's energy compensation for wo.
+    glm::dvec3 specular_reflectance(double cos_h, const glm::dvec3& wo) const;
+    glm::dvec3 transmittance(double cos_h, const glm::dvec3& wo) const;
 
     // Multiple-scattering compensation (see kernels/bsdf.cl): the GGX albedo with Fresnel
     // 1 and its average, the rough dielectric interface's energy albedo, the factor that
@@ -75,7 +78,7 @@ public:
     double ess(double cos_theta) const;
     double ess_average() const;
     double interface_albedo(double cos_theta) const;
-    double glass_scale(double cos_o) const;
+    double glass_scale(const glm::dvec3& wo) const;
     // The conductor's: ess, or with anisotropy the E_aniso table at w's cos theta and
     // azimuth, and its average; the Kulla-Conty lobe they make.
     double conductor_albedo(const glm::dvec3& w) const;
@@ -84,8 +87,9 @@ public:
 
     // The dielectric layer's directional albedo E(cos theta) and its cosine-weighted
     // average, as the kernels read them: interpolated from layer_albedo_table() for a
-    // rough layer, exact for a smooth one.
+    // rough layer, exact for a smooth one; towards w, anisotropic or not.
     glm::dvec3 layer_albedo(double cos_theta) const;
+    glm::dvec3 layer_albedo(const glm::dvec3& w) const;
     glm::dvec3 layer_average() const;
 
     // The clear coat: its directional albedo with factor 1 (ior 1.5; from the table when
