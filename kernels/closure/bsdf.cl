@@ -162,6 +162,7 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.layer_x = clamp(r / LAYER_X_MAX, 0.0f, 1.0f) * (float)(LAYER_ETA_RES - 1);
     p.cos_o = clamp(dot(wo, sp->ns), 0.0f, 1.0f);
     p.glass_scale = 1.0f;
+    p.specular_lobes = p.metallic > 0.0f || p.transmission > 0.0f || p.specular > 0.0f;
     p.ms_scale = p.ms_albedo = (float3)(0.0f);
     p.ess_o = p.conductor_e_o = 1.0f;
 #ifdef PATHCL_HAS_ANISOTROPY
@@ -174,7 +175,7 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     }
 #endif
 #ifndef PATHCL_SINGLE_SCATTERING
-    if (p.alpha >= ALPHA_DELTA) {
+    if (p.alpha >= ALPHA_DELTA && p.specular_lobes) {
         /* Energy lost to masking, restored (multiple-scattering compensation). */
         p.ess_o = ess_albedo(&p, p.cos_o);
         /* A rough interface with the exact Fresnel factor (specular 1, white specular

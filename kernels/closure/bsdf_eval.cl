@@ -66,7 +66,7 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
             return e;
         }
 #endif
-        if (rough && wo.z > 0.0f) {
+        if (rough && wo.z > 0.0f && p->specular_lobes) {
             float3 h = wo + wi;
             float len = length(h);
             if (!(len > 0.0f))

@@ -74,6 +74,9 @@ typedef struct {
     float3 ms_scale;             /* conductor multiple scattering: metallic F_ms / (pi (1 - E_avg)) */
     float3 ms_albedo;            /* ... and that lobe's albedo from wo, metallic F_ms (1 - ess_o) */
     float glass_scale;           /* 1 / interface albedo: rough refraction loses no energy */
+    bool specular_lobes;         /* the GGX lobes can scatter: false for metallic 0,
+                                  * transmission 0 and specular 0 (an exactly Lambertian base,
+                                  * whose lobes evaluate to 0 and are skipped) */
 #ifdef PATHCL_HAS_ANISOTROPY
     float alpha_t, alpha_b; /* the anisotropic lobes' GGX alpha along and across the anisotropy
                              * direction (both alpha when isotropic) */

@@ -15,7 +15,8 @@
 static inline LobeChoice choose_lobes(const BsdfParams* p)
 {
     bool rough = interface_rough(p);
-    float3 f_layer = fresnel_specular_layer(p, p->cos_o);
+    /* No specular lobes: specular 0 makes the layer's Fresnel factor exactly 0. */
+    float3 f_layer = p->specular_lobes ? fresnel_specular_layer(p, p->cos_o) : (float3)(0.0f);
     LobeChoice c;
     c.diffuse =
         p->inside ? 0.0f : (1.0f - p->metallic) * (1.0f - p->transmission) * mean3(p->base_color * (1.0f - p->layer_o));
