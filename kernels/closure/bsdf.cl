@@ -150,8 +150,9 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
         else
             make_basis(sp->ns, &p.tangent, &b); /* no tangent frame: some direction */
         /* The dielectric layer shares the anisotropic lobe, but not on a transmitting solid
-         * (its refraction's compensation would need tables over one more axis) nor at ior
-         * 0 (Schlick's curve has no anisotropic table). */
+         * (its refraction's compensation would need the interface albedo over both
+         * roughnesses, the azimuth and the ior, from both sides) nor at ior 0 (Schlick's
+         * curve has no anisotropic table). */
         p.layer_aniso = bsdf_anisotropic(&p) && !(p.transmission > 0.0f && !p.thin) && m->ior != 0.0f;
     }
 #endif
