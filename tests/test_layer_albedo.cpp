@@ -353,6 +353,25 @@ TEST(LayerAlbedo, AnisotropicLayerIntegrationAgreesWithTheIsotropicOneAndABruteF
     }
 }
 
+TEST(LayerAlbedo, AnisotropicInterfaceIntegrationAgreesWithTheIsotropicOne)
+{
+    // The anisotropic dielectric interface's energy albedo (what a transmitting solid's
+    // anisotropic compensation would need; the README's comparisons with isotropic
+    // readings of it used this): at equal roughness along and across, the isotropic
+    // integration's at any azimuth, from outside and inside; never above 1, and 1 for a
+    // smooth interface. Broken variant seen to fail: the refracted direction's G1 with the
+    // reflected one's direction.
+    for (double eta : {1.5, 1.0 / 1.5, 2.2})
+        for (double mu : {0.9, 0.4, 0.1})
+            for (double r : {0.3, 0.8})
+                for (double c : {1.0, 0.5, 0.0}) {
+                    double g = integrate_anisotropic_dielectric_albedo(mu, c, r, r, eta);
+                    EXPECT_NEAR(g, integrate_dielectric_albedo(mu, r, eta), 2e-4) << eta << " " << mu << " " << r;
+                    EXPECT_LE(integrate_anisotropic_dielectric_albedo(mu, c, 0.9, r, eta), 1.0 + 1e-9);
+                }
+    EXPECT_EQ(integrate_anisotropic_dielectric_albedo(0.5, 0.3, 0.0, 0.0, 1.5), 1.0);
+}
+
 TEST(LayerAlbedo, AnisotropicLayerTableMatchesTheIntegrationAndItsAverageItsInterpolant)
 {
     // The anisotropic layer's E = f0 (E_aniso - B_aniso) + B_aniso as the kernels read it
