@@ -176,26 +176,21 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     }
 #endif
 #ifndef PATHCL_SINGLE_SCATTERING
-    if (p.alpha >= ALPHA_DELTA && p.specular_lobes) {
-        /* Energy lost to masking, restored (multiple-scattering compensation). */
+    /* Energy lost to masking, restored (multiple-scattering compensation). */
+    if (p.alpha >= ALPHA_DELTA && p.specular_lobes)
         p.ess_o = ess_albedo(&p, p.cos_o);
-        /* A rough interface with the exact Fresnel factor (specular 1, white specular
-         * colour) loses 1 - G(cos_o); its lobes are divided by G, as Turquin (2019) does.
-         * A thin sheet's lobe pair has the reflection lobe's albedo E_ss. */
-        bool exact_fresnel = p.specular == 1.0f && all(p.specular_color == (float3)(1.0f));
-        if (p.transmission > 0.0f && exact_fresnel) {
-            float g = p.thin ? p.ess_o : interface_albedo(&p, p.cos_o);
-            p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
-        }
-    }
+    /* A rough interface with the exact Fresnel factor (specular 1, white specular colour)
+     * loses 1 - G(cos_o); its lobes are divided by G, as Turquin (2019) does. A thin
+     * sheet's lobe pair has the reflection lobe's albedo (E_ss, or the anisotropic one). */
+    bool exact_fresnel = p.specular == 1.0f && all(p.specular_color == (float3)(1.0f));
+    if (interface_rough(&p) && p.transmission > 0.0f && exact_fresnel) {
+        float g = p.thin ? p.ess_o : interface_albedo(&p, p.cos_o);
 #ifdef PATHCL_HAS_ANISOTROPY
-    if (layer_anisotropic(&p) && p.thin && p.transmission > 0.0f && p.specular == 1.0f &&
-        all(p.specular_color == (float3)(1.0f))) {
-        /* The anisotropic sheet's lobe pair has the anisotropic lobe's albedo. */
-        float g = aniso_albedo(&p, wo_l);
+        if (p.thin && layer_anisotropic(&p))
+            g = aniso_albedo(&p, wo_l);
+#endif
         p.glass_scale = g > 1e-3f ? 1.0f / g : 1.0f;
     }
-#endif
     if (conductor_rough(&p) && p.metallic > 0.0f) {
         /* Kulla and Conty 2017 with Schlick's average F_avg = F0 + (1 - F0) / 21. */
         float e_avg;
