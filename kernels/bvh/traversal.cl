@@ -145,8 +145,11 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
             int index[4] = {node.index.x, node.index.y, node.index.z, node.index.w};
             int count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
             /* Push every child the ray enters, farthest first, and continue with the
-             * nearest (popped at once): a small insertion sort on the entry distance. */
+             * nearest (popped at once): a small insertion sort on the entry distance.
+             * Unrolled, so that e, index and count stay in registers (PoCL kept the loop
+             * and the arrays in memory; a compiler that ignores the pragma still runs it). */
             int base = sp;
+#pragma unroll
             for (int j = 0; j < 4; ++j) {
                 if (e[j] == INFINITY || index[j] < 0)
                     continue;
