@@ -13,7 +13,7 @@
 #define PATHCL_DATA_ARRAYS_H
 
 #define PATHCL_SCENE_ARRAYS(X)                                                                                         \
-    X(BvhNode, nodes)           /* four-wide BVH, root first */                                                        \
+    X(BvhNode, nodes)           /* eight-wide BVH, root first */                                                       \
     X(Triangle, triangles)      /* positions, BVH leaf order */                                                        \
     X(TriangleShading, shading) /* normals, material, emitter; leaf order */                                           \
     X(Instance, instances)      /* two-level BVH only: top-level leaf order */                                         \

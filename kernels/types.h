@@ -19,19 +19,25 @@ typedef struct {
     pcl_float4 direction; /* xyz normalized; w unused */
 } Ray;
 
-/* Four-wide BVH node: the four children's boxes stored axis by axis, so that one float4
- * operation slab-tests all four (SIMD on CPUs, and one node fetch decides all children).
- * A child is an inner node (count 0, index = node), a leaf (count > 0: triangles index ..
- * index + count - 1) or empty (index -1, count 0, inverted box). 128 bytes. */
+/* Eight-wide BVH node: the eight children's boxes stored axis by axis, so that one float8
+ * operation slab-tests all eight (SIMD on CPUs, and one node fetch decides all children;
+ * an eight-wide tree has fewer levels than a four-wide one, and each level is a dependent
+ * memory fetch). A child is an inner node (count 0, index = node), a leaf
+ * (count > 0: triangles index .. index + count - 1) or empty (index -1, count 0,
+ * inverted box). 256 bytes. */
+#define BVH_WIDTH 8
 typedef struct {
-    pcl_float4 lo_x, hi_x, lo_y, hi_y, lo_z, hi_z; /* lane k: child k's box */
-    pcl_int4 index;
-    pcl_int4 count;
+    pcl_float8 lo_x, hi_x, lo_y, hi_y, lo_z, hi_z; /* lane k: child k's box */
+    pcl_int8 index;
+    pcl_int8 count;
 } BvhNode;
 
 /* Entries of the traversal stack (kernels/bvh/traversal.cl); the builder checks that every
- * tree fits (a four-wide node pushes at most three children per level). */
-#define BVH_STACK_SIZE 96
+ * tree fits. A node spans at least two binary levels; with at most four children it
+ * pushes at most three besides the one taken next (3 x 31 + 1 = 94 at the builder's depth
+ * cap), with eight up to seven. A tree whose full nodes would need more than this gets
+ * nodes of at most four children (host/bvh/bvh_builder.cpp). */
+#define BVH_STACK_SIZE 128
 /* The same for a two-level BVH (PATHCL_HAS_INSTANCES): the top level's entries, a leaf's
  * instances and a return mark below the entries of one mesh's tree; compile_geometry
  * checks that the sum fits. */

@@ -26,9 +26,9 @@ struct Slot {
 
 Slot slot(const BvhNode& n, int j)
 {
-    const float* lo[3] = {&n.lo_x.x, &n.lo_y.x, &n.lo_z.x};
-    const float* hi[3] = {&n.hi_x.x, &n.hi_y.x, &n.hi_z.x};
-    return {{(&n.index.x)[j], (&n.count.x)[j]}, {lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
+    const float* lo[3] = {n.lo_x.s, n.lo_y.s, n.lo_z.s};
+    const float* hi[3] = {n.hi_x.s, n.hi_y.s, n.hi_z.s};
+    return {{n.index.s[j], n.count.s[j]}, {lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
 }
 
 // Walks the tree, checking each child box equals the union of its triangles' boxes, and
@@ -50,7 +50,7 @@ void check_tree(const Bvh& bvh, const BvhBuildInput& in, bool allow_empty_child)
                 uhi = glm::max(uhi, in.box_max[t]);
             }
             // Stored boxes are widened outwards by one ulp, and by at least 2 FLT_MIN near
-            // zero (traversal.cl ray_box_entry4).
+            // zero (traversal.cl ray_box_entry8).
             for (int a = 0; a < 3; ++a) {
                 ulo[a] = std::min(std::nextafter(ulo[a], -INFINITY), ulo[a] - 2.0f * FLT_MIN);
                 uhi[a] = std::max(std::nextafter(uhi[a], INFINITY), uhi[a] + 2.0f * FLT_MIN);
@@ -60,7 +60,7 @@ void check_tree(const Bvh& bvh, const BvhBuildInput& in, bool allow_empty_child)
             ASSERT_LT(static_cast<std::size_t>(ref.index), bvh.nodes.size());
             const BvhNode& n = bvh.nodes[static_cast<std::size_t>(ref.index)];
             int used = 0;
-            for (int j = 0; j < 4; ++j) {
+            for (int j = 0; j < kBvhWidth; ++j) {
                 Slot c = slot(n, j);
                 if (c.ref.index < 0) {
                     // An empty slot never gets entered: its box is inverted.
@@ -82,7 +82,7 @@ void check_tree(const Bvh& bvh, const BvhBuildInput& in, bool allow_empty_child)
         EXPECT_EQ(uhi, hi);
     };
     glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (int j = 0; j < 4; ++j) {
+    for (int j = 0; j < kBvhWidth; ++j) {
         Slot c = slot(bvh.nodes[0], j);
         if (c.ref.index >= 0) {
             lo = glm::min(lo, c.lo);
@@ -128,7 +128,7 @@ TEST(BvhBuilder, SingleTriangleHangsUnderInnerRoot)
     Bvh bvh = build_bvh(in);
     ASSERT_EQ(bvh.nodes.size(), 1u);
     EXPECT_EQ(slot(bvh.nodes[0], 0).ref.count, 1);
-    for (int j = 1; j < 4; ++j)
+    for (int j = 1; j < kBvhWidth; ++j)
         EXPECT_EQ(slot(bvh.nodes[0], j).ref.index, -1);
     check_tree(bvh, in, true);
 }
@@ -137,18 +137,19 @@ TEST(BvhBuilder, EmptySceneHasOneRootWithEmptyChildren)
 {
     Bvh bvh = build_bvh(BvhBuildInput{});
     ASSERT_EQ(bvh.nodes.size(), 1u);
-    for (int j = 0; j < 4; ++j)
+    for (int j = 0; j < kBvhWidth; ++j)
         EXPECT_EQ(slot(bvh.nodes[0], j).ref.index, -1);
 }
 
-TEST(BvhBuilder, FourWideLevelsHalveTheDepthAndBoundTheStack)
+TEST(BvhBuilder, EightWideLevelsHalveTheDepthAndBoundTheStack)
 {
     // Slivers along x, each twice as long as the one before: SAH peels a few off at a
-    // time, so the binary tree is deep and lopsided. Every four-wide level spans two
-    // binary ones and pushes at most three children, so the stack a ray needs is at most
-    // 3 ceil(binary depth / 2): with the binary depth capped at 60, within the kernels'
-    // 96 entries. Broken variant seen failing: four-wide nodes that take the binary
-    // node's children instead of its grandchildren (no halving).
+    // time, so the binary tree is deep and lopsided. Every eight-wide level spans at least
+    // two binary ones and pushes at most seven children. Where that would overflow the
+    // kernels' 128 entries the builder keeps at most four children per node, three pushes
+    // per level: 3 ceil(binary depth / 2) + 1 fits at the depth cap of 60. Broken variant
+    // seen failing: eight-wide nodes that take the binary node's children instead of its
+    // grandchildren (no halving).
     std::vector<glm::vec3> v;
     for (int i = 0; i < 100; ++i) {
         float a = std::ldexp(1.0f, i), b = 2.0f * a;
@@ -159,8 +160,46 @@ TEST(BvhBuilder, FourWideLevelsHalveTheDepthAndBoundTheStack)
     check_tree(bvh, in, false);
     EXPECT_GT(bvh.depth, 20);
     EXPECT_LE(bvh.wide_depth, (bvh.depth + 1) / 2 + 1);
-    EXPECT_LE(bvh.stack_needed, 3 * bvh.wide_depth);
-    EXPECT_LE(3 * ((kBvhMaxDepth + 1) / 2 + 1) + 1, kBvhStackSize); // the bound at the depth cap
+    EXPECT_LE(bvh.stack_needed, (kBvhWidth - 1) * bvh.wide_depth);
+    EXPECT_LE(3 * ((kBvhMaxDepth + 1) / 2 + 1) + 1, kBvhStackSize); // the fallback's bound at the depth cap
+}
+
+TEST(BvhBuilder, EightWideNodesHoldMoreThanFourChildren)
+{
+    // Opening the largest inner children fills the nodes: on a closed sphere the nodes
+    // hold more than four children on average (4.13 when written; nodes just above the
+    // leaves cannot be filled). Broken variant seen failing: taking only the
+    // grandchildren, at most four (3.12).
+    auto v = test::jittered_sphere(40, 80, 7);
+    BvhBuildInput in = bvh_input_from_triangles(v);
+    Bvh bvh = build_bvh(in);
+    std::size_t children = 0;
+    for (const BvhNode& n : bvh.nodes)
+        for (int j = 0; j < kBvhWidth; ++j)
+            children += n.index.s[j] >= 0;
+    const double per_node = static_cast<double>(children) / static_cast<double>(bvh.nodes.size());
+    EXPECT_GT(per_node, 4.0) << bvh.nodes.size() << " nodes";
+}
+
+TEST(BvhBuilder, ATreeTooDeepForTheStackKeepsFourChildrenPerNode)
+{
+    // The fallback, reached with a stack one entry too small for the full nodes: every
+    // node then holds at most four children and the tree fits. Broken variant seen
+    // failing: no fallback (the builder throws).
+    auto v = test::jittered_sphere(40, 80, 7);
+    BvhBuildInput in = bvh_input_from_triangles(v);
+    const Bvh full = build_bvh(in);
+    const int limit = full.stack_needed; // one less than the full nodes need
+    const Bvh bvh = build_bvh(in, limit);
+    check_tree(bvh, in, false);
+    EXPECT_LE(bvh.stack_needed + 1, limit);
+    for (const BvhNode& n : bvh.nodes) {
+        int children = 0;
+        for (int j = 0; j < kBvhWidth; ++j)
+            children += n.index.s[j] >= 0;
+        EXPECT_LE(children, 4);
+    }
+    EXPECT_GT(bvh.nodes.size(), full.nodes.size());
 }
 
 TEST(BvhBuilder, IdenticalTrianglesStillSplitIntoSmallLeaves)

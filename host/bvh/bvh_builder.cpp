@@ -158,44 +158,69 @@ struct Builder {
         return Child{bounds, static_cast<int>(self), 0};
     }
 
-    // The four-wide tree: each node takes the grandchildren of a binary node (a child
-    // that is a leaf stands for itself), so every four-wide level spans two binary
-    // levels; that bounds the traversal stack (stack_needed). Returns the node's index.
+    // The eight-wide tree: each node takes the grandchildren of a binary node (a child
+    // that is a leaf stands for itself), so every eight-wide level spans at least two
+    // binary levels; that bounds the traversal stack (stack_needed). It then opens its
+    // largest inner child (by surface area: the likeliest to be entered) while the
+    // grandchildren fit, so that nodes hold up to eight children and the tree has fewer
+    // levels. Without `fill`, nodes keep only the grandchildren (at most four children,
+    // three pushes per level: within the stack whatever the tree's shape). Returns the
+    // node's index.
     std::vector<BvhNode> wide;
 
-    int collapse(int binary)
+    int collapse(int binary, bool fill)
     {
-        Child kids[4];
-        int k = 0;
+        std::vector<Child> kids;
         for (const Child& c : nodes[static_cast<std::size_t>(binary)].child) {
             if (c.index < 0)
                 continue; // empty (only under the root of a scene with one leaf or none)
             if (c.count == 0) {
                 for (const Child& g : nodes[static_cast<std::size_t>(c.index)].child)
                     if (g.index >= 0)
-                        kids[k++] = g;
+                        kids.push_back(g);
             } else {
-                kids[k++] = c;
+                kids.push_back(c);
             }
         }
+        for (;;) {
+            int best = -1;
+            float best_area = -1.0f;
+            for (std::size_t i = 0; i < kids.size(); ++i)
+                if (kids[i].count == 0) {
+                    int grandkids = 0;
+                    for (const Child& g : nodes[static_cast<std::size_t>(kids[i].index)].child)
+                        grandkids += g.index >= 0;
+                    if (kids.size() - 1 + static_cast<std::size_t>(grandkids) <= static_cast<std::size_t>(kBvhWidth) &&
+                        kids[i].box.area() > best_area) {
+                        best_area = kids[i].box.area();
+                        best = static_cast<int>(i);
+                    }
+                }
+            if (best < 0 || !fill)
+                break;
+            Child open = kids[static_cast<std::size_t>(best)];
+            kids.erase(kids.begin() + best);
+            for (const Child& g : nodes[static_cast<std::size_t>(open.index)].child)
+                if (g.index >= 0)
+                    kids.push_back(g);
+        }
+        const int k = static_cast<int>(kids.size());
         int self = static_cast<int>(wide.size());
         wide.emplace_back();
         BvhNode node{};
-        float* lo[3] = {&node.lo_x.x, &node.lo_y.x, &node.lo_z.x};
-        float* hi[3] = {&node.hi_x.x, &node.hi_y.x, &node.hi_z.x};
-        std::int32_t* index = &node.index.x;
-        std::int32_t* count = &node.count.x;
-        for (int j = 0; j < 4; ++j) {
+        float* lo[3] = {node.lo_x.s, node.lo_y.s, node.lo_z.s};
+        float* hi[3] = {node.hi_x.s, node.hi_y.s, node.hi_z.s};
+        for (int j = 0; j < kBvhWidth; ++j) {
             const bool used = j < k;
             // An empty slot gets an inverted box. A used one is widened outwards (one ulp,
             // widen_down/up), so that a ray parallel to an axis in the plane of a face is
-            // strictly inside the slab (traversal.cl ray_box_entry4).
+            // strictly inside the slab (traversal.cl ray_box_entry8).
             for (int a = 0; a < 3; ++a) {
                 lo[a][j] = used ? widen_down(kids[j].box.lo[a]) : std::numeric_limits<float>::infinity();
                 hi[a][j] = used ? widen_up(kids[j].box.hi[a]) : -std::numeric_limits<float>::infinity();
             }
-            count[j] = used ? kids[j].count : 0;
-            index[j] = used ? (kids[j].count > 0 ? kids[j].index : collapse(kids[j].index)) : -1;
+            node.count.s[j] = used ? kids[j].count : 0;
+            node.index.s[j] = used ? (kids[j].count > 0 ? kids[j].index : collapse(kids[j].index, fill)) : -1;
         }
         wide[static_cast<std::size_t>(self)] = node;
         return self;
@@ -206,16 +231,14 @@ struct Builder {
     int stack_needed(int i, int depth)
     {
         const BvhNode& n = wide[static_cast<std::size_t>(i)];
-        const std::int32_t* index = &n.index.x;
-        const std::int32_t* count = &n.count.x;
         int children = 0, deepest = 0;
         out->wide_depth = std::max(out->wide_depth, depth);
-        for (int j = 0; j < 4; ++j) {
-            if (index[j] < 0)
+        for (int j = 0; j < kBvhWidth; ++j) {
+            if (n.index.s[j] < 0)
                 continue;
             ++children;
-            if (count[j] == 0)
-                deepest = std::max(deepest, stack_needed(index[j], depth + 1));
+            if (n.count.s[j] == 0)
+                deepest = std::max(deepest, stack_needed(n.index.s[j], depth + 1));
         }
         return std::max(children - 1, 0) + deepest;
     }
@@ -236,7 +259,7 @@ BvhBuildInput bvh_input_from_triangles(const std::vector<glm::vec3>& v)
     return in;
 }
 
-Bvh build_bvh(const BvhBuildInput& input)
+Bvh build_bvh(const BvhBuildInput& input, int stack_size)
 {
     Bvh bvh;
     std::size_t n = input.box_min.size();
@@ -256,9 +279,19 @@ Bvh build_bvh(const BvhBuildInput& input)
         if (top.count > 0) // the whole scene is one leaf: hang it under an inner root
             b.nodes.push_back(Builder::BinaryNode{{top, empty}});
     }
-    b.collapse(0); // the four-wide root is node 0
+    b.collapse(0, true); // the eight-wide root is node 0
     bvh.stack_needed = b.stack_needed(0, 1);
-    if (bvh.stack_needed + 1 > kBvhStackSize) // + 1: a node's children are all pushed before one is popped
+    // + 1: a node's children are all pushed before one is popped. Full nodes along a deep
+    // path can push seven entries per three binary levels, more than the stack holds at the
+    // depth cap; such a tree (it takes a contrived scene) gets nodes of at most four
+    // children instead.
+    if (bvh.stack_needed + 1 > stack_size) {
+        b.wide.clear();
+        bvh.wide_depth = 0;
+        b.collapse(0, false);
+        bvh.stack_needed = b.stack_needed(0, 1);
+    }
+    if (bvh.stack_needed + 1 > stack_size)
         throw std::logic_error("BVH needs a traversal stack of " + std::to_string(bvh.stack_needed));
     bvh.nodes = std::move(b.wide);
     bvh.triangle_order = std::move(b.order);

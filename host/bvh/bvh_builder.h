@@ -1,7 +1,8 @@
-// Binned SAH BVH over triangles: built binary, then collapsed to the four-wide BvhNode
-// array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl), every four-wide node
-// taking the grandchildren of a binary one. Node 0 is the root and is always an inner
-// node; leaves live inside their parent as (first triangle, count).
+// Binned SAH BVH over triangles: built binary, then collapsed to the eight-wide BvhNode
+// array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl), every
+// eight-wide node taking the grandchildren of a binary one and then opening its largest
+// inner children while they fit. Node 0 is the root and is always an inner node; leaves
+// live inside their parent as (first triangle, count).
 #pragma once
 
 #include <cstdint>
@@ -22,19 +23,23 @@ struct Bvh {
     // Leaf order: triangle_order[i] is the input triangle stored at position i.
     std::vector<std::uint32_t> triangle_order;
     int depth = 0;        // longest root-to-leaf path of the binary tree, in nodes
-    int wide_depth = 0;   // the same in the four-wide tree
+    int wide_depth = 0;   // the same in the eight-wide tree
     int stack_needed = 0; // most traversal stack entries any ray can need
     int leaf_count = 0;
     int max_leaf_size = 0;
 };
 
-// The binary depth bound keeps the four-wide tree within the kernels' traversal stack:
-// at most 30 four-wide levels, each pushing at most 3 entries (BVH_STACK_SIZE, types.h).
+// The binary depth bound keeps the tree within the kernels' traversal stack: at most 31
+// levels, each pushing at most 3 entries where nodes keep at most four children, the
+// builder's fallback for a tree whose full nodes would need more (BVH_STACK_SIZE, types.h).
 constexpr int kBvhMaxDepth = 60;
+constexpr int kBvhWidth = BVH_WIDTH;
 constexpr int kBvhStackSize = BVH_STACK_SIZE;
 constexpr int kBvhMaxLeafSize = 8;
 
-Bvh build_bvh(const BvhBuildInput& input);
+// stack_size: the traversal stack the tree must fit (the kernels'; tests pass less to
+// reach the fallback to nodes of at most four children).
+Bvh build_bvh(const BvhBuildInput& input, int stack_size = kBvhStackSize);
 
 // Convenience: boxes of triangles given as three vertices each.
 BvhBuildInput bvh_input_from_triangles(const std::vector<glm::vec3>& vertices);

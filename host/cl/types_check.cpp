@@ -8,7 +8,7 @@ namespace pathcl {
 
 static_assert(sizeof(pcl_float4) == 16 && alignof(pcl_float4) == 16);
 static_assert(sizeof(Ray) == 32);
-static_assert(sizeof(BvhNode) == 128 && offsetof(BvhNode, index) == 96 && offsetof(BvhNode, count) == 112);
+static_assert(sizeof(BvhNode) == 256 && offsetof(BvhNode, index) == 192 && offsetof(BvhNode, count) == 224);
 static_assert(sizeof(Triangle) == 48);
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, to_render) == 48 && offsetof(Instance, root) == 96);
 static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);

@@ -119,11 +119,9 @@ std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& o
         t.root = static_cast<int>(a.nodes.size());
         t.leaf_base = order.size();
         for (BvhNode node : t.bvh.nodes) {
-            std::int32_t* index[4] = {&node.index.x, &node.index.y, &node.index.z, &node.index.w};
-            const std::int32_t count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
-            for (int k = 0; k < 4; ++k)
-                if (*index[k] >= 0)
-                    *index[k] += count[k] == 0 ? t.root : static_cast<std::int32_t>(t.leaf_base);
+            for (int k = 0; k < kBvhWidth; ++k)
+                if (node.index.s[k] >= 0)
+                    node.index.s[k] += node.count.s[k] == 0 ? t.root : static_cast<std::int32_t>(t.leaf_base);
             a.nodes.push_back(node);
         }
         for (std::uint32_t i : t.bvh.triangle_order)

@@ -1,5 +1,5 @@
-/* Closest-hit and any-hit (visibility) traversal of the four-wide BVH: one float4 slab
- * test for the four children of a node, children entered nearest first.
+/* Closest-hit and any-hit (visibility) traversal of the eight-wide BVH: one float8 slab
+ * test for the eight children of a node, children entered nearest first.
  *
  * Two-level BVH (PATHCL_HAS_INSTANCES): node 0 is the root of a top-level tree whose
  * leaves name instances (types.h Instance); each instance's mesh has its own tree in the
@@ -46,7 +46,7 @@ static inline RayTraversal instance_ray(const Instance* inst, const RayTraversal
 #define TRAVERSAL_STACK_SIZE BVH_STACK_SIZE
 #endif
 
-/* Slab tests against the four child boxes of a node at once (float4 lanes), with the far
+/* Slab tests against the eight child boxes of a node at once (float8 lanes), with the far
  * distance enlarged by 1 + 2 gamma(3) so that rounding never culls a box the ray touches
  * (Ize 2013). Returns each child's entry distance, INFINITY where the ray misses it.
  *
@@ -58,17 +58,17 @@ static inline RayTraversal instance_ray(const Instance* inst, const RayTraversal
  * +-inf, no NaN), and a NaN is met only by a ray in the widened plane, outside the
  * geometry, which touches nothing in the box: culling it or entering it is right either
  * way. */
-static inline float4 ray_box_entry4(const RayTraversal* r, const BvhNode* node, float tmax)
+static inline float8 ray_box_entry8(const RayTraversal* r, __global const BvhNode* node, float tmax)
 {
-    float4 ox = (float4)(r->origin.x), oy = (float4)(r->origin.y), oz = (float4)(r->origin.z);
-    float4 ix = (float4)(r->inv_dir.x), iy = (float4)(r->inv_dir.y), iz = (float4)(r->inv_dir.z);
-    float4 t0x = (node->lo_x - ox) * ix, t1x = (node->hi_x - ox) * ix;
-    float4 t0y = (node->lo_y - oy) * iy, t1y = (node->hi_y - oy) * iy;
-    float4 t0z = (node->lo_z - oz) * iz, t1z = (node->hi_z - oz) * iz;
-    float4 tnear = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), (float4)(0.0f)));
-    float4 tfar = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), (float4)(tmax)));
+    float8 ox = (float8)(r->origin.x), oy = (float8)(r->origin.y), oz = (float8)(r->origin.z);
+    float8 ix = (float8)(r->inv_dir.x), iy = (float8)(r->inv_dir.y), iz = (float8)(r->inv_dir.z);
+    float8 t0x = (node->lo_x - ox) * ix, t1x = (node->hi_x - ox) * ix;
+    float8 t0y = (node->lo_y - oy) * iy, t1y = (node->hi_y - oy) * iy;
+    float8 t0z = (node->lo_z - oz) * iz, t1z = (node->hi_z - oz) * iz;
+    float8 tnear = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), (float8)(0.0f)));
+    float8 tfar = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), (float8)(tmax)));
     tfar *= 1.0f + 2.0f * FLOAT_GAMMA(3);
-    return select((float4)(INFINITY), tnear, islessequal(tnear, tfar));
+    return select((float8)(INFINITY), tnear, islessequal(tnear, tfar));
 }
 
 /* Closest hit along origin + dir, t in (0, t_max). Children are visited nearest entry
@@ -139,18 +139,21 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
                 }
             }
         } else {
-            BvhNode node = nodes[cur.x];
-            float4 entry = ray_box_entry4(&r, &node, hit.t);
-            float e[4] = {entry.x, entry.y, entry.z, entry.w};
-            int index[4] = {node.index.x, node.index.y, node.index.z, node.index.w};
-            int count[4] = {node.count.x, node.count.y, node.count.z, node.count.w};
+            __global const BvhNode* node = &nodes[cur.x];
+            float8 entry = ray_box_entry8(&r, node, hit.t);
+            float e[8];
+            vstore8(entry, 0, e);
+            int8 idx8 = node->index, cnt8 = node->count;
+            int index[8], count[8];
+            vstore8(idx8, 0, index);
+            vstore8(cnt8, 0, count);
             /* Push every child the ray enters, farthest first, and continue with the
              * nearest (popped at once): a small insertion sort on the entry distance.
              * Unrolled, so that e, index and count stay in registers (PoCL kept the loop
              * and the arrays in memory; a compiler that ignores the pragma still runs it). */
             int base = sp;
 #pragma unroll
-            for (int j = 0; j < 4; ++j) {
+            for (int j = 0; j < 8; ++j) {
                 if (e[j] == INFINITY || index[j] < 0)
                     continue;
                 int k = sp++;
@@ -228,17 +231,19 @@ static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 d
                 }
             }
         } else {
-            BvhNode node = nodes[cur.x];
-            /* An empty slot's inverted box passes the slab test: its index (-1) tells. */
-            int4 enter = isnotequal(ray_box_entry4(&r, &node, t_max), (float4)(INFINITY)) & (node.index >= 0);
-            if (enter.x)
-                stack[sp++] = (int2)(node.index.x, node.count.x);
-            if (enter.y)
-                stack[sp++] = (int2)(node.index.y, node.count.y);
-            if (enter.z)
-                stack[sp++] = (int2)(node.index.z, node.count.z);
-            if (enter.w)
-                stack[sp++] = (int2)(node.index.w, node.count.w);
+            __global const BvhNode* node = &nodes[cur.x];
+            float8 entry = ray_box_entry8(&r, node, t_max);
+            float e[8];
+            vstore8(entry, 0, e);
+            int index[8], count[8];
+            vstore8(node->index, 0, index);
+            vstore8(node->count, 0, count);
+            /* Every child the ray enters, in slot order (unrolled, as above). An empty
+             * slot's inverted box passes the slab test: its index (-1) tells. */
+#pragma unroll
+            for (int j = 0; j < 8; ++j)
+                if (e[j] != INFINITY && index[j] >= 0)
+                    stack[sp++] = (int2)(index[j], count[j]);
         }
         if (sp == 0)
             return visibility;

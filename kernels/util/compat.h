@@ -16,6 +16,8 @@
 
 typedef float4 pcl_float4;
 typedef int4 pcl_int4;
+typedef float8 pcl_float8;
+typedef int8 pcl_int8;
 typedef int pcl_int;
 typedef uint pcl_uint;
 typedef ulong pcl_ulong;
@@ -41,6 +43,12 @@ typedef float3 pcl_real3;
 namespace pathcl {
 struct alignas(16) pcl_float4 {
     float x, y, z, w;
+};
+struct alignas(32) pcl_float8 {
+    float s[8];
+};
+struct alignas(32) pcl_int8 {
+    std::int32_t s[8];
 };
 struct alignas(16) pcl_int4 {
     std::int32_t x, y, z, w;
