@@ -182,7 +182,7 @@ struct Builder {
                 kids.push_back(c);
             }
         }
-        for (;;) {
+        while (fill) {
             int best = -1;
             float best_area = -1.0f;
             for (std::size_t i = 0; i < kids.size(); ++i)
@@ -196,7 +196,7 @@ struct Builder {
                         best = static_cast<int>(i);
                     }
                 }
-            if (best < 0 || !fill)
+            if (best < 0)
                 break;
             Child open = kids[static_cast<std::size_t>(best)];
             kids.erase(kids.begin() + best);
