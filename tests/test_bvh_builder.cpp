@@ -145,11 +145,12 @@ TEST(BvhBuilder, EightWideLevelsHalveTheDepthAndBoundTheStack)
 {
     // Slivers along x, each twice as long as the one before: SAH peels a few off at a
     // time, so the binary tree is deep and lopsided. Every eight-wide level spans at least
-    // two binary ones and pushes at most seven children. Where that would overflow the
-    // kernels' 128 entries the builder keeps at most four children per node, three pushes
-    // per level: 3 ceil(binary depth / 2) + 1 fits at the depth cap of 60. Broken variant
-    // seen failing: eight-wide nodes that take the binary node's children instead of its
-    // grandchildren (no halving).
+    // two binary ones. Where full nodes would overflow the kernels' 128 entries the
+    // builder keeps at most four children per node, three pushes per level, and that
+    // bound, 3 ceil(binary depth / 2) + 1, must fit at the depth cap of 60: checked here on
+    // the fallback's tree, reached with a stack one entry too small. Broken variant seen
+    // failing: nodes that take the binary node's children instead of its grandchildren
+    // (no halving in the fallback).
     std::vector<glm::vec3> v;
     for (int i = 0; i < 100; ++i) {
         float a = std::ldexp(1.0f, i), b = 2.0f * a;
@@ -161,6 +162,10 @@ TEST(BvhBuilder, EightWideLevelsHalveTheDepthAndBoundTheStack)
     EXPECT_GT(bvh.depth, 20);
     EXPECT_LE(bvh.wide_depth, (bvh.depth + 1) / 2 + 1);
     EXPECT_LE(bvh.stack_needed, (kBvhWidth - 1) * bvh.wide_depth);
+    Bvh four = build_bvh(in, bvh.stack_needed);
+    check_tree(four, in, false);
+    EXPECT_LE(four.wide_depth, (four.depth + 1) / 2 + 1);
+    EXPECT_LE(four.stack_needed, 3 * four.wide_depth);
     EXPECT_LE(3 * ((kBvhMaxDepth + 1) / 2 + 1) + 1, kBvhStackSize); // the fallback's bound at the depth cap
 }
 
