@@ -54,10 +54,11 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         if (depth >= frame.max_bounces || !surface_scatters(&s))
             break;
 
-        /* The bounce's decisions start at its own sampler dimension. One-sample MIS's coin
-         * is drawn only by that strategy. */
+        /* The bounce's decisions start at its own sampler dimension, their numbers drawn
+         * at once. One-sample MIS's coin is drawn only by that strategy. */
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
-        SamplerState sampler = frame_sampler(&frame, pixel, dims + DIM_TECHNIQUE);
+        SamplerState sampler = frame_sampler_bounce(&frame, pixel, dims);
+        sampler.dimension = dims + DIM_TECHNIQUE;
         bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
 #ifdef PATHCL_HAS_LIGHTS
         if (direct_light_wanted(&frame, &s, technique_light))

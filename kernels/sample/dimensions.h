@@ -19,4 +19,9 @@
 #define DIM_RR 7        /* 1: Russian roulette */
 #define DIM_BSDF_LOBE 8 /* 1: BSDF lobe */
 
+/* The offsets within a bounce where a 2D decision starts (the point on the light and the
+ * BSDF direction); the others are 1D decisions. The sampler draws a bounce's numbers at
+ * once by this layout (sample/sampler.cl, sampler_draw_bounce). */
+#define DIM_PAIRS_IN_BOUNCE ((1u << (DIM_LIGHT + 2)) | (1u << DIM_BSDF))
+
 #endif

@@ -43,6 +43,11 @@
 #include "types.h"
 #include "util/hash.cl"
 
+/* How many numbers sampler_draw_bounce draws at once: the first eight decisions of a
+ * bounce (the ninth, the lobe, is drawn alone). Eight 32-bit lanes are one AVX2 register;
+ * sixteen (AVX-512) ran 0.88x as fast on the development machine's Xeon (README "Speed"). */
+#define SAMPLER_LANES 8u
+
 typedef struct {
     uint pixel;
     uint sample;
@@ -53,6 +58,11 @@ typedef struct {
     uint sample_key;      /* hash of (seed, pixel, sample): every draw extends it by the dimension */
     uint set_key;         /* hash of (seed, pixel): the point sets' seeds extend it */
     uint stratified_dims; /* decisions at dimensions >= this take independent numbers */
+    /* A bounce's numbers drawn at once (sampler_draw_bounce): block[k] is the value at
+     * dimension block_start + k for k < block_count (0: no block), laid out as
+     * DIM_PAIRS_IN_BOUNCE says. */
+    uint block_start, block_count;
+    float block[SAMPLER_LANES];
 } SamplerState;
 
 /* A sampler state for (pixel, sample) starting at `dimension`. */
@@ -72,6 +82,8 @@ static inline SamplerState sampler_start_typed(uint type, uint spp, uint pixel, 
     s.sample_key = hash_combine(hash_combine(hash_u32(seed), pixel), sample);
     s.set_key = hash_combine(hash_u32(seed ^ 0x5bd1e995u), pixel);
     s.stratified_dims = 0xffffffffu;
+    s.block_start = 0u;
+    s.block_count = 0u;
     return s;
 }
 
@@ -93,6 +105,48 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
     SamplerState s =
         sampler_start_typed(frame->sampler, frame->spp, pixel, frame->sample_index, frame->seed, dimension);
     s.stratified_dims = frame->stratified_dims;
+    return s;
+}
+
+/* Draws the numbers of the decisions of the bounce whose dimensions start at `start` at
+ * once, SAMPLER_LANES of them in the lanes of a uint8, where the sampler is the independent one or Sobol'
+ * (or every decision of the bounce takes independent numbers); the others are drawn one
+ * by one when asked for. The values are those the decisions would get one by one, bit for
+ * bit (the same formulas, written once in util/hash.cl, sample/permute.cl and
+ * sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D decision's pair is one
+ * 2D set, its first number that of a 1D decision at the same dimension. On a CPU the
+ * lanes run as a few vector instructions where one by one the hashes, the permutations
+ * and the scrambles ran as scalar code per decision (README "Speed"). */
+static inline void sampler_draw_bounce(SamplerState* s, uint start)
+{
+    bool all_independent = s->type == SAMPLER_INDEPENDENT || start >= s->stratified_dims;
+    if (!all_independent && s->type != SAMPLER_SOBOL)
+        return;
+    uint8 lane = (uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u);
+    uint8 dim = (uint8)(start) + lane;
+    uint8 value = hash_combine_8((uint8)(s->sample_key), dim); /* the independent sampler's */
+    if (!all_independent) {
+        /* Sobol' (sampler_value_1d and _2d): a lane is its decision's first number or a
+         * pair's second, taken from the pair's set at the dimension before it. */
+        uint8 second = ((uint8)(DIM_PAIRS_IN_BOUNCE << 1) >> lane) & (uint8)(1u);
+        uint8 decision = dim - second;
+        uint8 set = hash_combine_8((uint8)(s->set_key), decision);
+        uint8 index = permute_element_8(s->sample, max(s->spp, 1u), hash_combine_8(set, (uint8)(0u)));
+        uint8 point = select(index, sobol_dimension1_reversed_u32_8(index), second != (uint8)(0u));
+        uint8 sobol = owen_scramble_reversed_u32_8(point, hash_combine_8(set, (uint8)(1u) + second));
+        value = select(value, sobol, decision < (uint8)(s->stratified_dims));
+    }
+    vstore8(convert_float8(value >> 8) * 0x1.0p-24f, 0, s->block); /* u32_to_unit_float */
+    s->block_start = start;
+    s->block_count = min((uint)DIMS_PER_BOUNCE, SAMPLER_LANES);
+}
+
+/* The sampler of a path's bounce whose decisions start at dimension `start`, its numbers
+ * drawn at once where sampler_draw_bounce can (the same values as frame_sampler's). */
+static inline SamplerState frame_sampler_bounce(const FrameParams* frame, uint pixel, uint start)
+{
+    SamplerState s = frame_sampler(frame, pixel, start);
+    sampler_draw_bounce(&s, start);
     return s;
 }
 
@@ -198,6 +252,9 @@ static inline float sampler_get_1d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 1u;
+    uint k = dim - s->block_start;                                     /* wraps below the block */
+    if (k < s->block_count && !((DIM_PAIRS_IN_BOUNCE << 1) >> k & 1u)) /* not a pair's second number */
+        return s->block[k];
     if (s->type == SAMPLER_INDEPENDENT || dim >= s->stratified_dims) /* kept small enough to inline */
         return u32_to_unit_float(hash_combine(s->sample_key, dim));
     return sampler_value_1d(s, dim);
@@ -208,6 +265,9 @@ static inline float2 sampler_get_2d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 2u;
+    uint k = dim - s->block_start;
+    if (k < s->block_count && (DIM_PAIRS_IN_BOUNCE >> k & 1u)) /* a pair of the layout */
+        return (float2)(s->block[k], s->block[k + 1u]);
     if (s->type == SAMPLER_INDEPENDENT || dim >= s->stratified_dims)
         return (float2)(u32_to_unit_float(hash_combine(s->sample_key, dim)),
                         u32_to_unit_float(hash_combine(s->sample_key, dim + 1u)));

@@ -48,3 +48,39 @@ __kernel void test_frame_sampler(FrameParams frame, uint dim, __global float2* o
     SamplerState s = frame_sampler(&frame, pixel, dim);
     out[pixel] = sampler_get_2d(&s);
 }
+
+/* A bounce's numbers drawn at once (frame_sampler_bounce) against the same decisions drawn
+ * one by one (frame_sampler), for every pixel (one work-item each), the bounce's decisions
+ * starting at `start`. Per pixel, 2 * DIMS_PER_BOUNCE values each way: first the
+ * decisions as a path draws them (a 2D pair at each start DIM_PAIRS_IN_BOUNCE names, 1D
+ * elsewhere), then a 1D decision at every offset (a pair's second offset included, where
+ * the drawn state must fall back to drawing alone); count[pixel] = how many numbers the
+ * state drew at once. */
+__kernel void test_sampler_draw_bounce(FrameParams frame, uint start, __global float* at_once,
+                                       __global float* one_by_one, __global uint* count)
+{
+    uint pixel = get_global_id(0);
+    SamplerState a = frame_sampler_bounce(&frame, pixel, start);
+    SamplerState b = frame_sampler(&frame, pixel, start);
+    count[pixel] = a.block_count;
+    uint o = pixel * 2u * DIMS_PER_BOUNCE;
+    for (uint k = 0u; k < DIMS_PER_BOUNCE; ++k) {
+        a.dimension = b.dimension = start + k;
+        if (DIM_PAIRS_IN_BOUNCE >> k & 1u) {
+            float2 x = sampler_get_2d(&a), y = sampler_get_2d(&b);
+            at_once[o + k] = x.x;
+            at_once[o + k + 1u] = x.y;
+            one_by_one[o + k] = y.x;
+            one_by_one[o + k + 1u] = y.y;
+            ++k;
+        } else {
+            at_once[o + k] = sampler_get_1d(&a);
+            one_by_one[o + k] = sampler_get_1d(&b);
+        }
+    }
+    for (uint k = 0u; k < DIMS_PER_BOUNCE; ++k) {
+        a.dimension = b.dimension = start + k;
+        at_once[o + DIMS_PER_BOUNCE + k] = sampler_get_1d(&a);
+        one_by_one[o + DIMS_PER_BOUNCE + k] = sampler_get_1d(&b);
+    }
+}
