@@ -20,8 +20,12 @@
 static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 wo, bool technique_light, uint dims,
                                   SamplerState* sampler)
 {
+#ifdef PATHCL_FULL_BSDF
     sampler->dimension = dims + DIM_BSDF_LOBE;
     float u_lobe = sampler_get_1d(sampler);
+#else
+    float u_lobe = 0.0f; /* one lobe: nothing to pick (no sampler number spent on it) */
+#endif
     sampler->dimension = dims + DIM_BSDF;
     BsdfSample bs = bsdf_sample(&s->bsdf, &s->sp, wo, u_lobe, sampler_get_2d(sampler));
     if (!(bs.pdf > 0.0f))
