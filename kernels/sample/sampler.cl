@@ -98,8 +98,8 @@ static inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uin
  * decisions at dimensions below frame->stratified_dims (the camera's and those of the
  * first bounces) take the sampler's stratified sets, the deeper ones independent numbers.
  * Nearly all of a stratified sampler's gain is in the first bounce's decisions (direct
- * light at the first hit), while every stratified decision costs about six times an
- * independent one (README "Samplers"). */
+ * light at the first hit), while every stratified decision costs more than an
+ * independent one (README "What accuracy costs": stratified bounces). */
 static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, uint dimension)
 {
     SamplerState s =
