@@ -45,7 +45,8 @@
 
 /* How many numbers sampler_draw_bounce draws at once: the first eight decisions of a
  * bounce (the ninth, the lobe, is drawn alone). Eight 32-bit lanes are one AVX2 register;
- * sixteen (AVX-512) ran 0.88x as fast on the development machine's Xeon (README "Speed"). */
+ * sixteen (AVX-512) ran 0.87-0.92x as fast on the development machine's Xeon (README
+ * "Speed"). */
 #define SAMPLER_LANES 8u
 
 typedef struct {
@@ -109,9 +110,9 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
 }
 
 /* Draws the numbers of the decisions of the bounce whose dimensions start at `start` at
- * once, SAMPLER_LANES of them in the lanes of a uint8, where the sampler is the independent one or Sobol'
- * (or every decision of the bounce takes independent numbers); the others are drawn one
- * by one when asked for. The values are those the decisions would get one by one, bit for
+ * once, SAMPLER_LANES of them in the lanes of a uint8, where the sampler is the
+ * independent one or Sobol' (or every decision of the bounce takes independent numbers);
+ * the others are drawn one by one when asked for. The values are those the decisions would get one by one, bit for
  * bit (the same formulas, written once in util/hash.cl, sample/permute.cl and
  * sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D decision's pair is one
  * 2D set, its first number that of a 1D decision at the same dimension. On a CPU the

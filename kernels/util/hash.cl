@@ -4,7 +4,7 @@
 
 /* The hashes below are written once as statements on a variable of type uint or of a
  * uint vector type (HASH_*), for the scalar functions and for the lanes versions that
- * draw a bounce's numbers sixteen at a time (sample/sampler.cl): the same arithmetic lane
+ * draw a bounce's numbers eight at a time (sample/sampler.cl): the same arithmetic lane
  * for lane, so either gives the same bits. */
 
 /* A full-avalanche 32-bit mix (the "lowbias32" hash by Chris Wellons). */
