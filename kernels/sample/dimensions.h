@@ -23,5 +23,7 @@
  * BSDF direction); the others are 1D decisions. The sampler draws a bounce's numbers at
  * once by this layout (sample/sampler.cl, sampler_draw_bounce). */
 #define DIM_PAIRS_IN_BOUNCE ((1u << (DIM_LIGHT + 2)) | (1u << DIM_BSDF))
+/* The offsets that hold the second number of such a pair. */
+#define DIM_PAIR_SECONDS_IN_BOUNCE (DIM_PAIRS_IN_BOUNCE << 1)
 
 #endif

@@ -112,10 +112,11 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
 /* Draws the numbers of the decisions of the bounce whose dimensions start at `start` at
  * once, SAMPLER_LANES of them in the lanes of a uint8, where the sampler is the
  * independent one or Sobol' (or every decision of the bounce takes independent numbers);
- * the others are drawn one by one when asked for. The values are those the decisions would get one by one, bit for
- * bit (the same formulas, written once in util/hash.cl, sample/permute.cl and
- * sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D decision's pair is one
- * 2D set, its first number that of a 1D decision at the same dimension. On a CPU the
+ * the others are drawn one by one when asked for. The values are those the decisions
+ * would get one by one, bit for bit (the same formulas, written once in util/hash.cl,
+ * sample/permute.cl and sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D
+ * decision's pair is one 2D set, its first number that of a 1D decision at the same
+ * dimension. On a CPU the
  * lanes run as a few vector instructions where one by one the hashes, the permutations
  * and the scrambles ran as scalar code per decision (README "Speed"). */
 static inline void sampler_draw_bounce(SamplerState* s, uint start)
@@ -129,7 +130,7 @@ static inline void sampler_draw_bounce(SamplerState* s, uint start)
     if (!all_independent) {
         /* Sobol' (sampler_value_1d and _2d): a lane is its decision's first number or a
          * pair's second, taken from the pair's set at the dimension before it. */
-        uint8 second = ((uint8)(DIM_PAIRS_IN_BOUNCE << 1) >> lane) & (uint8)(1u);
+        uint8 second = ((uint8)(DIM_PAIR_SECONDS_IN_BOUNCE) >> lane) & (uint8)(1u);
         uint8 decision = dim - second;
         uint8 set = hash_combine_8((uint8)(s->set_key), decision);
         uint8 index = permute_element_8(s->sample, max(s->spp, 1u), hash_combine_8(set, (uint8)(0u)));
@@ -254,7 +255,7 @@ static inline float sampler_get_1d(SamplerState* s)
     uint dim = s->dimension;
     s->dimension += 1u;
     uint k = dim - s->block_start;                                     /* wraps below the block */
-    if (k < s->block_count && !((DIM_PAIRS_IN_BOUNCE << 1) >> k & 1u)) /* not a pair's second number */
+    if (k < s->block_count && !(DIM_PAIR_SECONDS_IN_BOUNCE >> k & 1u)) /* not a pair's second number */
         return s->block[k];
     if (s->type == SAMPLER_INDEPENDENT || dim >= s->stratified_dims) /* kept small enough to inline */
         return u32_to_unit_float(hash_combine(s->sample_key, dim));
