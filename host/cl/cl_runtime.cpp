@@ -140,7 +140,8 @@ std::string base_build_options(const DeviceInfo& device, const std::string& opti
     return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "");
 }
 
-ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& program_source)
+ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& program_source,
+                           CacheStore store)
 {
     auto start = std::chrono::steady_clock::now();
     std::string source = assemble_kernel_source(program_source);
@@ -177,16 +178,27 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
                         " (full build log: " + save_build_log(log) + ")");
         }
         result.program = program;
-        try {
-            auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
-            if (binaries.size() == 1 && program_source.use_cache)
-                program_cache_store(key, binaries[0]);
-        } catch (const cl::Error&) {
-            // Some drivers cannot return binaries; caching is only an optimization.
-        }
+        result.store_pending = program_source.use_cache;
+        if (store == CacheStore::AtBuild)
+            store_pending_program(result);
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+void store_pending_program(ProgramBuild& build) noexcept
+{
+    if (!build.store_pending)
+        return;
+    build.store_pending = false;
+    try {
+        auto binaries = build.program.getInfo<CL_PROGRAM_BINARIES>();
+        if (binaries.size() == 1)
+            program_cache_store(build.cache_key, binaries[0]);
+    } catch (...) {
+        // Some drivers cannot return binaries (cl::Error), or memory ran out; caching is
+        // only an optimization.
+    }
 }
 
 } // namespace pathcl

@@ -40,15 +40,27 @@ ClDevice open_device(int index);
 
 struct ProgramBuild {
     cl::Program program;
-    double seconds = 0.0;    // wall time to get a ready program (compile or cache load)
-    bool from_cache = false; // loaded from pathcl's binary cache
-    std::string cache_key;   // its key in that cache (host/cl/program_cache.h)
+    double seconds = 0.0;       // wall time to get a ready program (compile or cache load)
+    bool from_cache = false;    // loaded from pathcl's binary cache
+    std::string cache_key;      // its key in that cache (host/cl/program_cache.h)
+    bool store_pending = false; // compiled with CacheStore::Deferred, not stored yet
 };
+
+// When a compiled program goes into pathcl's binary cache. Fetching the binary is not
+// free: PoCL compiles every kernel once more to produce it (1.4 s of the Cornell box's
+// 3.4 s cold render on the development machine), so a render defers it until its image
+// is written, and a full disk fails the render at its outputs, not in the cache.
+enum class CacheStore { AtBuild, Deferred };
 
 // Builds the program assembled from `source` (by default the render program,
 // kernels/program.cl) with `options` (the feature define). Compile failures throw
 // pathcl::Error naming the first error line of the build log.
-ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& source = {});
+ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& source = {},
+                           CacheStore store = CacheStore::AtBuild);
+
+// Stores a build's program in pathcl's binary cache if it is pending (compiled, store
+// deferred), once. Never throws: a failed store only costs the next run a compile.
+void store_pending_program(ProgramBuild& build) noexcept;
 
 // The option `--fast-math` adds to a program's build options.
 inline constexpr const char* kUnsafeMathOption = "-cl-unsafe-math-optimizations";

@@ -271,6 +271,7 @@ int run_render(RenderRequest rq)
         write_ray_log_file(staged.stage(rq.ray_log), rq.ray_log, r.camera_rays);
     staged.commit();
     print_summary(rq, r);
+    renderer.store_programs(); // after the image: a cold render shows it a second sooner
     return r.stats.stop == StopReason::Interrupted ? interrupted_exit_code() : 0;
 }
 

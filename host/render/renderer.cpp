@@ -64,7 +64,7 @@ using PassFinishes = std::vector<std::shared_ptr<PassFinish>>; // one per event 
 // Everything one device holds for a render.
 struct DeviceRender {
     ClDevice dev;
-    cl::Program program;
+    ProgramBuild build;
     cl::Kernel camera_kernel, path_kernel, clear_kernel;
     DeviceArrays arrays;
     Tile tile{8, 8};
@@ -143,14 +143,15 @@ struct Renderer::Impl {
         check_device_memory(dr->dev, compiled.arrays, pixels()); // before the program is built
         ProgramSource source;
         source.patches = options.kernel_patches;
-        ProgramBuild pb = build_program(dr->dev, program_build_options(compiled.features, options), source);
-        setup.kernel_build_seconds += pb.seconds;
-        setup.kernel_from_cache = setup.kernel_from_cache && pb.from_cache;
+        dr->build =
+            build_program(dr->dev, program_build_options(compiled.features, options), source, CacheStore::Deferred);
+        setup.kernel_build_seconds += dr->build.seconds;
+        setup.kernel_from_cache = setup.kernel_from_cache && dr->build.from_cache;
         try {
-            dr->program = pb.program;
-            dr->camera_kernel = cl::Kernel(dr->program, "generate_camera_rays");
-            dr->path_kernel = cl::Kernel(dr->program, "trace_paths");
-            dr->clear_kernel = cl::Kernel(dr->program, "clear_film");
+            const cl::Program& program = dr->build.program;
+            dr->camera_kernel = cl::Kernel(program, "generate_camera_rays");
+            dr->path_kernel = cl::Kernel(program, "trace_paths");
+            dr->clear_kernel = cl::Kernel(program, "clear_film");
             dr->arrays = upload_arrays(dr->dev, compiled.arrays, pixels());
             auto max_items = [&](const cl::Kernel& k) {
                 return k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dr->dev.device);
@@ -653,7 +654,16 @@ struct Renderer::Impl {
 Renderer::Renderer(const Scene& scene, const RenderOptions& options) : impl_(std::make_unique<Impl>(scene, options))
 {}
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer()
+{
+    store_programs();
+}
+
+void Renderer::store_programs() noexcept
+{
+    for (auto& dr : impl_->devices)
+        store_pending_program(dr->build);
+}
 
 std::uint32_t Renderer::spp() const
 {

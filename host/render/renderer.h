@@ -94,7 +94,7 @@ public:
     // Compiles the scene, opens the devices, builds (or loads) the program and uploads
     // everything; throws pathcl::Error for bad options or a failing device.
     Renderer(const Scene& scene, const RenderOptions& options);
-    ~Renderer();
+    ~Renderer(); // stores the programs (store_programs)
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
@@ -110,6 +110,11 @@ public:
     RenderResult render(const RenderRun& run);
     RenderResult render(std::uint32_t seed, const ProgressCallback& progress = {});
     RenderResult render(); // with the options' seed
+
+    // Stores the programs this renderer compiled in pathcl's binary cache (CacheStore:
+    // deferred so that a cold render writes its image first); the destructor does it for
+    // a caller that does not. Never throws.
+    void store_programs() noexcept;
 
 private:
     struct Impl;
