@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "cl/program_cache.h"
+#include "support/scoped_env.h"
 
 namespace pathcl {
 namespace {
@@ -57,23 +58,18 @@ protected:
         fs::remove_all(root_);
         dir_ = root_ / "cache";
         fs::create_directories(dir_);
-        if (const char* old = std::getenv("PATHCL_CACHE_DIR"))
-            saved_ = old;
-        set_cache_dir(dir_);
+        cache_env_.emplace("PATHCL_CACHE_DIR", dir_.string());
     }
 
     void TearDown() override
     {
-        if (saved_)
-            ::setenv("PATHCL_CACHE_DIR", saved_->c_str(), 1);
-        else
-            ::unsetenv("PATHCL_CACHE_DIR");
+        cache_env_.reset();
         std::error_code ec;
         fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ec);
         fs::remove_all(root_, ec);
     }
 
-    static void set_cache_dir(const fs::path& d) { ::setenv("PATHCL_CACHE_DIR", d.c_str(), 1); }
+    void set_cache_dir(const fs::path& d) { cache_env_->set(d.string()); }
 
     fs::path entry(const std::string& key) const { return dir_ / (key + ".bin"); }
 
@@ -92,7 +88,7 @@ protected:
     const Bytes binary_a_ = pseudo_random_bytes(4096, 1);
     const Bytes binary_b_ = pseudo_random_bytes(4096, 2);
     fs::path root_, dir_;
-    std::optional<std::string> saved_;
+    std::optional<test::ScopedEnv> cache_env_;
 };
 
 TEST_F(ProgramCache, StoreThenLoadRoundTrips)

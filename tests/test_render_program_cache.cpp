@@ -1,7 +1,6 @@
 // A Renderer puts the program it compiled into pathcl's binary cache only after its
 // render, when asked (store_programs) or when it is destroyed: fetching the binary costs
 // PoCL a second compile, which a cold render must not spend before its image.
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -12,6 +11,7 @@
 
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "support/scoped_env.h"
 
 namespace pathcl {
 namespace {
@@ -27,19 +27,14 @@ protected:
         dir_ = fs::temp_directory_path() / ("pathcl-render-cache-" + std::to_string(::getpid()) + "-" + info->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
-        if (const char* old = std::getenv("PATHCL_CACHE_DIR"))
-            saved_ = old;
-        ::setenv("PATHCL_CACHE_DIR", dir_.c_str(), 1);
+        cache_env_.emplace("PATHCL_CACHE_DIR", dir_.string());
         options_.width = options_.height = 8;
         options_.spp = 1;
     }
 
     void TearDown() override
     {
-        if (saved_)
-            ::setenv("PATHCL_CACHE_DIR", saved_->c_str(), 1);
-        else
-            ::unsetenv("PATHCL_CACHE_DIR");
+        cache_env_.reset();
         std::error_code ec;
         fs::remove_all(dir_, ec);
     }
@@ -55,7 +50,7 @@ protected:
     const Scene scene_ = load_gltf(std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box.gltf");
     RenderOptions options_;
     fs::path dir_;
-    std::optional<std::string> saved_;
+    std::optional<test::ScopedEnv> cache_env_;
 };
 
 // Broken variant seen to fail: the Renderer's build storing at once (CacheStore::AtBuild).
