@@ -12,12 +12,13 @@
 #define DIM_PATH_START 4
 #define DIMS_PER_BOUNCE 9
 
-/* Offsets within a bounce. */
-#define DIM_TECHNIQUE 0 /* 1: one-sample MIS's coin */
+/* Offsets within a bounce. The sampler draws the first eight at once (sampler.cl), so
+ * the one decision that the default strategy never makes, one-sample MIS's coin, is last. */
+#define DIM_BSDF_LOBE 0 /* 1: BSDF lobe */
 #define DIM_LIGHT 1     /* 4: light pick (index, alias coin) and the point on it (2) */
 #define DIM_BSDF 5      /* 2: BSDF direction */
 #define DIM_RR 7        /* 1: Russian roulette */
-#define DIM_BSDF_LOBE 8 /* 1: BSDF lobe */
+#define DIM_TECHNIQUE 8 /* 1: one-sample MIS's coin */
 
 /* The offsets within a bounce where a 2D decision starts (the point on the light and the
  * BSDF direction); the others are 1D decisions. The sampler draws a bounce's numbers at
