@@ -111,9 +111,9 @@ public:
     RenderResult render(std::uint32_t seed, const ProgressCallback& progress = {});
     RenderResult render(); // with the options' seed
 
-    // Stores the programs this renderer compiled in pathcl's binary cache (CacheStore:
-    // deferred so that a cold render writes its image first); the destructor does it for
-    // a caller that does not. Never throws.
+    // Stores the programs this renderer compiled in pathcl's binary cache. They are built
+    // with CacheStore::Deferred so that a cold render can write its image first; the
+    // destructor stores them for a caller that does not. Never throws.
     void store_programs() noexcept;
 
 private:
