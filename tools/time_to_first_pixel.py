@@ -28,17 +28,21 @@ def one_run(pathcl, scene, warm, no_pocl_cache):
         if warm:
             subprocess.run(cmd, env=env, check=True, capture_output=True)
             os.remove(image)
-        start = time.monotonic()
-        proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-        seen = None
-        while proc.poll() is None:
-            if seen is None and os.path.exists(image):
-                seen = time.monotonic() - start
-            time.sleep(0.002)
-        ended = time.monotonic() - start
-        if proc.returncode != 0:
-            sys.exit(f"time_to_first_pixel.py: {scene}: pathcl exited {proc.returncode}: "
-                     f"{proc.stderr.read().decode(errors='replace').strip()}")
+        # stderr to a file, not a pipe: nobody reads a pipe while polling, and a full one
+        # would stall pathcl.
+        with open(os.path.join(work, "stderr.txt"), "w+b") as err:
+            start = time.monotonic()
+            proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=err)
+            seen = None
+            while proc.poll() is None:
+                if seen is None and os.path.exists(image):
+                    seen = time.monotonic() - start
+                time.sleep(0.002)
+            ended = time.monotonic() - start
+            if proc.returncode != 0:
+                err.seek(0)
+                sys.exit(f"time_to_first_pixel.py: {scene}: pathcl exited {proc.returncode}: "
+                         f"{err.read().decode(errors='replace').strip()}")
         return (seen if seen is not None else ended), ended
     finally:
         shutil.rmtree(work, ignore_errors=True)

@@ -116,9 +116,9 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
  * would get one by one, bit for bit (the same formulas, written once in util/hash.cl,
  * sample/permute.cl and sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D
  * decision's pair is one 2D set, its first number that of a 1D decision at the same
- * dimension. On a CPU the
- * lanes run as a few vector instructions where one by one the hashes, the permutations
- * and the scrambles ran as scalar code per decision (README "Speed"). */
+ * dimension. On a CPU the lanes run as a few vector instructions where one by one the
+ * hashes, the permutations and the scrambles ran as scalar code per decision (README
+ * "Speed"). */
 static inline void sampler_draw_bounce(SamplerState* s, uint start)
 {
     bool all_independent = s->type == SAMPLER_INDEPENDENT || start >= s->stratified_dims;
