@@ -167,7 +167,7 @@ TEST(FilmAccumulator, BatchesSplitOverFilmsAndMergedGiveTheSameState)
         px.sum_sq = {v * v * 16, 4 * v * v * 16, 9e6f * v * v * 16, 16};
         FilmSum s(1);
         s.add({px}, {static_cast<pcl_uint>(b % 2)});
-        batches.push_back(s);
+        batches.push_back(std::move(s));
     }
     FilmAccumulator whole(1, 16), first(1, 16), second(1, 16);
     for (int b = 0; b < 9; ++b) {

@@ -46,19 +46,23 @@ int run_bench(BenchRequest rq)
         std::printf(" | texels %.1f KiB", static_cast<double>(setup.texel_bytes) / 1024.0);
     std::printf("\n");
     renderer.render(0); // warm-up: the driver's first launch compiles the kernels' machine code
-    std::vector<double> rates, seconds;
+    std::vector<double> rates, seconds, film_seconds;
     for (int i = 0; i < rq.runs; ++i) {
         RenderResult r = renderer.render(static_cast<std::uint32_t>(i));
         rates.push_back(r.stats.samples_per_second);
         seconds.push_back(r.stats.render_seconds);
+        film_seconds.push_back(r.stats.film_seconds);
     }
     std::sort(rates.begin(), rates.end());
     std::sort(seconds.begin(), seconds.end());
+    std::sort(film_seconds.begin(), film_seconds.end());
     std::size_t mid = rates.size() / 2;
     std::printf("%ux%u, %u spp, max bounces %u, %d runs: samples/s min %.4g median %.4g max %.4g | "
-                "render s min %.3f median %.3f max %.3f\n",
+                "render s min %.3f median %.3f max %.3f | of which film readback and sums s min %.3f median "
+                "%.3f max %.3f\n",
                 rq.options.width, rq.options.height, renderer.spp(), rq.options.max_bounces, rq.runs, rates.front(),
-                rates[mid], rates.back(), seconds.front(), seconds[mid], seconds.back());
+                rates[mid], rates.back(), seconds.front(), seconds[mid], seconds.back(), film_seconds.front(),
+                film_seconds[mid], film_seconds.back());
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "common/error.h"
+#include "common/parallel.h"
 
 namespace pathcl {
 
@@ -28,23 +29,31 @@ void check_host_memory(double needed, double available)
     }
 }
 
-FilmSum::FilmSum(std::size_t pixels) : sum_(pixels * 4, 0.0), sum_sq_(pixels * 4, 0.0)
-{}
+FilmSum::FilmSum(std::size_t pixels) : sum_(new double[pixels * 4]), sum_sq_(new double[pixels * 4])
+{
+    parallel_chunks(pixels, [&](std::size_t begin, std::size_t end) {
+        std::fill(&sum_[begin * 4], &sum_[end * 4], 0.0);
+        std::fill(&sum_sq_[begin * 4], &sum_sq_[end * 4], 0.0);
+    });
+}
 
 void FilmSum::add(const std::vector<FilmPixel>& film, const std::vector<pcl_uint>& bad_samples)
 {
-    for (std::size_t i = 0; i < film.size(); ++i) {
-        const FilmPixel& f = film[i];
-        const float* s = &f.sum.x;
-        const float* sc = &f.sum_compensation.x;
-        const float* q = &f.sum_sq.x;
-        const float* qc = &f.sum_sq_compensation.x;
-        for (int c = 0; c < 4; ++c) {
-            sum_[i * 4 + c] += static_cast<double>(s[c]) + static_cast<double>(sc[c]);
-            sum_sq_[i * 4 + c] += static_cast<double>(q[c]) + static_cast<double>(qc[c]);
+    parallel_chunks(film.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const FilmPixel& f = film[i];
+            const float* s = &f.sum.x;
+            const float* sc = &f.sum_compensation.x;
+            const float* q = &f.sum_sq.x;
+            const float* qc = &f.sum_sq_compensation.x;
+            for (int c = 0; c < 4; ++c) {
+                sum_[i * 4 + c] += static_cast<double>(s[c]) + static_cast<double>(sc[c]);
+                sum_sq_[i * 4 + c] += static_cast<double>(q[c]) + static_cast<double>(qc[c]);
+            }
         }
-        bad_ += bad_samples[i];
-    }
+    });
+    for (pcl_uint n : bad_samples)
+        bad_ += n;
 }
 
 FilmAccumulator::FilmAccumulator(std::size_t pixels, std::uint32_t batch_spp) : batch_spp_(batch_spp)
@@ -78,41 +87,47 @@ Image FilmAccumulator::image(std::uint32_t width, std::uint32_t height, std::uin
     img.spp = spp;
     img.rgb.resize(pixels * 3);
     img.variance.resize(pixels * 3);
-    for (std::size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c) {
-            const Moments m = moments(i, c);
-            img.rgb[i * 3 + c] = static_cast<float>(m.mean);
-            img.variance[i * 3 + c] = static_cast<float>(m.variance);
-        }
+    parallel_chunks(pixels, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            for (int c = 0; c < 3; ++c) {
+                const Moments m = moments(i, c);
+                img.rgb[i * 3 + c] = static_cast<float>(m.mean);
+                img.variance[i * 3 + c] = static_cast<float>(m.variance);
+            }
+    });
     return img;
 }
 
 void FilmAccumulator::add_to_total(const FilmSum& batch)
 {
-    for (std::size_t i = 0; i < state_.samples.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            state_.sum[i * 3 + c].add(batch.sum_[i * 4 + c]);
-            state_.sum_sq[i * 3 + c].add(batch.sum_sq_[i * 4 + c]);
+    parallel_chunks(state_.samples.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                state_.sum[i * 3 + c].add(batch.sum_[i * 4 + c]);
+                state_.sum_sq[i * 3 + c].add(batch.sum_sq_[i * 4 + c]);
+            }
+            state_.samples[i] += batch.sum_[i * 4 + 3]; // whole numbers: exact in any order
         }
-        state_.samples[i] += batch.sum_[i * 4 + 3]; // whole numbers: exact in any order
-    }
+    });
     state_.bad += batch.bad_;
 }
 
 void FilmAccumulator::add_batch(const FilmSum& batch)
 {
     add_to_total(batch);
-    for (std::size_t i = 0; i < state_.pixel_batches.size(); ++i) {
-        double n = batch.sum_[i * 4 + 3];
-        if (!(n > 0.0))
-            continue; // the pixel took no sample in this batch (adaptive sampling)
-        ++state_.pixel_batches[i];
-        for (int c = 0; c < 3; ++c) {
-            double m = batch.sum_[i * 4 + c] / n;
-            state_.batch_mean_sum[i * 3 + c].add(m);
-            state_.batch_mean_sq[i * 3 + c].add(m * m);
+    parallel_chunks(state_.pixel_batches.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            double n = batch.sum_[i * 4 + 3];
+            if (!(n > 0.0))
+                continue; // the pixel took no sample in this batch (adaptive sampling)
+            ++state_.pixel_batches[i];
+            for (int c = 0; c < 3; ++c) {
+                double m = batch.sum_[i * 4 + c] / n;
+                state_.batch_mean_sum[i * 3 + c].add(m);
+                state_.batch_mean_sq[i * 3 + c].add(m * m);
+            }
         }
-    }
+    });
     ++state_.batches;
 }
 
@@ -138,12 +153,14 @@ void FilmAccumulator::restore(State s)
 void FilmAccumulator::merge(const State& s)
 {
     check_sizes(s);
-    for (std::size_t i = 0; i < state_.sum.size(); ++i) {
-        state_.sum[i].add(s.sum[i]);
-        state_.sum_sq[i].add(s.sum_sq[i]);
-        state_.batch_mean_sum[i].add(s.batch_mean_sum[i]);
-        state_.batch_mean_sq[i].add(s.batch_mean_sq[i]);
-    }
+    parallel_chunks(state_.sum.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            state_.sum[i].add(s.sum[i]);
+            state_.sum_sq[i].add(s.sum_sq[i]);
+            state_.batch_mean_sum[i].add(s.batch_mean_sum[i]);
+            state_.batch_mean_sq[i].add(s.batch_mean_sq[i]);
+        }
+    });
     for (std::size_t i = 0; i < state_.samples.size(); ++i) {
         state_.samples[i] += s.samples[i];
         state_.pixel_batches[i] += s.pixel_batches[i];
@@ -179,34 +196,53 @@ double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
     return std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
 }
 
-double FilmAccumulator::relmse_estimate() const
+double FilmAccumulator::mean_of_pixel_terms(const std::function<bool(std::size_t, double*)>& pixel_terms) const
 {
+    // The terms are computed on every core, then summed in pixel and channel order: the
+    // same double, bit for bit, as one serial loop.
+    const std::size_t pixels = state_.samples.size();
+    std::vector<double> term(pixels * 3);
+    std::vector<unsigned char> counted(pixels);
+    parallel_chunks(pixels, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            counted[i] = pixel_terms(i, &term[i * 3]) ? 1 : 0;
+    });
     double sum = 0.0;
     std::size_t terms = 0;
-    for (std::size_t i = 0; i < state_.pixel_batches.size(); ++i) {
-        if (state_.pixel_batches[i] < 2)
+    for (std::size_t i = 0; i < pixels; ++i) {
+        if (!counted[i])
             continue;
         for (int c = 0; c < 3; ++c)
-            sum += pixel_channel_estimate(i, c);
+            sum += term[i * 3 + c];
         terms += 3;
     }
-    return terms > 0 && state_.batches >= 2 ? sum / static_cast<double>(terms) : -1.0;
+    return terms > 0 ? sum / static_cast<double>(terms) : -1.0;
+}
+
+double FilmAccumulator::relmse_estimate() const
+{
+    if (state_.batches < 2)
+        return -1.0;
+    return mean_of_pixel_terms([this](std::size_t i, double* t) {
+        if (state_.pixel_batches[i] < 2)
+            return false;
+        for (int c = 0; c < 3; ++c)
+            t[c] = pixel_channel_estimate(i, c);
+        return true;
+    });
 }
 
 double FilmAccumulator::per_sample_relmse_estimate() const
 {
-    double sum = 0.0;
-    std::size_t terms = 0;
-    for (std::size_t i = 0; i < state_.samples.size(); ++i) {
+    return mean_of_pixel_terms([this](std::size_t i, double* t) {
         if (!(state_.samples[i] > 1.0))
-            continue;
+            return false;
         for (int c = 0; c < 3; ++c) {
             const Moments m = moments(i, c);
-            sum += m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
+            t[c] = m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
         }
-        terms += 3;
-    }
-    return terms > 0 ? sum / static_cast<double>(terms) : -1.0;
+        return true;
+    });
 }
 
 } // namespace pathcl

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "image/image.h"
@@ -38,7 +40,9 @@ public:
 
 private:
     friend class FilmAccumulator;
-    std::vector<double> sum_, sum_sq_; // four channels per pixel: rgb and the sample count
+    // Four channels per pixel: rgb and the sample count. Not std::vector: its zeroing is
+    // one thread's, page faults included; these are zeroed on every core.
+    std::unique_ptr<double[]> sum_, sum_sq_;
     std::uint64_t bad_ = 0;
 };
 
@@ -100,6 +104,9 @@ private:
     Moments moments(std::size_t pixel, int channel) const;
     void add_to_total(const FilmSum& batch);
     double pixel_channel_estimate(std::size_t i, int c) const;
+    // The mean of every pixel's three terms, over the pixels for which pixel_terms(i,
+    // terms) returns true; -1 when there are none.
+    double mean_of_pixel_terms(const std::function<bool(std::size_t, double*)>& pixel_terms) const;
     void check_sizes(const State& other) const;
 
     std::uint32_t batch_spp_;

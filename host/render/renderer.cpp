@@ -114,6 +114,8 @@ struct Renderer::Impl {
     RenderStats setup;
     FrameParams frame{};
     std::vector<std::unique_ptr<DeviceRender>> devices;
+    std::vector<FilmPixel> film_readback; // read_films's host copies of one device's film
+    std::vector<pcl_uint> bad_readback;
 
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
@@ -334,13 +336,16 @@ struct Renderer::Impl {
     FilmSum read_films()
     {
         FilmSum sum(pixels());
-        std::vector<FilmPixel> film(pixels());
-        std::vector<pcl_uint> bad(pixels());
+        // Kept from batch to batch and render to render: a fresh 68 bytes a pixel would
+        // be page-faulted in again by the read, on one thread.
+        film_readback.resize(pixels());
+        bad_readback.resize(pixels());
         for (auto& dr : devices) {
-            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel), film.data());
+            dr->dev.queue.enqueueReadBuffer(dr->arrays.film, CL_TRUE, 0, pixels() * sizeof(FilmPixel),
+                                            film_readback.data());
             dr->dev.queue.enqueueReadBuffer(dr->arrays.bad_samples, CL_TRUE, 0, pixels() * sizeof(pcl_uint),
-                                            bad.data());
-            sum.add(film, bad);
+                                            bad_readback.data());
+            sum.add(film_readback, bad_readback);
         }
         return sum;
     }
@@ -588,14 +593,20 @@ struct Renderer::Impl {
                         finish_oldest();
                 }
                 drain();
+                auto film_start = Clock::now();
                 FilmSum sum = read_films();
+                stats.film_seconds += seconds_since(film_start);
                 if (s < passes) {
                     if (checkpoints) // stopped early: the state to resume from
                         run.checkpoint(capture(key, b, s, spp_done, samples, acc, active));
+                    film_start = Clock::now();
                     acc.add_partial_batch(sum);
+                    stats.film_seconds += seconds_since(film_start);
                     break;
                 }
+                film_start = Clock::now();
                 acc.add_batch(sum);
+                stats.film_seconds += seconds_since(film_start);
                 if (checkpoints && stop && b + 1 < plan.batch_count()) {
                     clear_films();
                     run.checkpoint(capture(key, b + 1, 0, spp_done, samples, acc, active));
