@@ -2,7 +2,8 @@
 # tools/portable_bundle.py, the way pathcl reaches a machine without Debian's packages (a
 # GPU node): the bundle's binaries load no library from outside it but the system's C and
 # C++ runtimes, OpenImageIO's video and VDB libraries are stubs, and the bundled pathcl
-# renders and writes PNG and EXR through the bundled OpenImageIO.
+# renders and writes PNG and EXR through the bundled OpenImageIO, and plots through the
+# bundled PLplot driver.
 #   sh tests/portable_bundle_test.sh BUILD_DIR SOURCE_DIR
 set -eu
 BUILD=$1
@@ -11,7 +12,8 @@ WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 B=$WORK/bundle
 python3 "$SRC/tools/portable_bundle.py" "$BUILD" "$B"
-outside=$(LD_LIBRARY_PATH="$B/lib" ldd "$B/bin/pathcl" "$B/bin/device_tests" | grep "=>" | grep -v "=> $B/lib/" |
+outside=$(LD_LIBRARY_PATH="$B/lib" ldd "$B/bin/pathcl" "$B/bin/device_tests" "$B/lib/plplot-drivers/cairo.so" |
+    grep "=>" | grep -v "=> $B/lib/" |
     grep -v -E "^\s*(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt)\.so" || true)
 if [ -n "$outside" ]; then
     echo "portable_bundle_test: libraries from outside the bundle:"
@@ -32,4 +34,8 @@ LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" render "$SRC/scenes/textured.gltf" -o "
     --width 16 --height 16 --spp 1 --quiet
 LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" compare "$WORK/t.exr" "$WORK/t.exr" --bitwise >/dev/null
 test -s "$WORK/t.png"
+# A plot through the bundled PLplot driver and data.
+PLPLOT_DRV_DIR="$B/lib/plplot-drivers" PLPLOT_LIB="$B/share/plplot" LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" samples \
+    --sampler sobol --spp 16 --pixel 0,0 --dims 0,1 --spectrum -o "$WORK/plot.png"
+test -s "$WORK/plot.png"
 echo "portable_bundle_test: PASS ($(du -sh "$B" | cut -f1))"

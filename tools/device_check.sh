@@ -34,6 +34,7 @@ if [ -z "${PATHCL_KEEP_ICD:-}" ]; then
     done
 fi
 export LD_LIBRARY_PATH="$bundle/lib:${LD_LIBRARY_PATH:-}"
+export PLPLOT_DRV_DIR="$bundle/lib/plplot-drivers" PLPLOT_LIB="$bundle/share/plplot"
 export PATHCL_CACHE_DIR="${TMPDIR:-/tmp}/pathcl-check-cache"
 # The test binary names the source tree and pathcl by the build machine's paths.
 read -r source_dir binary <"$bundle/paths.txt"

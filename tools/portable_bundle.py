@@ -15,9 +15,12 @@ over 300 MB (ffmpeg, GDAL, ICU, ...); pathcl reads and writes none of those form
 are replaced by stub libraries of the same names that define only the symbols their users
 import, as functions returning a pointer to zeros (their version strings read as "") and
 zeroed data: OpenImageIO loads, registers its plugins and never calls them. The bundle is
-about 40 MB. PLplot's drivers are not bundled: `converge`'s plots and `samples
---spectrum` fail there with their usual one-line error.
+about 60 MB. The plots (`converge`, `samples --spectrum`) draw with PLplot's cairo
+driver, a plugin PLplot finds by PLPLOT_DRV_DIR, and read its colour maps and fonts from
+PLPLOT_LIB: the bundle carries both in OUT_DIR/lib/plplot-drivers and OUT_DIR/share/plplot,
+the driver's libraries (cairo, pango) among the others.
 """
+import glob
 import collections
 import os
 import re
@@ -36,6 +39,7 @@ STUBBED = ["libopencv_core.so.406", "libopencv_imgproc.so.406", "libopencv_video
            "libavformat.so.59", "libavutil.so.57", "libswscale.so.6", "libopenvdb.so.10.0", "libheif.so.1",
            "libraw_r.so.20"]
 BINARIES = ["pathcl", "tests/device_tests"]
+PLPLOT_DRIVER = "cairo"  # host/plot/plot.cpp draws with its memcairo device
 
 
 def run(*args):
@@ -118,8 +122,23 @@ def main():
         shutil.copy(os.path.join(build, b), bin_dir)
     binaries = [os.path.join(bin_dir, os.path.basename(b)) for b in BINARIES]
     run("strip", *binaries)
-    # The libraries the binaries load, but for the system's own and the stubbed ones.
-    copied, todo = [], list(binaries)
+    drivers = glob.glob(f"/usr/lib/x86_64-linux-gnu/plplot*/drivers/{PLPLOT_DRIVER}.so")
+    plplot_data = glob.glob("/usr/share/plplot*/")
+    if not drivers or not plplot_data:
+        sys.exit("portable_bundle: PLplot's cairo driver or data not found (Debian packages plplot-driver-cairo, "
+                 "libplplot-data)")
+    driver_dir, data_dir = os.path.join(lib_dir, "plplot-drivers"), os.path.join(out, "share", "plplot")
+    os.makedirs(driver_dir)
+    os.makedirs(data_dir)
+    for f in (drivers[0], drivers[0][:-3] + ".driver_info"):
+        shutil.copy(f, driver_dir)
+    for f in glob.glob(os.path.join(plplot_data[0], "*.fnt")) + glob.glob(os.path.join(plplot_data[0], "*.pal")):
+        shutil.copy(f, data_dir)
+    driver = os.path.join(driver_dir, PLPLOT_DRIVER + ".so")
+    run("strip", "--strip-unneeded", driver)
+    # The libraries the binaries and the driver load, but for the system's own and the
+    # stubbed ones.
+    copied, todo = [], binaries + [driver]
     while todo:
         for name in needed(todo.pop()):
             if name in SYSTEM or name in STUBBED or name in copied:
@@ -137,7 +156,7 @@ def main():
     cache = open(os.path.join(build, "CMakeCache.txt")).read()
     source_dir = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", cache, re.M).group(1)
     open(os.path.join(out, "paths.txt"), "w").write(f"{source_dir} {os.path.abspath(build)}/pathcl\n")
-    size = sum(os.path.getsize(os.path.join(d, f)) for d in (bin_dir, lib_dir) for f in os.listdir(d))
+    size = sum(os.path.getsize(os.path.join(d, f)) for d, _, files in os.walk(out) for f in files)
     print(f"{out}: {len(binaries)} binaries, {len(copied)} libraries, {len(STUBBED)} stubs, {size / 2**20:.1f} MiB")
 
 
