@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "light/light_pick.h"
 #include "render/light_distribution.h"
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
@@ -157,6 +158,57 @@ TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
     test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
     EXPECT_TRUE(r.passed) << r.summary();
     EXPECT_LT(r.pdf_integral, 1.0) << "one triangle faces away, so some samples must fail";
+}
+
+TEST(LightSampling, ThePointsFirstNumberPicksTheSlotAndStaysStratifiedWithinIt)
+{
+    // light_pick takes the slot from the light point's first number and rescales that
+    // number within the slot's steps (light/light_pick.cl): n evenly spaced numbers
+    // give each slot's light numbers evenly spaced over [0, 1) again, one in each of its
+    // strata, in the same order. Broken variants seen to fail: the number left as it was,
+    // and rescaled by the slot's width without its first step.
+    const std::vector<LightAliasEntry> dist = build_light_distribution({1.0, 2.0, 5.0});
+    const auto count = static_cast<cl_uint>(dist.size());
+    const std::size_t n = 3 * 4096;
+    std::vector<float> u(n);
+    for (std::size_t i = 0; i < n; ++i)
+        u[i] = (static_cast<float>(i) + 0.5f) / static_cast<float>(n);
+    ClDevice& dev = test::test_device();
+    cl::Buffer d_dist(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dist.size() * sizeof(LightAliasEntry),
+                      const_cast<LightAliasEntry*>(dist.data()));
+    cl::Buffer d_u(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), u.data());
+    cl::Buffer d_picked(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_int));
+    cl::Buffer d_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
+    for (float coin : {0.1f, 0.9f}) {
+        SCOPED_TRACE("alias coin " + std::to_string(coin));
+        cl::Kernel k(light_program(), "test_light_pick");
+        set_kernel_args(k, d_dist, count, d_u, coin, d_picked, d_out);
+        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+        std::vector<cl_int> picked(n);
+        std::vector<float> out(n);
+        dev.queue.enqueueReadBuffer(d_picked, CL_TRUE, 0, n * sizeof(cl_int), picked.data());
+        dev.queue.enqueueReadBuffer(d_out, CL_TRUE, 0, n * sizeof(float), out.data());
+        std::vector<std::vector<float>> by_slot(count);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto step = static_cast<pcl_uint>(u[i] * static_cast<float>(LIGHT_PICK_GRID));
+            const pcl_uint slot = light_pick_slot(step, count);
+            const auto coin_step = static_cast<pcl_uint>(coin * static_cast<float>(LIGHT_PICK_GRID));
+            const int light = coin_step < dist[slot].alias_threshold ? static_cast<int>(slot) : dist[slot].alias;
+            ASSERT_EQ(picked[i], light) << "u " << u[i];
+            ASSERT_GE(out[i], 0.0f);
+            ASSERT_LT(out[i], 1.0f);
+            by_slot[slot].push_back(out[i]);
+        }
+        for (pcl_uint j = 0; j < count; ++j) {
+            const std::vector<float>& v = by_slot[j];
+            ASSERT_FALSE(v.empty());
+            for (std::size_t m = 0; m < v.size(); ++m) { // in u's order, one per stratum
+                const auto stratum =
+                    static_cast<std::size_t>(static_cast<double>(v[m]) * static_cast<double>(v.size()));
+                ASSERT_EQ(stratum, m) << "slot " << j << ", number " << v[m] << " of " << v.size();
+            }
+        }
+    }
 }
 
 } // namespace

@@ -176,8 +176,8 @@ TEST(Samplers, ABouncesNumbersDrawnAtOnceAreThoseDrawnOneByOne)
     // second number judged stratified by its own dimension instead of the pair's (limit
     // inside the pair); the lanes' permutation stopping after one round (spp 12).
     const std::uint32_t first = DIM_PATH_START, deep = DIM_PATH_START + 3 * DIMS_PER_BOUNCE;
-    const std::uint32_t pair = DIM_LIGHT + 2; // the light point's pair starts here
-    static_assert((DIM_PAIRS_IN_BOUNCE >> (DIM_LIGHT + 2) & 1u) != 0u);
+    const std::uint32_t pair = DIM_LIGHT_POINT; // the light point's pair starts here
+    static_assert((DIM_PAIRS_IN_BOUNCE >> DIM_LIGHT_POINT & 1u) != 0u);
     const std::uint32_t n = 256, per_pixel = 2 * DIMS_PER_BOUNCE;
     for (SamplerType sampler :
          {SamplerType::Sobol, SamplerType::Independent, SamplerType::MultiJittered, SamplerType::Halton})

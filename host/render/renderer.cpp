@@ -397,7 +397,7 @@ struct Renderer::Impl {
                std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
                std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
                std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
-               std::to_string(opt.adaptive);
+               std::to_string(opt.adaptive) + "; sample layout " + std::to_string(DIM_LAYOUT_VERSION);
     }
 
     // And what a checkpoint must match besides: the range and the devices.

@@ -5,11 +5,21 @@
 #include "kernel_data.cl"
 #include "light/light_pick.h"
 
-/* The light for the slot number u_index and the alias coin u_alias. */
-static inline int light_pick(__global const LightAliasEntry* distribution, uint count, float u_index, float u_alias)
+/* The light for the slot number *u and the alias coin u_alias. *u is then rescaled to
+ * [0, 1) within its slot's steps, uniform again and independent of the pick, so that the
+ * point on the light can take it: a 2D set of points spread over the slots leaves each
+ * light a stratified share (Mitsuba 3 reuses a sample the same way to pick an emitter
+ * and a mesh's triangle). Against a slot drawn from a dimension of its own: relMSE 0.97x
+ * on the Cornell box at 256 spp, 0.98x on the dense box at 64 spp, unchanged through
+ * glass (README "Samplers"). */
+static inline int light_pick(__global const LightAliasEntry* distribution, uint count, float* u, float u_alias)
 {
-    uint k = min((uint)(u_index * (float)LIGHT_PICK_GRID), LIGHT_PICK_GRID - 1u);
-    int i = (int)light_pick_slot(k, count);
+    float scaled = *u * (float)LIGHT_PICK_GRID; /* exact: a power of two */
+    uint k = min((uint)scaled, LIGHT_PICK_GRID - 1u);
+    uint slot = light_pick_slot(k, count);
+    ulong first = light_pick_first_step(slot, count), steps = light_pick_first_step(slot + 1u, count) - first;
+    *u = min(((float)(k - (uint)first) + (scaled - (float)k)) / (float)steps, 0x1.fffffep-1f);
+    int i = (int)slot;
     uint coin = min((uint)(u_alias * (float)LIGHT_PICK_GRID), LIGHT_PICK_GRID - 1u);
     return (coin < distribution[i].alias_threshold) ? i : distribution[i].alias;
 }

@@ -11,8 +11,8 @@
 #include "light/triangle.cl"
 #include "sample/sampler.cl"
 
-/* One light sample seen from ref, drawing the pick (two 1D decisions) and the point (one
- * 2D decision) from the sampler. */
+/* One light sample seen from ref, drawing the alias coin (a 1D decision) and the point
+ * (a 2D decision whose first number also picks the slot) from the sampler. */
 static inline LightSample light_sample(const KernelData* kd, uint count, float3 ref, SamplerState* sampler)
 {
     LightSample ls;
@@ -22,10 +22,11 @@ static inline LightSample light_sample(const KernelData* kd, uint count, float3 
     ls.p_error = (float3)(0.0f);
     ls.radiance = (float3)(0.0f);
     ls.wi = ls.n = ls.p = (float3)(0.0f);
-    float u_index = sampler_get_1d(sampler);
     float u_alias = sampler_get_1d(sampler);
     float2 u = sampler_get_2d(sampler);
-    int picked = light_pick(kd->light_distribution, count, u_index, u_alias);
+    float u_slot = u.x;
+    int picked = light_pick(kd->light_distribution, count, &u_slot, u_alias);
+    u.x = u_slot; /* rescaled within the slot: uniform again */
     Light light = kd->lights[picked];
     float pmf = kd->light_distribution[picked].pmf;
 
