@@ -182,7 +182,7 @@ TEST(LightSampling, ThePointsFirstNumberPicksTheSlotAndStaysStratifiedWithinIt)
     for (float coin : {0.1f, 0.9f}) {
         SCOPED_TRACE("alias coin " + std::to_string(coin));
         cl::Kernel k(light_program(), "test_light_pick");
-        set_kernel_args(k, d_dist, count, d_u, coin, d_picked, d_out);
+        set_kernel_args(k, d_dist, count, d_u, coin, 0.5f, d_picked, d_out);
         dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
         std::vector<cl_int> picked(n);
         std::vector<float> out(n);
@@ -208,6 +208,35 @@ TEST(LightSampling, ThePointsFirstNumberPicksTheSlotAndStaysStratifiedWithinIt)
                 ASSERT_EQ(stratum, m) << "slot " << j << ", number " << v[m] << " of " << v.size();
             }
         }
+    }
+}
+
+TEST(LightSampling, TheStepJitterPlacesTheRescaledNumberInsideItsStep)
+{
+    // The samplers' numbers are multiples of 2^-24: with 2^20 lights a slot has 16 steps,
+    // and without the jitter the rescaled number would take only 16 values. Broken
+    // variant seen to fail: the jitter ignored (the number's own fraction in the step,
+    // zero here, taken instead).
+    const cl_uint count = 1u << 20;
+    const std::vector<LightAliasEntry> dist = build_light_distribution(std::vector<double>(count, 1.0));
+    const pcl_uint slot = 5, step = 3;
+    const float u = static_cast<float>(light_pick_first_step(slot, count) + step) / static_cast<float>(LIGHT_PICK_GRID);
+    ClDevice& dev = test::test_device();
+    cl::Buffer d_dist(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dist.size() * sizeof(LightAliasEntry),
+                      const_cast<LightAliasEntry*>(dist.data()));
+    cl::Buffer d_u(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(float), const_cast<float*>(&u));
+    cl::Buffer d_picked(dev.context, CL_MEM_WRITE_ONLY, sizeof(cl_int));
+    cl::Buffer d_out(dev.context, CL_MEM_WRITE_ONLY, sizeof(float));
+    for (float jitter : {0.0f, 0.25f, 0.75f}) {
+        cl::Kernel k(light_program(), "test_light_pick");
+        set_kernel_args(k, d_dist, count, d_u, 0.5f, jitter, d_picked, d_out);
+        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
+        cl_int picked = -1;
+        float out = -1.0f;
+        dev.queue.enqueueReadBuffer(d_picked, CL_TRUE, 0, sizeof(cl_int), &picked);
+        dev.queue.enqueueReadBuffer(d_out, CL_TRUE, 0, sizeof(float), &out);
+        EXPECT_EQ(picked, static_cast<cl_int>(slot));
+        EXPECT_EQ(out, (static_cast<float>(step) + jitter) / 16.0f) << "jitter " << jitter;
     }
 }
 

@@ -10,6 +10,7 @@
 #include "light/sphere.cl"
 #include "light/triangle.cl"
 #include "sample/sampler.cl"
+#include "util/hash.cl"
 
 /* One light sample seen from ref, drawing the alias coin (a 1D decision) and the point
  * (a 2D decision whose first number also picks the slot) from the sampler. */
@@ -23,9 +24,12 @@ static inline LightSample light_sample(const KernelData* kd, uint count, float3 
     ls.radiance = (float3)(0.0f);
     ls.wi = ls.n = ls.p = (float3)(0.0f);
     float u_alias = sampler_get_1d(sampler);
+    /* Independent of every sampler's numbers: the pair's own independent number, hashed
+     * once more. */
+    float step_jitter = u32_to_unit_float(hash_combine(hash_combine(sampler->sample_key, sampler->dimension), 1u));
     float2 u = sampler_get_2d(sampler);
     float u_slot = u.x;
-    int picked = light_pick(kd->light_distribution, count, &u_slot, u_alias);
+    int picked = light_pick(kd->light_distribution, count, &u_slot, u_alias, step_jitter);
     u.x = u_slot; /* rescaled within the slot: uniform again */
     Light light = kd->lights[picked];
     float pmf = kd->light_distribution[picked].pmf;

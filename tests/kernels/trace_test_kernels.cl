@@ -97,14 +97,14 @@ __kernel void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uin
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }
 
-/* light_pick for each u[i] with the alias coin u_alias: the light and u[i] rescaled within
- * its slot. */
+/* light_pick for each u[i] with the alias coin u_alias and the step jitter jitter: the
+ * light and u[i] rescaled within its slot. */
 __kernel void test_light_pick(__global const LightAliasEntry* distribution, uint count, __global const float* u,
-                              float u_alias, __global int* picked, __global float* u_out)
+                              float u_alias, float jitter, __global int* picked, __global float* u_out)
 {
     uint i = get_global_id(0);
     float v = u[i];
-    picked[i] = light_pick(distribution, count, &v, u_alias);
+    picked[i] = light_pick(distribution, count, &v, u_alias, jitter);
     u_out[i] = v;
 }
 
