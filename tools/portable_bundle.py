@@ -20,8 +20,8 @@ driver, a plugin PLplot finds by PLPLOT_DRV_DIR, and read its colour maps and fo
 PLPLOT_LIB: the bundle carries both in OUT_DIR/lib/plplot-drivers and OUT_DIR/share/plplot,
 the driver's libraries (cairo, pango) among the others.
 """
-import glob
 import collections
+import glob
 import os
 import re
 import shutil
