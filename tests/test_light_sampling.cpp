@@ -160,6 +160,30 @@ TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
     EXPECT_LT(r.pdf_integral, 1.0) << "one triangle faces away, so some samples must fail";
 }
 
+// light_pick on the device (tests/kernels/trace_test_kernels.cl) for each of `u`, with one
+// alias coin and one step jitter: the lights picked and the numbers rescaled.
+struct Picks {
+    std::vector<cl_int> light;
+    std::vector<float> u;
+};
+Picks pick_on_device(const std::vector<LightAliasEntry>& dist, std::vector<float> u, float coin, float jitter)
+{
+    ClDevice& dev = test::test_device();
+    const std::size_t n = u.size();
+    cl::Buffer d_dist(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dist.size() * sizeof(LightAliasEntry),
+                      const_cast<LightAliasEntry*>(dist.data()));
+    cl::Buffer d_u(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), u.data());
+    cl::Buffer d_picked(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_int));
+    cl::Buffer d_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Kernel k(light_program(), "test_light_pick");
+    set_kernel_args(k, d_dist, static_cast<cl_uint>(dist.size()), d_u, coin, jitter, d_picked, d_out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    Picks p{std::vector<cl_int>(n), std::vector<float>(n)};
+    dev.queue.enqueueReadBuffer(d_picked, CL_TRUE, 0, n * sizeof(cl_int), p.light.data());
+    dev.queue.enqueueReadBuffer(d_out, CL_TRUE, 0, n * sizeof(float), p.u.data());
+    return p;
+}
+
 TEST(LightSampling, ThePointsFirstNumberPicksTheSlotAndStaysStratifiedWithinIt)
 {
     // light_pick takes the slot from the light point's first number and rescales that
@@ -173,21 +197,11 @@ TEST(LightSampling, ThePointsFirstNumberPicksTheSlotAndStaysStratifiedWithinIt)
     std::vector<float> u(n);
     for (std::size_t i = 0; i < n; ++i)
         u[i] = (static_cast<float>(i) + 0.5f) / static_cast<float>(n);
-    ClDevice& dev = test::test_device();
-    cl::Buffer d_dist(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dist.size() * sizeof(LightAliasEntry),
-                      const_cast<LightAliasEntry*>(dist.data()));
-    cl::Buffer d_u(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), u.data());
-    cl::Buffer d_picked(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_int));
-    cl::Buffer d_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
     for (float coin : {0.1f, 0.9f}) {
         SCOPED_TRACE("alias coin " + std::to_string(coin));
-        cl::Kernel k(light_program(), "test_light_pick");
-        set_kernel_args(k, d_dist, count, d_u, coin, 0.5f, d_picked, d_out);
-        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
-        std::vector<cl_int> picked(n);
-        std::vector<float> out(n);
-        dev.queue.enqueueReadBuffer(d_picked, CL_TRUE, 0, n * sizeof(cl_int), picked.data());
-        dev.queue.enqueueReadBuffer(d_out, CL_TRUE, 0, n * sizeof(float), out.data());
+        const Picks p = pick_on_device(dist, u, coin, 0.5f);
+        const std::vector<cl_int>& picked = p.light;
+        const std::vector<float>& out = p.u;
         std::vector<std::vector<float>> by_slot(count);
         for (std::size_t i = 0; i < n; ++i) {
             const auto step = static_cast<pcl_uint>(u[i] * static_cast<float>(LIGHT_PICK_GRID));
@@ -221,22 +235,10 @@ TEST(LightSampling, TheStepJitterPlacesTheRescaledNumberInsideItsStep)
     const std::vector<LightAliasEntry> dist = build_light_distribution(std::vector<double>(count, 1.0));
     const pcl_uint slot = 5, step = 3;
     const float u = static_cast<float>(light_pick_first_step(slot, count) + step) / static_cast<float>(LIGHT_PICK_GRID);
-    ClDevice& dev = test::test_device();
-    cl::Buffer d_dist(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dist.size() * sizeof(LightAliasEntry),
-                      const_cast<LightAliasEntry*>(dist.data()));
-    cl::Buffer d_u(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(float), const_cast<float*>(&u));
-    cl::Buffer d_picked(dev.context, CL_MEM_WRITE_ONLY, sizeof(cl_int));
-    cl::Buffer d_out(dev.context, CL_MEM_WRITE_ONLY, sizeof(float));
     for (float jitter : {0.0f, 0.25f, 0.75f}) {
-        cl::Kernel k(light_program(), "test_light_pick");
-        set_kernel_args(k, d_dist, count, d_u, 0.5f, jitter, d_picked, d_out);
-        dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
-        cl_int picked = -1;
-        float out = -1.0f;
-        dev.queue.enqueueReadBuffer(d_picked, CL_TRUE, 0, sizeof(cl_int), &picked);
-        dev.queue.enqueueReadBuffer(d_out, CL_TRUE, 0, sizeof(float), &out);
-        EXPECT_EQ(picked, static_cast<cl_int>(slot));
-        EXPECT_EQ(out, (static_cast<float>(step) + jitter) / 16.0f) << "jitter " << jitter;
+        const Picks p = pick_on_device(dist, {u}, 0.5f, jitter);
+        EXPECT_EQ(p.light[0], static_cast<cl_int>(slot));
+        EXPECT_EQ(p.u[0], (static_cast<float>(step) + jitter) / 16.0f) << "jitter " << jitter;
     }
 }
 
