@@ -43,10 +43,10 @@
 #include "types.h"
 #include "util/hash.cl"
 
-/* How many numbers sampler_draw_bounce draws at once: the first eight decisions of a
- * bounce (the ninth, one-sample MIS's coin, is drawn alone). Eight 32-bit lanes are one
- * AVX2 register; sixteen (AVX-512) ran 0.87-0.92x as fast on the development machine's
- * Xeon (README "Speed"). */
+/* How many numbers sampler_draw_bounce draws at once: all eight decisions of a bounce
+ * (DIMS_PER_BOUNCE, sample/dimensions.h). Eight 32-bit lanes are one AVX2 register;
+ * sixteen (AVX-512) ran 0.87-0.92x as fast on the development machine's Xeon (README
+ * "Speed"). */
 #define SAMPLER_LANES 8u
 
 typedef struct {
