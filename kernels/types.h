@@ -33,10 +33,11 @@ typedef struct {
 } BvhNode;
 
 /* Entries of the traversal stack (kernels/bvh/traversal.cl); the builder checks that every
- * tree fits. A node spans at least two binary levels; with at most four children it
- * pushes at most three besides the one taken next (3 x 31 + 1 = 94 at the builder's depth
- * cap), with eight up to seven. A tree whose full nodes would need more than this gets
- * nodes of at most four children (host/bvh/bvh_builder.cpp). */
+ * tree fits. A node of k children spans at least log2(k) binary levels and pushes k - 1
+ * entries besides the one taken next: up to seven per three levels. A tree whose nodes
+ * would need more than this gets nodes of the grandchildren of a binary node, at most
+ * four children and three pushes per two levels (3 x 31 + 1 = 94 at the builder's depth
+ * cap; host/bvh/bvh_builder.cpp). */
 #define BVH_STACK_SIZE 128
 /* The same for a two-level BVH (PATHCL_HAS_INSTANCES): the top level's entries, a leaf's
  * instances and a return mark below the entries of one mesh's tree; compile_geometry

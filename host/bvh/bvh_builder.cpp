@@ -14,6 +14,9 @@ namespace {
 constexpr int kBins = 32;
 constexpr float kTraversalCost = 1.0f; // relative to one triangle test
 constexpr float kIntersectCost = 1.0f;
+// The eight-wide tree's costs (choose_wide): a node visit (one float8 slab test and the
+// ordering of the children entered) relative to one triangle test.
+constexpr float kWideNodeCost = 1.0f;
 
 // A box bound moved outwards by one ulp, and by at least twice the smallest normal float
 // near zero, where one ulp is a denormal: a device without denormals (optional in OpenCL
@@ -46,6 +49,7 @@ struct Box {
 };
 
 struct Builder {
+    Builder(const BvhBuildInput& input, Bvh* output) : in(input), out(output) {}
     const BvhBuildInput& in;
     std::vector<glm::vec3> centroid;
     std::vector<std::uint32_t> order;
@@ -72,11 +76,7 @@ struct Builder {
         }
         std::size_t n = end - begin;
         out->depth = std::max(out->depth, depth);
-        auto leaf = [&]() {
-            out->leaf_count += 1;
-            out->max_leaf_size = std::max(out->max_leaf_size, static_cast<int>(n));
-            return Child{bounds, static_cast<int>(begin), static_cast<int>(n)};
-        };
+        auto leaf = [&]() { return Child{bounds, static_cast<int>(begin), static_cast<int>(n)}; };
         if (n <= 1 || depth >= kBvhMaxDepth)
             return leaf();
 
@@ -114,10 +114,10 @@ struct Builder {
                 std::size_t rc = right_count[static_cast<std::size_t>(b + 1)];
                 if (cnt == 0 || rc == 0)
                     continue;
-                float cost = acc.area() * static_cast<float>(cnt) +
-                             right_area[static_cast<std::size_t>(b + 1)] * static_cast<float>(rc);
-                if (cost < best_cost) {
-                    best_cost = cost;
+                float sah = acc.area() * static_cast<float>(cnt) +
+                            right_area[static_cast<std::size_t>(b + 1)] * static_cast<float>(rc);
+                if (sah < best_cost) {
+                    best_cost = sah;
                     best_axis = axis;
                     best_split = b + 1;
                 }
@@ -158,17 +158,123 @@ struct Builder {
         return Child{bounds, static_cast<int>(self), 0};
     }
 
-    // The eight-wide tree: each node takes the grandchildren of a binary node (a child
-    // that is a leaf stands for itself), so every eight-wide level spans at least two
-    // binary levels; that bounds the traversal stack (stack_needed). It then opens its
-    // largest inner child (by surface area: the likeliest to be entered) while the
-    // grandchildren fit, so that nodes hold up to eight children and the tree has fewer
-    // levels. Without `fill`, nodes keep only the grandchildren (at most four children,
-    // three pushes per level: within the stack whatever the tree's shape). Returns the
-    // node's index.
+    // The eight-wide tree chosen by cost (Ylitie, Karras and Laine 2017): every binary
+    // subtree may become one slot of its parent's wide node (a leaf of its triangles, when
+    // at most eight, or a wide node of its own) or be spread over several slots, its
+    // children's. cost[n][i - 1] is the least expected cost of binary node n's subtree in
+    // at most i slots, a node's or leaf's cost weighted by its box's area (the chance that
+    // a ray enters it); choose_wide fills the table bottom up, emit_wide reads it back.
+    std::vector<std::array<float, kBvhWidth>> cost;
+    // How cost[n][i - 1] is reached: kOneSlot, kFewerSlots (as in i - 1 slots) or the
+    // slots the left child gets (the right child gets the rest).
+    static constexpr std::int8_t kOneSlot = 0, kFewerSlots = -1;
+    std::vector<std::array<std::int8_t, kBvhWidth>> choice;
+    std::vector<std::uint8_t> as_leaf;          // one slot: a leaf, not a wide node
+    std::vector<int> first_triangle, triangles; // each binary node's range of `order`
+
+    float slot_cost(const Child& c, int slots) const
+    {
+        if (c.count > 0)
+            return c.box.area() * kIntersectCost * static_cast<float>(c.count);
+        return cost[static_cast<std::size_t>(c.index)][static_cast<std::size_t>(slots - 1)];
+    }
+    // The best split of binary node n's two children over at most `slots` slots (>= 2);
+    // its cost, and the left child's share in *left.
+    float split_cost(int n, int slots, int* left) const
+    {
+        const BinaryNode& b = nodes[static_cast<std::size_t>(n)];
+        float best = std::numeric_limits<float>::infinity();
+        for (int j = 1; j < slots; ++j) {
+            float c = slot_cost(b.child[0], j) + slot_cost(b.child[1], slots - j);
+            if (c < best) {
+                best = c;
+                *left = j;
+            }
+        }
+        return best;
+    }
+    void choose_wide()
+    {
+        const std::size_t count = nodes.size();
+        cost.assign(count, {});
+        choice.assign(count, {});
+        as_leaf.assign(count, 0);
+        first_triangle.assign(count, 0);
+        triangles.assign(count, 0);
+        // Children come after their parent (build() numbers a node before its subtrees).
+        for (std::size_t k = count; k-- > 0;) {
+            const BinaryNode& b = nodes[k];
+            if (b.child[0].index < 0 || b.child[1].index < 0)
+                continue; // the root of a scene of one leaf or none: emit_wide takes its children as they are
+            int tris = 0, first = std::numeric_limits<int>::max();
+            Box box;
+            for (const Child& c : b.child) {
+                box.grow(c.box);
+                tris += c.count > 0 ? c.count : triangles[static_cast<std::size_t>(c.index)];
+                first = std::min(first, c.count > 0 ? c.index : first_triangle[static_cast<std::size_t>(c.index)]);
+            }
+            triangles[k] = tris;
+            first_triangle[k] = first;
+            const float area = box.area();
+            int left = 1;
+            const float node = area * kWideNodeCost + split_cost(static_cast<int>(k), kBvhWidth, &left);
+            const float leaf = tris <= kBvhMaxLeafSize ? area * kIntersectCost * static_cast<float>(tris)
+                                                       : std::numeric_limits<float>::infinity();
+            as_leaf[k] = leaf <= node;
+            cost[k][0] = std::min(leaf, node);
+            choice[k][0] = kOneSlot;
+            for (int i = 2; i <= kBvhWidth; ++i) {
+                const float spread = split_cost(static_cast<int>(k), i, &left);
+                const bool fewer = cost[k][static_cast<std::size_t>(i - 2)] <= spread;
+                cost[k][static_cast<std::size_t>(i - 1)] = fewer ? cost[k][static_cast<std::size_t>(i - 2)] : spread;
+                choice[k][static_cast<std::size_t>(i - 1)] = fewer ? kFewerSlots : static_cast<std::int8_t>(left);
+            }
+        }
+    }
+    // The slots child c takes when it may have at most `slots` of them.
+    void wide_slots(const Child& c, int slots, std::vector<Child>* kids) const
+    {
+        if (c.count > 0) {
+            kids->push_back(c);
+            return;
+        }
+        const std::size_t n = static_cast<std::size_t>(c.index);
+        while (slots > 1 && choice[n][static_cast<std::size_t>(slots - 1)] == kFewerSlots)
+            --slots;
+        if (slots == 1) {
+            kids->push_back(as_leaf[n] ? Child{c.box, first_triangle[n], triangles[n]} : c);
+            return;
+        }
+        const int left = choice[n][static_cast<std::size_t>(slots - 1)];
+        wide_slots(nodes[n].child[0], left, kids);
+        wide_slots(nodes[n].child[1], slots - left, kids);
+    }
+    // The wide node of binary node n (chosen by choose_wide); returns its index.
+    int emit_wide(int n)
+    {
+        std::vector<Child> kids;
+        const BinaryNode& b = nodes[static_cast<std::size_t>(n)];
+        if (b.child[0].index < 0 || b.child[1].index < 0) {
+            for (const Child& c : b.child)
+                if (c.index >= 0)
+                    kids.push_back(c);
+        } else {
+            int left = 1;
+            split_cost(n, kBvhWidth, &left);
+            wide_slots(b.child[0], left, &kids);
+            wide_slots(b.child[1], kBvhWidth - left, &kids);
+        }
+        return store_wide(kids, [this](int child) { return emit_wide(child); });
+    }
+
+    // The fallback for a tree too deep for the traversal stack: each node takes the
+    // grandchildren of a binary one (a child that is a leaf stands for itself), at most
+    // four children, so every wide level spans at least two binary levels and pushes at
+    // most three entries: within the stack whatever the tree's shape. Returns the node's
+    // index.
     std::vector<BvhNode> wide;
 
-    int collapse(int binary, bool fill)
+    int collapse_four(int binary)
     {
         std::vector<Child> kids;
         for (const Child& c : nodes[static_cast<std::size_t>(binary)].child) {
@@ -182,28 +288,14 @@ struct Builder {
                 kids.push_back(c);
             }
         }
-        while (fill) {
-            int best = -1;
-            float best_area = -1.0f;
-            for (std::size_t i = 0; i < kids.size(); ++i)
-                if (kids[i].count == 0) {
-                    int grandkids = 0;
-                    for (const Child& g : nodes[static_cast<std::size_t>(kids[i].index)].child)
-                        grandkids += g.index >= 0;
-                    if (kids.size() - 1 + static_cast<std::size_t>(grandkids) <= static_cast<std::size_t>(kBvhWidth) &&
-                        kids[i].box.area() > best_area) {
-                        best_area = kids[i].box.area();
-                        best = static_cast<int>(i);
-                    }
-                }
-            if (best < 0)
-                break;
-            Child open = kids[static_cast<std::size_t>(best)];
-            kids.erase(kids.begin() + best);
-            for (const Child& g : nodes[static_cast<std::size_t>(open.index)].child)
-                if (g.index >= 0)
-                    kids.push_back(g);
-        }
+        return store_wide(kids, [this](int child) { return collapse_four(child); });
+    }
+
+    // Stores a wide node of the given children (at most eight); `inner(binary)` makes the
+    // wide node of an inner child. Returns the node's index.
+    template <typename Inner>
+    int store_wide(const std::vector<Child>& kids, Inner inner)
+    {
         const int k = static_cast<int>(kids.size());
         int self = static_cast<int>(wide.size());
         wide.emplace_back();
@@ -220,7 +312,7 @@ struct Builder {
                 hi[a][j] = used ? widen_up(kids[j].box.hi[a]) : -std::numeric_limits<float>::infinity();
             }
             node.count.s[j] = used ? kids[j].count : 0;
-            node.index.s[j] = used ? (kids[j].count > 0 ? kids[j].index : collapse(kids[j].index, fill)) : -1;
+            node.index.s[j] = used ? (kids[j].count > 0 ? kids[j].index : inner(kids[j].index)) : -1;
         }
         wide[static_cast<std::size_t>(self)] = node;
         return self;
@@ -237,8 +329,12 @@ struct Builder {
             if (n.index.s[j] < 0)
                 continue;
             ++children;
-            if (n.count.s[j] == 0)
+            if (n.count.s[j] == 0) {
                 deepest = std::max(deepest, stack_needed(n.index.s[j], depth + 1));
+            } else {
+                out->leaf_count += 1;
+                out->max_leaf_size = std::max(out->max_leaf_size, n.count.s[j]);
+            }
         }
         return std::max(children - 1, 0) + deepest;
     }
@@ -263,7 +359,7 @@ Bvh build_bvh(const BvhBuildInput& input, int stack_size)
 {
     Bvh bvh;
     std::size_t n = input.box_min.size();
-    Builder b{input, {}, {}, &bvh, {}, {}};
+    Builder b{input, &bvh};
     b.centroid.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         b.centroid[i] = 0.5f * (input.box_min[i] + input.box_max[i]);
@@ -279,7 +375,8 @@ Bvh build_bvh(const BvhBuildInput& input, int stack_size)
         if (top.count > 0) // the whole scene is one leaf: hang it under an inner root
             b.nodes.push_back(Builder::BinaryNode{{top, empty}});
     }
-    b.collapse(0, true); // the eight-wide root is node 0
+    b.choose_wide();
+    b.emit_wide(0); // the eight-wide root is node 0
     bvh.stack_needed = b.stack_needed(0, 1);
     // + 1: a node's children are all pushed before one is popped. Full nodes along a deep
     // path can push seven entries per three binary levels, more than the stack holds at the
@@ -288,7 +385,9 @@ Bvh build_bvh(const BvhBuildInput& input, int stack_size)
     if (bvh.stack_needed + 1 > stack_size) {
         b.wide.clear();
         bvh.wide_depth = 0;
-        b.collapse(0, false);
+        bvh.leaf_count = 0;
+        bvh.max_leaf_size = 0;
+        b.collapse_four(0);
         bvh.stack_needed = b.stack_needed(0, 1);
     }
     if (bvh.stack_needed + 1 > stack_size)

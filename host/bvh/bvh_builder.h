@@ -1,8 +1,9 @@
-// Binned SAH BVH over triangles: built binary, then collapsed to the eight-wide BvhNode
-// array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl), every
-// eight-wide node taking the grandchildren of a binary one and then opening its largest
-// inner children while they fit. Node 0 is the root and is always an inner node; leaves
-// live inside their parent as (first triangle, count).
+// Binned SAH BVH over triangles: built binary, then turned into the eight-wide BvhNode
+// array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl) by the
+// collapse of least expected cost (Ylitie, Karras and Laine 2017): each binary subtree
+// becomes a leaf of up to eight triangles, a wide node, or several slots of its parent.
+// Node 0 is the root and is always an inner node; leaves live inside their parent as
+// (first triangle, count).
 #pragma once
 
 #include <cstdint>
