@@ -363,8 +363,15 @@ def blob_quads(cx, cy, cz, r, stacks=512, slices=1024):
     return [[row[i][j], row[i][j + 1], row[i + 1][j + 1], row[i + 1][j]]
             for i in range(stacks) for j in range(slices)]
 
+USAGE = ("usage: make_cornell_box.py [--light point|sphere|spot|rect-spot|directional] "
+         "[--variant glass-mirror|features|instanced|dense] [OUT.gltf]")
+
+
 def main():
     args = sys.argv[1:]
+    if any(a in ("-h", "--help") for a in args):
+        print(USAGE)
+        return
     light_kind, variant = None, None
     while len(args) >= 2 and args[0] in ("--light", "--variant"):
         if args[0] == "--light":
@@ -377,6 +384,8 @@ def main():
                 sys.exit("make_cornell_box.py: --variant must be glass-mirror, features, instanced or dense")
         args = args[2:]
     name = "cornell-box" + (f"-{light_kind}" if light_kind else "") + (f"-{variant}" if variant else "")
+    if len(args) > 1 or (args and args[0].startswith("-")):
+        sys.exit(f"make_cornell_box.py: unexpected argument {args[-1]!r} ({USAGE})")
     out = args[0] if args else f"scenes/{name}.gltf"
     materials = [
         lambertian("white", (0.725, 0.71, 0.68)),
