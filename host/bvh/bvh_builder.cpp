@@ -165,9 +165,10 @@ struct Builder {
     // at most i slots, a node's or leaf's cost weighted by its box's area (the chance that
     // a ray enters it); choose_wide fills the table bottom up, emit_wide reads it back.
     std::vector<std::array<float, kBvhWidth>> cost;
-    // How cost[n][i - 1] is reached: kOneSlot, kFewerSlots (as in i - 1 slots) or the
-    // slots the left child gets (the right child gets the rest).
-    static constexpr std::int8_t kOneSlot = 0, kFewerSlots = -1;
+    // How cost[n][i - 1] is reached for i >= 2: kFewerSlots (as in i - 1 slots) or the
+    // slots the left child gets (the right child gets the rest). choice[n][0] is the left
+    // child's share of the eight slots of n's own wide node (emit_wide).
+    static constexpr std::int8_t kFewerSlots = -1;
     std::vector<std::array<std::int8_t, kBvhWidth>> choice;
     std::vector<std::uint8_t> as_leaf;          // one slot: a leaf, not a wide node
     std::vector<int> first_triangle, triangles; // each binary node's range of `order`
@@ -222,7 +223,7 @@ struct Builder {
                                                        : std::numeric_limits<float>::infinity();
             as_leaf[k] = leaf <= node;
             cost[k][0] = std::min(leaf, node);
-            choice[k][0] = kOneSlot;
+            choice[k][0] = static_cast<std::int8_t>(left); // the wide node's split, from `node`
             for (int i = 2; i <= kBvhWidth; ++i) {
                 const float spread = split_cost(static_cast<int>(k), i, &left);
                 const bool fewer = cost[k][static_cast<std::size_t>(i - 2)] <= spread;
@@ -259,8 +260,7 @@ struct Builder {
                 if (c.index >= 0)
                     kids.push_back(c);
         } else {
-            int left = 1;
-            split_cost(n, kBvhWidth, &left);
+            const int left = choice[static_cast<std::size_t>(n)][0];
             wide_slots(b.child[0], left, &kids);
             wide_slots(b.child[1], kBvhWidth - left, &kids);
         }
