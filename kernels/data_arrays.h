@@ -13,10 +13,11 @@
 #define PATHCL_DATA_ARRAYS_H
 
 #define PATHCL_SCENE_ARRAYS(X)                                                                                         \
-    X(BvhNode, nodes)           /* eight-wide BVH, root first */                                                       \
-    X(Triangle, triangles)      /* positions, BVH leaf order */                                                        \
-    X(TriangleShading, shading) /* normals, material, emitter; leaf order */                                           \
-    X(Instance, instances)      /* two-level BVH only: top-level leaf order */                                         \
+    X(BvhNode, nodes)                 /* eight-wide BVH, root first */                                                 \
+    X(Triangle, triangles)            /* positions, BVH leaf order */                                                  \
+    X(TriangleBlock, triangle_blocks) /* the leaves' triangles for the traversal, eight lanes */                       \
+    X(TriangleShading, shading)       /* normals, material, emitter; leaf order */                                     \
+    X(Instance, instances)            /* two-level BVH only: top-level leaf order */                                   \
     X(Material, materials)                                                                                             \
     X(Light, lights)                       /* sphere lights first */                                                   \
     X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                          \

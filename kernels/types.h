@@ -23,7 +23,8 @@ typedef struct {
  * operation slab-tests all eight (SIMD on CPUs, and one node fetch decides all children;
  * an eight-wide tree has fewer levels than a four-wide one, and each level is a dependent
  * memory fetch). A child is an inner node (count 0, index = node), a leaf
- * (count > 0: triangles index .. index + count - 1) or empty (index -1, count 0,
+ * (count > 0: build_bvh's triangles index .. index + count - 1; on the device, the
+ * TriangleBlock that holds them) or empty (index -1, count 0,
  * inverted box). 256 bytes. */
 #define BVH_WIDTH 8
 typedef struct {
@@ -67,6 +68,17 @@ typedef struct {
     pcl_float4 v0, v1, v2; /* xyz world position */
 } Triangle;
 #define TRIANGLE_ALPHA_TESTED 1.0f
+
+/* A leaf's triangles as the traversal tests them: up to eight, one per lane, each
+ * coordinate of each vertex a float8 row, so that one pass of float8 arithmetic runs the
+ * watertight test for all of them, and the ray's axis permutation picks rows instead of
+ * shuffling each vertex. vertex[3 * v + axis], lane k: triangle k's vertex v. A lane
+ * without a triangle has triangle -1 and NaN coordinates. The leaf child of a BvhNode
+ * names its block (host/bvh/triangle_blocks.cpp). 320 bytes. */
+typedef struct {
+    pcl_float8 vertex[9];
+    pcl_int8 triangle; /* lane k's triangle: its position in the triangles array */
+} TriangleBlock;
 
 /* What shading needs of a triangle, same order as Triangle: 64 bytes. */
 typedef struct {

@@ -143,23 +143,18 @@ TEST(BvhBuilder, EmptySceneHasOneRootWithEmptyChildren)
 
 TEST(BvhBuilder, TheFallbackHalvesTheDepthAndBoundsTheStack)
 {
-    // Slivers along x, each twice as long as the one before: SAH peels a few off at a
-    // time, so the binary tree is deep and lopsided. Where the chosen eight-wide tree would
-    // overflow the kernels' 128 entries the builder gives nodes the grandchildren of a
-    // binary node, at most four children, three pushes per two binary levels, and that
-    // bound, 3 ceil(binary depth / 2) + 1, must fit at the depth cap of 60: checked here on
-    // the fallback's tree, reached with a stack one entry too small. Broken variant seen
-    // failing: nodes that take the binary node's children instead of its grandchildren
-    // (no halving in the fallback).
-    std::vector<glm::vec3> v;
-    for (int i = 0; i < 100; ++i) {
-        float a = std::ldexp(1.0f, i), b = 2.0f * a;
-        v.insert(v.end(), {{a, 0, 0}, {b, 0, 0}, {a, 1e-3f, 1e-3f}});
-    }
-    BvhBuildInput in = bvh_input_from_triangles(v);
+    // Where the chosen eight-wide tree would overflow the kernels' 128 entries the builder
+    // gives nodes the grandchildren of a binary node, at most four children, three pushes
+    // per two binary levels, and that bound, 3 ceil(binary depth / 2) + 1, must fit at the
+    // depth cap of 60: checked here on the fallback's tree, reached with a stack one entry
+    // too small for the full nodes. A closed sphere's balanced tree (a lopsided one packs
+    // seven leaves a level into the full nodes and needs less stack than the fallback).
+    // Broken variant seen failing: nodes that take the binary node's children instead of
+    // its grandchildren (no halving in the fallback).
+    BvhBuildInput in = bvh_input_from_triangles(test::jittered_sphere(40, 80, 7));
     Bvh bvh = build_bvh(in);
     check_tree(bvh, in, false);
-    EXPECT_GT(bvh.depth, 20);
+    EXPECT_GE(bvh.depth, 15);
     EXPECT_LE(bvh.stack_needed, (kBvhWidth - 1) * bvh.wide_depth);
     Bvh four = build_bvh(in, bvh.stack_needed);
     check_tree(four, in, false);
@@ -185,8 +180,8 @@ TEST(BvhBuilder, EightWideNodesHoldMoreThanFourChildren)
     EXPECT_GT(per_node, 5.5) << bvh.nodes.size() << " nodes";
 }
 
-// The builder's cost model (bvh_builder.cpp) on a built tree: a node visit costs its box's
-// area, a leaf its area times its triangles.
+// The builder's cost model (bvh_builder.h) on a built tree: a node visit and a leaf's test
+// each cost their box's area times their own constant.
 double box_area(glm::vec3 lo, glm::vec3 hi)
 {
     const glm::dvec3 d = glm::dvec3(hi) - glm::dvec3(lo);
@@ -207,11 +202,11 @@ SubtreeCost subtree_cost(const Bvh& bvh, int node)
             continue;
         const double area = box_area(c.lo, c.hi);
         if (c.ref.count > 0) {
-            s.cost += area * c.ref.count;
+            s.cost += area * kBvhLeafCost;
             s.triangles += c.ref.count;
         } else {
             const SubtreeCost below = subtree_cost(bvh, c.ref.index);
-            s.cost += area + below.cost;
+            s.cost += area * kBvhWideNodeCost + below.cost;
             s.triangles += below.triangles;
         }
     }
@@ -244,8 +239,8 @@ TEST(BvhBuilder, NoWideNodeCouldBeCheaperAsALeafOrMergedIntoItsParent)
                     dissolvable += used - 1 + below <= kBvhWidth;
                     const SubtreeCost sub = subtree_cost(bvh, c.ref.index);
                     const double area = box_area(c.lo, c.hi);
-                    cheaper_as_leaf +=
-                        sub.triangles <= kBvhMaxLeafSize && area * sub.triangles < (area + sub.cost) * (1.0 - 1e-5);
+                    cheaper_as_leaf += sub.triangles <= kBvhMaxLeafSize &&
+                                       area * kBvhLeafCost < (area * kBvhWideNodeCost + sub.cost) * (1.0 - 1e-5);
                 }
             }
             EXPECT_EQ(dissolvable, 0) << "seed " << seed;

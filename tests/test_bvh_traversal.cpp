@@ -9,8 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "bvh/bvh_builder.h"
+#include "bvh/triangle_blocks.h"
 #include "support/device_fixture.h"
 #include "support/random_meshes.h"
+#include "support/single_triangle_blocks.h"
 
 namespace pathcl {
 namespace {
@@ -22,6 +24,8 @@ struct TraceResults {
 struct DeviceMesh {
     std::vector<BvhNode> nodes;
     std::vector<Triangle> triangles; // leaf order
+    std::vector<TriangleBlock> blocks;
+    std::vector<TriangleBlock> singles; // one triangle each, for brute force
 };
 
 DeviceMesh make_mesh(const std::vector<glm::vec3>& v)
@@ -33,6 +37,8 @@ DeviceMesh make_mesh(const std::vector<glm::vec3>& v)
         m.triangles.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
                                        {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
                                        {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    make_triangle_blocks(m.nodes, 0, m.triangles, m.blocks);
+    m.singles = test::single_triangle_blocks(m.triangles);
     return m;
 }
 
@@ -66,13 +72,13 @@ TraceResults trace(const DeviceMesh& mesh, const std::vector<pcl_float4>& origin
     ClDevice& dev = test::test_device();
     std::size_t n = origins.size();
     cl::Buffer o = to_device(origins), d = to_device(dirs), nodes = to_device(mesh.nodes),
-               tris = to_device(mesh.triangles);
+               tris = to_device(mesh.triangles), blocks = to_device(mesh.blocks), singles = to_device(mesh.singles);
     cl::Buffer out_bvh(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer out_brute(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k1(prog, "test_trace_closest");
-    set_kernel_args(k1, o, d, nodes, tris, out_bvh);
+    set_kernel_args(k1, o, d, nodes, tris, blocks, out_bvh);
     cl::Kernel k2(prog, brute_kernel);
-    set_kernel_args(k2, o, d, tris, static_cast<cl_uint>(mesh.triangles.size()), out_brute);
+    set_kernel_args(k2, o, d, tris, singles, static_cast<cl_uint>(mesh.triangles.size()), out_brute);
     dev.queue.enqueueNDRangeKernel(k1, cl::NullRange, cl::NDRange(n));
     dev.queue.enqueueNDRangeKernel(k2, cl::NullRange, cl::NDRange(n));
     TraceResults r;
@@ -152,10 +158,11 @@ void expect_any_hits_match(const DeviceMesh& mesh, std::uint32_t seed, float t_m
     random_rays(100000, seed, o, d);
     TraceResults r = trace(mesh, o, d);
     std::size_t n = o.size();
-    cl::Buffer ob = to_device(o), db = to_device(d), nodes = to_device(mesh.nodes), tris = to_device(mesh.triangles);
+    cl::Buffer ob = to_device(o), db = to_device(d), nodes = to_device(mesh.nodes), tris = to_device(mesh.triangles),
+               blocks = to_device(mesh.blocks);
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_int));
     cl::Kernel k(program(), "test_any_hit");
-    set_kernel_args(k, ob, db, nodes, tris, t_max, out);
+    set_kernel_args(k, ob, db, nodes, tris, blocks, t_max, out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     std::vector<cl_int> blocked(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(cl_int), blocked.data());

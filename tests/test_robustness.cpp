@@ -16,6 +16,7 @@
 #include "scene/gltf_loader.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
+#include "support/single_triangle_blocks.h"
 #include "support/test_options.h"
 #include "types.h"
 
@@ -100,12 +101,14 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
     cl::Buffer bo(dev.context, CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), o.data());
     cl::Buffer bd(dev.context, CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), d.data());
     cl::Buffer bt(dev.context, CL_MEM_COPY_HOST_PTR, tris.size() * sizeof(Triangle), tris.data());
+    std::vector<TriangleBlock> singles = test::single_triangle_blocks(tris);
+    cl::Buffer bs(dev.context, CL_MEM_COPY_HOST_PTR, singles.size() * sizeof(TriangleBlock), singles.data());
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     // Hits that break the rules: on a degenerate triangle, non-finite, at the wrong t,
     // or outside the sliver's extent.
     auto violations = [&](const char* kernel) {
         cl::Kernel k(program, kernel);
-        set_kernel_args(k, bo, bd, bt, static_cast<cl_uint>(tris.size()), out);
+        set_kernel_args(k, bo, bd, bt, bs, static_cast<cl_uint>(tris.size()), out);
         dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
         std::vector<pcl_float4> h(n);
         dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), h.data());

@@ -2,13 +2,14 @@
 // the surface they leave, on either side, including surfaces lying exactly on a
 // coordinate plane (where the hit point is exact, its error bound is zero and only the
 // intersection test's own conservative t bound prevents a self-hit), and at coordinates
-// from 1e-6 to 1e6. Naive variant that fails: no t > delta-t check in ray_triangle (the
+// from 1e-6 to 1e6. Naive variant that fails: no t > delta-t check in ray_triangle_block (the
 // Cornell box's x = 0 wall then loses next event estimation on one of its triangles).
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "bvh/bvh_builder.h"
+#include "bvh/triangle_blocks.h"
 #include "support/device_fixture.h"
 #include "support/random_meshes.h"
 
@@ -31,12 +32,15 @@ Counts spawn(const std::vector<glm::vec3>& v, std::size_t rays, bool planar, std
         tris.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
                                 {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
                                 {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(bvh.nodes, 0, tris, blocks);
     cl::Buffer nodes(dev.context, CL_MEM_COPY_HOST_PTR, bvh.nodes.size() * sizeof(BvhNode), bvh.nodes.data());
     cl::Buffer tb(dev.context, CL_MEM_COPY_HOST_PTR, tris.size() * sizeof(Triangle), tris.data());
+    cl::Buffer bb(dev.context, CL_MEM_COPY_HOST_PTR, blocks.size() * sizeof(TriangleBlock), blocks.data());
     cl::Buffer hit(dev.context, CL_MEM_WRITE_ONLY, rays * sizeof(cl_int));
     cl::Buffer src(dev.context, CL_MEM_WRITE_ONLY, rays * sizeof(cl_int));
     cl::Kernel k(program, "test_spawned_ray_hits");
-    set_kernel_args(k, nodes, tb, static_cast<cl_uint>(tris.size()), seed, hit, src);
+    set_kernel_args(k, nodes, tb, bb, static_cast<cl_uint>(tris.size()), seed, hit, src);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(rays));
     std::vector<cl_int> h(rays), s(rays);
     dev.queue.enqueueReadBuffer(hit, CL_TRUE, 0, rays * sizeof(cl_int), h.data());

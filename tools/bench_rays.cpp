@@ -96,7 +96,7 @@ Stats time_runs(int runs, std::size_t rays, F f)
 struct Pathcl {
     ClDevice dev;
     cl::Program program;
-    cl::Buffer nodes, triangles;
+    cl::Buffer nodes, triangles, blocks;
 
     Pathcl(int device, const SceneArrays& ds) : dev(open_device(device))
     {
@@ -119,6 +119,9 @@ struct Pathcl {
                            const_cast<BvhNode*>(ds.nodes.data()));
         triangles = cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                                ds.triangles.size() * sizeof(Triangle), const_cast<Triangle*>(ds.triangles.data()));
+        blocks = cl::Buffer(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                            ds.triangle_blocks.size() * sizeof(TriangleBlock),
+                            const_cast<TriangleBlock*>(ds.triangle_blocks.data()));
     }
 
     Stats run(const Rays& r, bool any_hit, int runs)
@@ -131,9 +134,9 @@ struct Pathcl {
         cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
         cl::Kernel k(program, any_hit ? "test_any_hit" : "test_trace_closest");
         if (any_hit)
-            set_kernel_args(k, o, d, nodes, triangles, INFINITY, out);
+            set_kernel_args(k, o, d, nodes, triangles, blocks, INFINITY, out);
         else
-            set_kernel_args(k, o, d, nodes, triangles, out);
+            set_kernel_args(k, o, d, nodes, triangles, blocks, out);
         std::size_t global = (n + 63) / 64 * 64;
         if (global != n)
             throw Error("bench_rays: the ray count must be a multiple of 64");

@@ -14,10 +14,6 @@ namespace {
 constexpr int kBins = 32;
 constexpr float kTraversalCost = 1.0f; // relative to one triangle test
 constexpr float kIntersectCost = 1.0f;
-// The eight-wide tree's costs (choose_wide): a node visit (one float8 slab test and the
-// ordering of the children entered) relative to one triangle test.
-constexpr float kWideNodeCost = 1.0f;
-
 // A box bound moved outwards by one ulp, and by at least twice the smallest normal float
 // near zero, where one ulp is a denormal: a device without denormals (optional in OpenCL
 // 1.2) would flush the distance to the moved plane to zero, and 0 x inf is NaN again.
@@ -176,7 +172,7 @@ struct Builder {
     float slot_cost(const Child& c, int slots) const
     {
         if (c.count > 0)
-            return c.box.area() * kIntersectCost * static_cast<float>(c.count);
+            return c.box.area() * kBvhLeafCost;
         return cost[static_cast<std::size_t>(c.index)][static_cast<std::size_t>(slots - 1)];
     }
     // The best split of binary node n's two children over at most `slots` slots (>= 2);
@@ -218,9 +214,8 @@ struct Builder {
             first_triangle[k] = first;
             const float area = box.area();
             int left = 1;
-            const float node = area * kWideNodeCost + split_cost(static_cast<int>(k), kBvhWidth, &left);
-            const float leaf = tris <= kBvhMaxLeafSize ? area * kIntersectCost * static_cast<float>(tris)
-                                                       : std::numeric_limits<float>::infinity();
+            const float node = area * kBvhWideNodeCost + split_cost(static_cast<int>(k), kBvhWidth, &left);
+            const float leaf = tris <= kBvhMaxLeafSize ? area * kBvhLeafCost : std::numeric_limits<float>::infinity();
             as_leaf[k] = leaf <= node;
             cost[k][0] = std::min(leaf, node);
             choice[k][0] = static_cast<std::int8_t>(left); // the wide node's split, from `node`

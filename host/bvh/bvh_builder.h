@@ -2,6 +2,7 @@
 // array the kernels traverse with a fixed stack (kernels/bvh/traversal.cl) by the
 // collapse of least expected cost (Ylitie, Karras and Laine 2017): each binary subtree
 // becomes a leaf of up to eight triangles, a wide node, or several slots of its parent.
+// (The device tests a leaf's triangles from a block of eight lanes: triangle_blocks.h.)
 // Node 0 is the root and is always an inner node; leaves live inside their parent as
 // (first triangle, count).
 #pragma once
@@ -37,6 +38,12 @@ constexpr int kBvhMaxDepth = 60;
 constexpr int kBvhWidth = BVH_WIDTH;
 constexpr int kBvhStackSize = BVH_STACK_SIZE;
 constexpr int kBvhMaxLeafSize = 8;
+// The eight-wide tree's cost model (the collapse of least cost), relative to one
+// triangle test of the binary SAH: a node visit (one float8 slab test and the ordering of
+// the children entered), and a leaf's test, which takes its up to eight triangles in one
+// pass of float8 arithmetic (ray_triangle_block) and so costs the same for any number.
+constexpr float kBvhWideNodeCost = 1.0f;
+constexpr float kBvhLeafCost = 2.0f;
 
 // stack_size: the traversal stack the tree must fit (the kernels'; tests pass less to
 // reach the fallback to nodes of at most four children).

@@ -10,6 +10,7 @@ static_assert(sizeof(pcl_float4) == 16 && alignof(pcl_float4) == 16);
 static_assert(sizeof(Ray) == 32);
 static_assert(sizeof(BvhNode) == 256 && offsetof(BvhNode, index) == 192 && offsetof(BvhNode, count) == 224);
 static_assert(sizeof(Triangle) == 48);
+static_assert(sizeof(TriangleBlock) == 320 && offsetof(TriangleBlock, triangle) == 288);
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, to_render) == 48 && offsetof(Instance, root) == 96);
 static_assert(sizeof(TriangleShading) == 64 && offsetof(TriangleShading, material) == 48);
 static_assert(sizeof(TriangleTexcoords) == 32 && offsetof(TriangleTexcoords, uv2) == 16);

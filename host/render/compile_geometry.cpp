@@ -1,6 +1,7 @@
 // Geometry for the device: the BVH over the scene's triangles, the triangles in its leaf
-// order (positions for intersection, normals and material for shading), and the
-// optional per-vertex attributes in the same order.
+// order (positions, normals and material for shading; each leaf's copied into a block
+// of eight lanes for intersection), and the optional per-vertex attributes in the same
+// order.
 //
 // With instanced meshes (FEATURE_INSTANCES) the BVH has two levels, in one node array: the
 // top-level tree first (node 0 its root), over the instances' render-space boxes, its
@@ -12,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bvh/triangle_blocks.h"
 #include "common/error.h"
 #include "render/compile_scene.h"
 #include "scene/alpha_cutouts.h"
@@ -40,8 +42,9 @@ void affine_rows(const glm::dmat4& m, pcl_float4 rows[3])
                    static_cast<float>(m[3][r])};
 }
 
-// The two-level BVH; returns the stored triangles in leaf order (each tree's in turn).
-std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& out)
+// The two-level BVH; returns the stored triangles in leaf order (each tree's in turn) and
+// sets top_nodes to the number of the top-level tree's nodes, which come first.
+std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& out, std::size_t& top_nodes)
 {
     // The trees: triangles drawn once (if any, or if nothing else), then each mesh.
     struct Tree {
@@ -113,6 +116,7 @@ std::vector<std::uint32_t> build_two_levels(const Scene& scene, CompiledScene& o
     // One node array: the top level, then each tree, indices moved by where it lands.
     SceneArrays& a = out.arrays;
     a.nodes = top_bvh.nodes;
+    top_nodes = a.nodes.size();
     std::vector<std::uint32_t> order;
     int deepest = 0;
     for (Tree& t : trees) {
@@ -157,8 +161,9 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
     auto start = std::chrono::steady_clock::now();
     const std::size_t n = scene.triangles.size();
     SceneArrays& a = out.arrays;
+    std::size_t top_nodes = 0; // nodes whose leaves name instances, not triangles
     if (out.features.has(FEATURE_INSTANCES)) {
-        out.bvh.triangle_order = build_two_levels(scene, out);
+        out.bvh.triangle_order = build_two_levels(scene, out, top_nodes);
     } else {
         if (!scene.instances.empty())
             throw std::logic_error("compile_geometry: a scene with instances needs FEATURE_INSTANCES");
@@ -180,6 +185,7 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         // The emitter index is set by compile_lights.
         a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
     }
+    make_triangle_blocks(a.nodes, top_nodes, a.triangles, a.triangle_blocks);
     // A program with every feature compiled in (--specialization all) reads these arrays
     // for scenes without them: tangents are read only through a normal texture or an
     // anisotropic material, so any value does; vertex colours multiply, so white.

@@ -71,6 +71,12 @@ static inline float8 ray_box_entry8(const RayTraversal* r, __global const BvhNod
     return select((float8)(INFINITY), tnear, islessequal(tnear, tfar));
 }
 
+/* The lowest set bit's position (lanes != 0). */
+static inline int lowest_lane(uint lanes)
+{
+    return 31 - (int)clz(lanes & (0u - lanes));
+}
+
 /* Closest hit along origin + dir, t in (0, t_max). Children are visited nearest entry
  * first; the others wait on the stack with their entry distance and are dropped once a
  * closer hit is known. A hit on an alpha-tested triangle counts only if its coverage
@@ -78,7 +84,9 @@ static inline float8 ray_box_entry8(const RayTraversal* r, __global const BvhNod
 static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 dir, float t_max)
 {
     __global const BvhNode* nodes = kd->nodes;
-    __global const Triangle* triangles = kd->triangles;
+#ifdef PATHCL_HAS_ALPHA
+    __global const Triangle* triangles = kd->triangles; /* their alpha flags */
+#endif
     RayTraversal r = ray_traversal_setup(origin, dir);
 #ifdef PATHCL_HAS_ALPHA
     uint alpha_seed = alpha_ray_seed(origin, dir);
@@ -122,17 +130,34 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
         } else
 #endif
             if (cur.y > 0) {
-            for (int i = cur.x; i < cur.x + cur.y; ++i) {
-                float t, b1, b2;
-                if (ray_triangle(&r, &triangles[i], hit.t, &t, &b1, &b2)) {
+            /* The leaf's triangles at once; then the lanes hit, in triangle order, each
+             * asked again against the closest hit so far: the hits of testing them one by
+             * one. */
+            __global const TriangleBlock* block = &kd->triangle_blocks[cur.x];
+            float8 t8, b18, b28, ts8, det8;
+            int8 hit8 = ray_triangle_block(&r, block, hit.t, &t8, &b18, &b28, &ts8, &det8);
+            uint lanes = lane_bits(hit8);
+            if (lanes != 0u) {
+                float t[8], b1[8], b2[8], ts[8], det_abs[8];
+                int tri[8];
+                vstore8(t8, 0, t);
+                vstore8(b18, 0, b1);
+                vstore8(b28, 0, b2);
+                vstore8(ts8, 0, ts);
+                vstore8(det8, 0, det_abs);
+                vstore8(block->triangle, 0, tri);
+                for (; lanes != 0u; lanes &= lanes - 1u) {
+                    int j = lowest_lane(lanes);
+                    if (!(ts[j] < hit.t * det_abs[j]))
+                        continue;
 #ifdef PATHCL_HAS_ALPHA
-                    if (triangles[i].v0.w != 0.0f && !alpha_keeps_hit(kd, alpha_seed, i, b1, b2))
+                    if (triangles[tri[j]].v0.w != 0.0f && !alpha_keeps_hit(kd, alpha_seed, tri[j], b1[j], b2[j]))
                         continue;
 #endif
-                    hit.t = t;
-                    hit.b1 = b1;
-                    hit.b2 = b2;
-                    hit.triangle = i;
+                    hit.t = t[j];
+                    hit.b1 = b1[j];
+                    hit.b2 = b2[j];
+                    hit.triangle = tri[j];
 #ifdef PATHCL_HAS_INSTANCES
                     hit.instance = instance;
 #endif
@@ -188,7 +213,9 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
 static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 dir, float t_max)
 {
     __global const BvhNode* nodes = kd->nodes;
-    __global const Triangle* triangles = kd->triangles;
+#ifdef PATHCL_HAS_ALPHA
+    __global const Triangle* triangles = kd->triangles; /* their alpha flags */
+#endif
     RayTraversal r = ray_traversal_setup(origin, dir);
     float visibility = 1.0f;
     int2 stack[TRAVERSAL_STACK_SIZE];
@@ -217,19 +244,31 @@ static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 d
         } else
 #endif
             if (cur.y > 0) {
-            for (int i = cur.x; i < cur.x + cur.y; ++i) {
-                float t, b1, b2;
-                if (ray_triangle(&r, &triangles[i], t_max, &t, &b1, &b2)) {
+            __global const TriangleBlock* block = &kd->triangle_blocks[cur.x];
+            float8 t8, b18, b28, ts8, det8;
+            int8 hit8 = ray_triangle_block(&r, block, t_max, &t8, &b18, &b28, &ts8, &det8);
 #ifdef PATHCL_HAS_ALPHA
-                    if (triangles[i].v0.w != 0.0f) {
-                        visibility *= 1.0f - surface_coverage(kd, i, b1, b2);
+            uint lanes = lane_bits(hit8);
+            if (lanes != 0u) {
+                float b1[8], b2[8];
+                int tri[8];
+                vstore8(b18, 0, b1);
+                vstore8(b28, 0, b2);
+                vstore8(block->triangle, 0, tri);
+                for (; lanes != 0u; lanes &= lanes - 1u) {
+                    int j = lowest_lane(lanes);
+                    if (triangles[tri[j]].v0.w != 0.0f) {
+                        visibility *= 1.0f - surface_coverage(kd, tri[j], b1[j], b2[j]);
                         if (visibility > 0.0f)
                             continue;
                     }
-#endif
                     return 0.0f;
                 }
             }
+#else
+            if (any(hit8))
+                return 0.0f;
+#endif
         } else {
             __global const BvhNode* node = &nodes[cur.x];
             float8 entry = ray_box_entry8(&r, node, t_max);

@@ -19,7 +19,8 @@ typedef struct {
     float3 inv_dir;
     /* Woop's shear: the permutation making dir.z the largest axis, and shear constants. */
     uint4 permutation;
-    float3 shear; /* (Sx, Sy, Sz) */
+    float3 shear;           /* (Sx, Sy, Sz) */
+    float3 origin_permuted; /* the origin's coordinates in permuted order */
 } RayTraversal;
 
 static inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
@@ -41,66 +42,99 @@ static inline RayTraversal ray_traversal_setup(float3 origin, float3 dir)
     r.permutation = (uint4)(kx, ky, kz, 3u);
     float4 pd = shuffle(d4, r.permutation);
     r.shear = (float3)(pd.x / pd.z, pd.y / pd.z, 1.0f / pd.z);
+    r.origin_permuted = shuffle((float4)(origin, 0.0f), r.permutation).xyz;
     return r;
 }
 
-/* Watertight ray/triangle test. On a hit closer than *t_max, updates hit and *t_max. */
-static inline bool ray_triangle(const RayTraversal* r, __global const Triangle* tri, float t_max, float* t_out,
-                                float* b1_out, float* b2_out)
+/* Bit k set where lane k of mask is set (mask lanes 0 or -1): one branch for "any lane". */
+static inline uint lane_bits(int8 mask)
 {
-    float4 o = (float4)(r->origin, 0.0f);
-    float4 a = shuffle(tri->v0 - o, r->permutation);
-    float4 b = shuffle(tri->v1 - o, r->permutation);
-    float4 c = shuffle(tri->v2 - o, r->permutation);
+    int8 b = mask & (int8)(1, 2, 4, 8, 16, 32, 64, 128);
+    int4 h = b.lo | b.hi;
+    int2 q = h.lo | h.hi;
+    return (uint)(q.x | q.y);
+}
+
+/* The traversal's leaf test is called from both traversals of the path kernel, which
+ * makes it too large for LLVM's inliner to copy; a call costs its five vector results a
+ * trip through memory. Clang-based OpenCL compilers take the attribute. */
+#ifdef __clang__
+#define PATHCL_HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define PATHCL_HOT_INLINE static inline
+#endif
+
+/* The watertight test of the up to eight triangles of a leaf's block (types.h
+ * TriangleBlock) at once, one per lane; each lane's arithmetic is that of testing its
+ * triangle alone, so a lane's t and barycentrics do not depend on its neighbours. The
+ * ray's permutation picks the block's rows. Returns the lanes hit at t in (0, t_max), with
+ * t and the barycentric weights of v1 and v2; *ts_out and *det_abs_out are the two sides
+ * of the comparison with t_max (ts < t_max * det_abs), so that a caller can ask a lane
+ * again, exactly as testing it later would, after a closer hit has lowered t_max. */
+PATHCL_HOT_INLINE int8 ray_triangle_block(const RayTraversal* r, __global const TriangleBlock* block, float t_max,
+                                          float8* t_out, float8* b1_out, float8* b2_out, float8* ts_out,
+                                          float8* det_abs_out)
+{
+    __global const float8* p = block->vertex;
+    uint kx = r->permutation.x, ky = r->permutation.y, kz = r->permutation.z;
+    float3 o = r->origin_permuted;
+    float8 a_x = p[kx] - o.x, a_y = p[ky] - o.y, a_z = p[kz] - o.z;
+    float8 b_x = p[3 + kx] - o.x, b_y = p[3 + ky] - o.y, b_z = p[3 + kz] - o.z;
+    float8 c_x = p[6 + kx] - o.x, c_y = p[6 + ky] - o.y, c_z = p[6 + kz] - o.z;
     float sx = r->shear.x, sy = r->shear.y, sz = r->shear.z;
-    float ax = a.x - sx * a.z, ay = a.y - sy * a.z;
-    float bx = b.x - sx * b.z, by = b.y - sy * b.z;
-    float cx = c.x - sx * c.z, cy = c.y - sy * c.z;
-    float u = cx * by - cy * bx;
-    float v = ax * cy - ay * cx;
-    float w = bx * ay - by * ax;
+    float8 ax = a_x - sx * a_z, ay = a_y - sy * a_z;
+    float8 bx = b_x - sx * b_z, by = b_y - sy * b_z;
+    float8 cx = c_x - sx * c_z, cy = c_y - sy * c_z;
+    float8 u = cx * by - cy * bx;
+    float8 v = ax * cy - ay * cx;
+    float8 w = bx * ay - by * ax;
 #ifdef cl_khr_fp64
     /* An edge function of exactly zero may be a rounding artefact: redo it in double. */
-    if (u == 0.0f || v == 0.0f || w == 0.0f) {
-        u = (float)((double)cx * (double)by - (double)cy * (double)bx);
-        v = (float)((double)ax * (double)cy - (double)ay * (double)cx);
-        w = (float)((double)bx * (double)ay - (double)by * (double)ax);
+    int8 zero = (u == 0.0f) | (v == 0.0f) | (w == 0.0f);
+    if (lane_bits(zero) != 0u) {
+        double8 dax = convert_double8(ax), day = convert_double8(ay), dbx = convert_double8(bx);
+        double8 dby = convert_double8(by), dcx = convert_double8(cx), dcy = convert_double8(cy);
+        u = select(u, convert_float8(dcx * dby - dcy * dbx), zero);
+        v = select(v, convert_float8(dax * dcy - day * dcx), zero);
+        w = select(w, convert_float8(dbx * day - dby * dax), zero);
     }
 #endif
-    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f))
-        return false;
-    float det = u + v + w;
-    if (det == 0.0f)
-        return false;
-    float az = sz * a.z, bz = sz * b.z, cz = sz * c.z;
-    float t_scaled = u * az + v * bz + w * cz;
-    /* Compare t with (0, t_max) without dividing: flip signs to make det positive. */
-    float sign = (det < 0.0f) ? -1.0f : 1.0f;
-    float det_abs = det * sign;
-    float ts = t_scaled * sign;
-    if (!(ts > 0.0f) || !(ts < t_max * det_abs)) /* NaN (a degenerate ray) never hits */
-        return false;
-    float inv_det = 1.0f / det;
-    float t = t_scaled * inv_det;
+    int8 hit = ~(((u < 0.0f) | (v < 0.0f) | (w < 0.0f)) & ((u > 0.0f) | (v > 0.0f) | (w > 0.0f)));
+    float8 det = u + v + w;
+    hit &= det != 0.0f;
+    float8 az = sz * a_z, bz = sz * b_z, cz = sz * c_z;
+    float8 t_scaled = u * az + v * bz + w * cz;
+    /* Compare t with (0, t_max) without dividing: flip signs to make det positive; NaN (a
+     * degenerate ray, an empty lane) never hits. */
+    float8 sign = select((float8)(1.0f), (float8)(-1.0f), det < 0.0f);
+    float8 det_abs = det * sign;
+    float8 ts = t_scaled * sign;
+    hit &= (ts > 0.0f) & (ts < t_max * det_abs);
+    float8 inv_det = 1.0f / det;
+    float8 t = t_scaled * inv_det;
     /* Conservative bound on the rounding error of t (pbrt-v3, section 3.9.6): a hit closer
      * than that may be the surface the ray starts on. Spawned origins are offset by the
      * hit point's error bound, but that bound is zero for a point exactly on a coordinate
-     * plane (x = 0 walls), so this test is what stops those rays re-hitting the plane. */
-    float max_zt = fmax(fabs(az), fmax(fabs(bz), fabs(cz)));
-    float max_xt = fmax(fabs(ax), fmax(fabs(bx), fabs(cx)));
-    float max_yt = fmax(fabs(ay), fmax(fabs(by), fabs(cy)));
-    float delta_x = FLOAT_GAMMA(5) * (max_xt + max_zt);
-    float delta_y = FLOAT_GAMMA(5) * (max_yt + max_zt);
-    float delta_z = FLOAT_GAMMA(3) * max_zt;
-    float delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    float max_e = fmax(fabs(u), fmax(fabs(v), fabs(w)));
-    float delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
-    if (!(t > delta_t))
-        return false;
+     * plane (x = 0 walls), so this test is what stops those rays re-hitting the plane.
+     * max, not fmax (a compare and a blend less per lane): they differ only where an
+     * operand is NaN, which finite vertices and a finite ray never give (the one-triangle
+     * test this replaced used fmax; renders were bit for bit the same). */
+    float8 max_zt = max(fabs(az), max(fabs(bz), fabs(cz)));
+    float8 max_xt = max(fabs(ax), max(fabs(bx), fabs(cx)));
+    float8 max_yt = max(fabs(ay), max(fabs(by), fabs(cy)));
+    float8 delta_x = FLOAT_GAMMA(5) * (max_xt + max_zt);
+    float8 delta_y = FLOAT_GAMMA(5) * (max_yt + max_zt);
+    float8 delta_z = FLOAT_GAMMA(3) * max_zt;
+    float8 delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    float8 max_e = max(fabs(u), max(fabs(v), fabs(w)));
+    float8 delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
+    hit &= (t > delta_t) & (block->triangle >= 0);
     *t_out = t;
     *b1_out = v * inv_det;
     *b2_out = w * inv_det;
-    return true;
+    *ts_out = ts;
+    *det_abs_out = det_abs;
+    return hit;
 }
 
 #pragma OPENCL FP_CONTRACT ON

@@ -7,28 +7,33 @@
 #include "light/light_sample.cl"
 #include "sample/sampler.cl"
 
-/* The traversal reads the scene through KernelData; these kernels bind only the BVH and
- * the triangles (programs without PATHCL_HAS_ALPHA read nothing else). */
-static inline KernelData geometry_only(__global const BvhNode* nodes, __global const Triangle* triangles)
+/* The traversal reads the scene through KernelData; these kernels bind only the BVH, the
+ * triangles and their blocks (programs without PATHCL_HAS_ALPHA read nothing else). */
+static inline KernelData geometry_only(__global const BvhNode* nodes, __global const Triangle* triangles,
+                                       __global const TriangleBlock* blocks)
 {
     KernelData kd;
     kd.nodes = nodes;
     kd.triangles = triangles;
+    kd.triangle_blocks = blocks;
     return kd;
 }
 
 __kernel void test_trace_closest(__global const float4* origins, __global const float4* dirs,
                                  __global const BvhNode* nodes, __global const Triangle* triangles,
-                                 __global float4* out)
+                                 __global const TriangleBlock* blocks, __global float4* out)
 {
     uint i = get_global_id(0);
-    KernelData kd = geometry_only(nodes, triangles);
+    KernelData kd = geometry_only(nodes, triangles, blocks);
     Hit h = bvh_closest_hit(&kd, origins[i].xyz, dirs[i].xyz, INFINITY);
     out[i] = (float4)(h.t, h.b1, h.b2, as_float(h.triangle));
 }
 
+/* Every triangle tested on its own: `singles` holds one block per triangle, its triangle
+ * in lane 0 (the traversal's own test, without the tree and without a leaf's lanes). */
 __kernel void test_trace_brute_force(__global const float4* origins, __global const float4* dirs,
-                                     __global const Triangle* triangles, uint count, __global float4* out)
+                                     __global const Triangle* triangles, __global const TriangleBlock* singles,
+                                     uint count, __global float4* out)
 {
     uint i = get_global_id(0);
     RayTraversal r = ray_traversal_setup(origins[i].xyz, dirs[i].xyz);
@@ -37,30 +42,32 @@ __kernel void test_trace_brute_force(__global const float4* origins, __global co
     h.b1 = h.b2 = 0.0f;
     h.triangle = -1;
     for (uint k = 0; k < count; ++k) {
-        float t, b1, b2;
-        if (ray_triangle(&r, &triangles[k], h.t, &t, &b1, &b2)) {
-            h.t = t;
-            h.b1 = b1;
-            h.b2 = b2;
-            h.triangle = (int)k;
+        float8 t, b1, b2, ts, det_abs;
+        if (ray_triangle_block(&r, &singles[k], h.t, &t, &b1, &b2, &ts, &det_abs).s0) {
+            h.t = t.s0;
+            h.b1 = b1.s0;
+            h.b2 = b2.s0;
+            h.triangle = singles[k].triangle.s0;
         }
     }
     out[i] = (float4)(h.t, h.b1, h.b2, as_float(h.triangle));
 }
 
 __kernel void test_any_hit(__global const float4* origins, __global const float4* dirs, __global const BvhNode* nodes,
-                           __global const Triangle* triangles, float t_max, __global int* out)
+                           __global const Triangle* triangles, __global const TriangleBlock* blocks, float t_max,
+                           __global int* out)
 {
     uint i = get_global_id(0);
-    KernelData kd = geometry_only(nodes, triangles);
+    KernelData kd = geometry_only(nodes, triangles, blocks);
     out[i] = bvh_visibility(&kd, origins[i].xyz, dirs[i].xyz, t_max) == 0.0f;
 }
 
 /* Spawns one ray per work-item from a random point on a random triangle (through the
  * kernels' own barycentric_point and offset_ray_origin), in a random direction on either
  * side, and returns the triangle it hits first (-1: none). */
-__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles, uint count,
-                                    uint seed, __global int* hit_triangle, __global int* source_triangle)
+__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles,
+                                    __global const TriangleBlock* blocks, uint count, uint seed,
+                                    __global int* hit_triangle, __global int* source_triangle)
 {
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
@@ -76,7 +83,7 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
     float r = sqrt(fmax(0.0f, 1.0f - z * z));
     float3 d = (float3)(r * cos(2.0f * PI_F * w.y), r * sin(2.0f * PI_F * w.y), z);
     float3 o = offset_ray_origin(p, err, n, d);
-    KernelData kd = geometry_only(nodes, triangles);
+    KernelData kd = geometry_only(nodes, triangles, blocks);
     hit_triangle[i] = bvh_closest_hit(&kd, o, d, INFINITY).triangle;
     source_triangle[i] = (int)t;
 }
@@ -112,7 +119,8 @@ __kernel void test_light_pick(__global const LightAliasEntry* distribution, uint
  * Moller-Trumbore without a determinant check, its range checks written as "reject if
  * outside", which lets NaN through. Never used for rendering. */
 __kernel void test_trace_brute_force_naive(__global const float4* origins, __global const float4* dirs,
-                                           __global const Triangle* triangles, uint count, __global float4* out)
+                                           __global const Triangle* triangles, __global const TriangleBlock* singles,
+                                           uint count, __global float4* out)
 {
     uint i = get_global_id(0);
     float3 o = origins[i].xyz, d = dirs[i].xyz;

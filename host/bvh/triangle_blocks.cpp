@@ -1,0 +1,46 @@
+#include "bvh/triangle_blocks.h"
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "bvh/bvh_builder.h"
+
+namespace pathcl {
+
+void make_triangle_blocks(std::vector<BvhNode>& nodes, std::size_t first_node, const std::vector<Triangle>& triangles,
+                          std::vector<TriangleBlock>& blocks)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (std::size_t n = first_node; n < nodes.size(); ++n)
+        for (int k = 0; k < kBvhWidth; ++k) {
+            const std::int32_t count = nodes[n].count.s[k], first = nodes[n].index.s[k];
+            if (count <= 0)
+                continue;
+            if (count > kBvhMaxLeafSize || first < 0 || static_cast<std::size_t>(first) + count > triangles.size())
+                throw std::logic_error("make_triangle_blocks: leaf " + std::to_string(first) + "+" +
+                                       std::to_string(count) + " is not a leaf of up to eight stored triangles");
+            TriangleBlock b;
+            for (pcl_float8& row : b.vertex)
+                for (float& x : row.s)
+                    x = nan;
+            for (std::int32_t& t : b.triangle.s)
+                t = -1;
+            for (std::int32_t j = 0; j < count; ++j) {
+                const Triangle& t = triangles[static_cast<std::size_t>(first + j)];
+                const pcl_float4* v[3] = {&t.v0, &t.v1, &t.v2};
+                for (int i = 0; i < 3; ++i) {
+                    b.vertex[3 * i + 0].s[j] = v[i]->x;
+                    b.vertex[3 * i + 1].s[j] = v[i]->y;
+                    b.vertex[3 * i + 2].s[j] = v[i]->z;
+                }
+                b.triangle.s[j] = first + j;
+            }
+            if (blocks.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+                throw std::length_error("make_triangle_blocks: more leaves than a BvhNode can index");
+            nodes[n].index.s[k] = static_cast<std::int32_t>(blocks.size());
+            blocks.push_back(b);
+        }
+}
+
+} // namespace pathcl

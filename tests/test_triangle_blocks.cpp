@@ -1,0 +1,100 @@
+// The traversal's leaf blocks (host/bvh/triangle_blocks.cpp): every leaf's triangles in
+// the lanes of its own block, in leaf order, and nothing else in them. The traversal
+// tests (test_bvh_traversal.cpp) check the hits found through them against every triangle
+// tested one by one.
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "bvh/bvh_builder.h"
+#include "bvh/triangle_blocks.h"
+#include "support/random_meshes.h"
+
+namespace pathcl {
+namespace {
+
+std::vector<Triangle> leaf_order_triangles(const std::vector<glm::vec3>& v, const Bvh& bvh)
+{
+    std::vector<Triangle> tris;
+    for (std::uint32_t t : bvh.triangle_order)
+        tris.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
+                                {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
+                                {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    return tris;
+}
+
+TEST(TriangleBlocks, EveryLeafNamesABlockOfItsTrianglesInOrder)
+{
+    auto v = test::jittered_sphere(20, 40, 3);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    const std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    std::vector<BvhNode> nodes = bvh.nodes;
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(nodes, 0, tris, blocks);
+    ASSERT_EQ(blocks.size(), static_cast<std::size_t>(bvh.leaf_count));
+    std::set<int> seen_blocks, seen_triangles;
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        for (int k = 0; k < kBvhWidth; ++k) {
+            const int count = bvh.nodes[n].count.s[k], first = bvh.nodes[n].index.s[k];
+            EXPECT_EQ(nodes[n].count.s[k], count);
+            if (count == 0) { // inner nodes and empty slots keep their index
+                EXPECT_EQ(nodes[n].index.s[k], first);
+                continue;
+            }
+            const int b = nodes[n].index.s[k];
+            ASSERT_GE(b, 0);
+            ASSERT_LT(static_cast<std::size_t>(b), blocks.size());
+            EXPECT_TRUE(seen_blocks.insert(b).second) << "block " << b << " named twice";
+            const TriangleBlock& block = blocks[static_cast<std::size_t>(b)];
+            for (int lane = 0; lane < kBvhWidth; ++lane) {
+                if (lane >= count) {
+                    EXPECT_EQ(block.triangle.s[lane], -1);
+                    for (const pcl_float8& row : block.vertex)
+                        EXPECT_TRUE(std::isnan(row.s[lane]));
+                    continue;
+                }
+                const int t = first + lane;
+                EXPECT_EQ(block.triangle.s[lane], t);
+                seen_triangles.insert(t);
+                const Triangle& tri = tris[static_cast<std::size_t>(t)];
+                const pcl_float4* vert[3] = {&tri.v0, &tri.v1, &tri.v2};
+                for (int i = 0; i < 3; ++i) {
+                    EXPECT_EQ(block.vertex[3 * i + 0].s[lane], vert[i]->x);
+                    EXPECT_EQ(block.vertex[3 * i + 1].s[lane], vert[i]->y);
+                    EXPECT_EQ(block.vertex[3 * i + 2].s[lane], vert[i]->z);
+                }
+            }
+        }
+    EXPECT_EQ(seen_triangles.size(), tris.size());
+}
+
+TEST(TriangleBlocks, NodesBeforeTheFirstAreLeftAlone)
+{
+    // A two-level BVH's top-level leaves name instances, not triangles.
+    auto v = test::random_triangle_soup(200, 4);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    const std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    std::vector<BvhNode> nodes = bvh.nodes;
+    nodes.insert(nodes.begin(), bvh.nodes.begin(), bvh.nodes.end()); // a stand-in top level
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(nodes, bvh.nodes.size(), tris, blocks);
+    EXPECT_EQ(blocks.size(), static_cast<std::size_t>(bvh.leaf_count));
+    for (std::size_t n = 0; n < bvh.nodes.size(); ++n)
+        for (int k = 0; k < kBvhWidth; ++k)
+            EXPECT_EQ(nodes[n].index.s[k], bvh.nodes[n].index.s[k]);
+}
+
+TEST(TriangleBlocks, ALeafPastTheTrianglesIsRefused)
+{
+    auto v = test::random_triangle_soup(50, 5);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    tris.pop_back();
+    std::vector<BvhNode> nodes = bvh.nodes;
+    std::vector<TriangleBlock> blocks;
+    EXPECT_THROW(make_triangle_blocks(nodes, 0, tris, blocks), std::logic_error);
+}
+
+} // namespace
+} // namespace pathcl
