@@ -60,7 +60,8 @@ typedef struct {
 #define INSTANCE_IDENTITY 1 /* both maps are the identity: the triangles are in render space */
 #define INSTANCE_MIRRORED 2 /* the map's determinant is negative: clockwise is the front (glTF) */
 
-/* Triangle positions in BVH leaf order, for intersection only: 48 bytes. v0.w is
+/* Triangle positions in BVH leaf order (the hit point and geometric normal of shading;
+ * the traversal tests the copies in TriangleBlock): 48 bytes. v0.w is
  * TRIANGLE_ALPHA_TESTED when the triangle's material has alphaMode MASK or BLEND and its
  * alpha can fall short of opaque (the traversal then asks texture/alpha.cl whether a hit
  * counts), else 0; every other w is 0. */

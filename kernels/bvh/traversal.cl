@@ -1,5 +1,6 @@
 /* Closest-hit and any-hit (visibility) traversal of the eight-wide BVH: one float8 slab
- * test for the eight children of a node, children entered nearest first.
+ * test for the eight children of a node, children entered nearest first, and one float8
+ * pass of the triangle test for a leaf's triangles (its TriangleBlock).
  *
  * Two-level BVH (PATHCL_HAS_INSTANCES): node 0 is the root of a top-level tree whose
  * leaves name instances (types.h Instance); each instance's mesh has its own tree in the
