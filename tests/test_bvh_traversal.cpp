@@ -11,8 +11,8 @@
 #include "bvh/bvh_builder.h"
 #include "bvh/triangle_blocks.h"
 #include "support/device_fixture.h"
+#include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
-#include "support/single_triangle_blocks.h"
 
 namespace pathcl {
 namespace {
@@ -33,10 +33,7 @@ DeviceMesh make_mesh(const std::vector<glm::vec3>& v)
     Bvh bvh = build_bvh(bvh_input_from_triangles(v));
     DeviceMesh m;
     m.nodes = bvh.nodes;
-    for (std::uint32_t t : bvh.triangle_order)
-        m.triangles.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
-                                       {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
-                                       {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    m.triangles = test::leaf_order_triangles(v, bvh);
     make_triangle_blocks(m.nodes, 0, m.triangles, m.blocks);
     m.singles = test::single_triangle_blocks(m.triangles);
     return m;

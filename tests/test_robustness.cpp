@@ -16,7 +16,7 @@
 #include "scene/gltf_loader.h"
 #include "support/device_fixture.h"
 #include "support/gltf_builder.h"
-#include "support/single_triangle_blocks.h"
+#include "support/leaf_triangles.h"
 #include "support/test_options.h"
 #include "types.h"
 

@@ -11,6 +11,7 @@
 #include "bvh/bvh_builder.h"
 #include "bvh/triangle_blocks.h"
 #include "support/device_fixture.h"
+#include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
 
 namespace pathcl {
@@ -27,11 +28,7 @@ Counts spawn(const std::vector<glm::vec3>& v, std::size_t rays, bool planar, std
     static cl::Program program = test::build_test_program("trace_test_kernels.cl");
     ClDevice& dev = test::test_device();
     Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    std::vector<Triangle> tris;
-    for (std::uint32_t t : bvh.triangle_order)
-        tris.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
-                                {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
-                                {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
     std::vector<TriangleBlock> blocks;
     make_triangle_blocks(bvh.nodes, 0, tris, blocks);
     cl::Buffer nodes(dev.context, CL_MEM_COPY_HOST_PTR, bvh.nodes.size() * sizeof(BvhNode), bvh.nodes.data());

@@ -9,26 +9,17 @@
 
 #include "bvh/bvh_builder.h"
 #include "bvh/triangle_blocks.h"
+#include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
 
 namespace pathcl {
 namespace {
 
-std::vector<Triangle> leaf_order_triangles(const std::vector<glm::vec3>& v, const Bvh& bvh)
-{
-    std::vector<Triangle> tris;
-    for (std::uint32_t t : bvh.triangle_order)
-        tris.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
-                                {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
-                                {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
-    return tris;
-}
-
 TEST(TriangleBlocks, EveryLeafNamesABlockOfItsTrianglesInOrder)
 {
     auto v = test::jittered_sphere(20, 40, 3);
     const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
     std::vector<BvhNode> nodes = bvh.nodes;
     std::vector<TriangleBlock> blocks;
     make_triangle_blocks(nodes, 0, tris, blocks);
@@ -74,7 +65,7 @@ TEST(TriangleBlocks, NodesBeforeTheFirstAreLeftAlone)
     // A two-level BVH's top-level leaves name instances, not triangles.
     auto v = test::random_triangle_soup(200, 4);
     const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
     std::vector<BvhNode> nodes = bvh.nodes;
     nodes.insert(nodes.begin(), bvh.nodes.begin(), bvh.nodes.end()); // a stand-in top level
     std::vector<TriangleBlock> blocks;
@@ -89,7 +80,7 @@ TEST(TriangleBlocks, ALeafPastTheTrianglesIsRefused)
 {
     auto v = test::random_triangle_soup(50, 5);
     const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    std::vector<Triangle> tris = leaf_order_triangles(v, bvh);
+    std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
     tris.pop_back();
     std::vector<BvhNode> nodes = bvh.nodes;
     std::vector<TriangleBlock> blocks;

@@ -1,13 +1,27 @@
-// One TriangleBlock per triangle, its triangle in lane 0: for the test kernels that test
-// every triangle on its own with the traversal's own test (brute-force references).
+// The triangle arrays the traversal test kernels bind: a mesh's triangles in a built
+// BVH's leaf order, and one TriangleBlock per triangle (its triangle in lane 0) for the
+// kernels that test every triangle on its own with the traversal's own test.
 #pragma once
 
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "bvh/bvh_builder.h"
 #include "bvh/triangle_blocks.h"
 
 namespace pathcl::test {
+
+// Triangles given as three vertices each, in the leaf order of `bvh` (built over them).
+inline std::vector<Triangle> leaf_order_triangles(const std::vector<glm::vec3>& v, const Bvh& bvh)
+{
+    std::vector<Triangle> tris;
+    for (std::uint32_t t : bvh.triangle_order)
+        tris.push_back(Triangle{{v[3 * t].x, v[3 * t].y, v[3 * t].z, 0},
+                                {v[3 * t + 1].x, v[3 * t + 1].y, v[3 * t + 1].z, 0},
+                                {v[3 * t + 2].x, v[3 * t + 2].y, v[3 * t + 2].z, 0}});
+    return tris;
+}
 
 inline std::vector<TriangleBlock> single_triangle_blocks(const std::vector<Triangle>& triangles)
 {
