@@ -32,6 +32,11 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 
     PathState ps = path_state_start(kd.rays[pixel]);
     for (uint depth = 0;; ++depth) {
+        /* The bounce's decisions start at its own sampler dimension, their numbers drawn
+         * at once, before the ray is traced: they do not depend on the hit, and the
+         * processor overlaps their chain of multiplies with the traversal. */
+        uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
+        SamplerState sampler = frame_sampler_bounce(&frame, pixel, dims);
         Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
         if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
@@ -54,10 +59,7 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         if (depth >= frame.max_bounces || !surface_scatters(&s))
             break;
 
-        /* The bounce's decisions start at its own sampler dimension, their numbers drawn
-         * at once. One-sample MIS's coin is drawn only by that strategy. */
-        uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
-        SamplerState sampler = frame_sampler_bounce(&frame, pixel, dims);
+        /* One-sample MIS's coin is drawn only by that strategy. */
         sampler.dimension = dims + DIM_TECHNIQUE;
         bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
 #ifdef PATHCL_HAS_LIGHTS
