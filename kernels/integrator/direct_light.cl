@@ -23,16 +23,23 @@ static inline bool direct_light_wanted(const FrameParams* frame, const ShadingPo
            (frame->strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&s->bsdf);
 }
 
-/* Adds the light sample's contribution to the path's radiance. `dims` is the bounce's
- * first sampler dimension. */
+/* The light the bounce whose decisions start at sampler dimension `dims` samples (its
+ * DIM_LIGHT decisions). */
+static inline LightChoice direct_light_choose(const KernelData* kd, const FrameParams* frame, uint dims,
+                                              SamplerState* sampler)
+{
+    sampler->dimension = dims + DIM_LIGHT;
+    return light_choose(kd, frame->light_count, sampler);
+}
+
+/* Adds the contribution of a sample of the chosen light to the path's radiance. */
 static inline void direct_light(const KernelData* kd, const FrameParams* frame, PathState* ps, const ShadingPoint* s,
-                                float3 wo, bool technique_light, uint dims, SamplerState* sampler)
+                                float3 wo, bool technique_light, const LightChoice* choice)
 {
     const SurfacePoint* sp = &s->sp;
-    sampler->dimension = dims + DIM_LIGHT;
     /* From where reflected rays (shadow rays included) leave, so that the light's pdf here
      * and on BSDF hits, which is measured from there, agree. */
-    LightSample ls = light_sample(kd, frame->light_count, sp->lifted ? sp->p_smooth : sp->p, sampler);
+    LightSample ls = light_sample_chosen(kd, choice, sp->lifted ? sp->p_smooth : sp->p);
     if (!(ls.pdf > 0.0f))
         return;
     BsdfEval e = bsdf_eval(&s->bsdf, sp, wo, ls.wi);

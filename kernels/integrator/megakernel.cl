@@ -37,6 +37,17 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
          * processor overlaps their chain of multiplies with the traversal. */
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
         SamplerState sampler = frame_sampler_bounce(&frame, pixel, dims);
+#ifdef PATHCL_HAS_LIGHTS
+        LightChoice light_choice;
+#ifndef PATHCL_FULL_BSDF
+        /* Lambertian surfaces only: every hit that scatters samples a light, so the pick
+         * (the alias table's chain of integer divisions) is made before the traversal too.
+         * Where delta lobes skip light sampling it waits for the hit (drawn early it ran
+         * slower through glass and on the material spheres). */
+        if (frame.light_count > 0u && frame.strategy != STRATEGY_BSDF)
+            light_choice = direct_light_choose(&kd, &frame, dims, &sampler);
+#endif
+#endif
         Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
         if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
@@ -63,8 +74,12 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         sampler.dimension = dims + DIM_TECHNIQUE;
         bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
 #ifdef PATHCL_HAS_LIGHTS
-        if (direct_light_wanted(&frame, &s, technique_light))
-            direct_light(&kd, &frame, &ps, &s, wo, technique_light, dims, &sampler);
+        if (direct_light_wanted(&frame, &s, technique_light)) {
+#ifdef PATHCL_FULL_BSDF
+            light_choice = direct_light_choose(&kd, &frame, dims, &sampler);
+#endif
+            direct_light(&kd, &frame, &ps, &s, wo, technique_light, &light_choice);
+        }
 #endif
         if (!surface_bounce(&ps, &s, wo, technique_light, dims, &sampler) ||
             !russian_roulette(&ps, depth, dims, &sampler))

@@ -12,17 +12,18 @@
 #include "sample/sampler.cl"
 #include "util/hash.cl"
 
-/* One light sample seen from ref, drawing the alias coin (a 1D decision) and the point
- * (a 2D decision whose first number also picks the slot) from the sampler. */
-static inline LightSample light_sample(const KernelData* kd, uint count, float3 ref, SamplerState* sampler)
+/* The part of a light sample that does not depend on the point it is seen from: the light
+ * picked and the numbers left for its point on it. */
+typedef struct {
+    int light;
+    float2 u; /* the point's numbers, u.x rescaled within the picked slot */
+} LightChoice;
+
+/* Picks the light, drawing the alias coin (a 1D decision) and the point (a 2D decision
+ * whose first number also picks the slot) from the sampler. */
+static inline LightChoice light_choose(const KernelData* kd, uint count, SamplerState* sampler)
 {
-    LightSample ls;
-    ls.pdf = 0.0f;
-    ls.delta = false;
-    ls.at_infinity = false;
-    ls.p_error = (float3)(0.0f);
-    ls.radiance = (float3)(0.0f);
-    ls.wi = ls.n = ls.p = (float3)(0.0f);
+    LightChoice c;
     float u_alias = sampler_get_1d(sampler);
     /* Independent of every sampler's numbers: the pair's own independent number, hashed
      * once more. With at most 16 lights a step is at most 2^-20 of the slot and its middle
@@ -34,8 +35,24 @@ static inline LightSample light_sample(const KernelData* kd, uint count, float3 
     float u_slot = u.x;
     int picked = light_pick(kd->light_distribution, count, &u_slot, u_alias, step_jitter);
     u.x = u_slot; /* rescaled within the slot: uniform again */
-    Light light = kd->lights[picked];
-    float pmf = kd->light_distribution[picked].pmf;
+    c.light = picked;
+    c.u = u;
+    return c;
+}
+
+/* The chosen light's sample seen from ref. */
+static inline LightSample light_sample_chosen(const KernelData* kd, const LightChoice* c, float3 ref)
+{
+    LightSample ls;
+    ls.pdf = 0.0f;
+    ls.delta = false;
+    ls.at_infinity = false;
+    ls.p_error = (float3)(0.0f);
+    ls.radiance = (float3)(0.0f);
+    ls.wi = ls.n = ls.p = (float3)(0.0f);
+    Light light = kd->lights[c->light];
+    float pmf = kd->light_distribution[c->light].pmf;
+    float2 u = c->u;
 
 #ifdef PATHCL_HAS_ENVIRONMENT
     if (light.type == LIGHT_ENVIRONMENT) {
@@ -68,4 +85,11 @@ static inline LightSample light_sample(const KernelData* kd, uint count, float3 
     sample_triangle_light(kd, &light, pmf, ref, u, &ls);
 #endif
     return ls;
+}
+
+/* One light sample seen from ref, its numbers from the sampler. */
+static inline LightSample light_sample(const KernelData* kd, uint count, float3 ref, SamplerState* sampler)
+{
+    LightChoice c = light_choose(kd, count, sampler);
+    return light_sample_chosen(kd, &c, ref);
 }
