@@ -132,6 +132,15 @@ static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* s
     e.pdf = cos_i * INV_PI;
     return e;
 #else
+    if (bsdf_lambertian(p)) {
+        /* bsdf_eval_local's diffuse lobe with its factors of exactly 1 (the layer's
+         * albedos 0, the lobe's probability 1) left out: the same values. */
+        if (!(cos_i > 0.0f) || !above_surface(sp, cos_ig))
+            return e;
+        e.f_cos = p->diffuse_scale * cos_i;
+        e.pdf = cos_i * INV_PI;
+        return e;
+    }
     bool reflect = cos_i > 0.0f && above_surface(sp, cos_ig);
     bool transmit = cos_i < 0.0f && cos_ig < 0.0f;
     if (!reflect && !transmit)

@@ -162,6 +162,30 @@ static inline bool bsdf_is_delta(const BsdfParams* p)
 #endif
 }
 
+/* Whether the BSDF is its diffuse lobe alone, chosen with probability 1: an exactly
+ * Lambertian material (no metal, no specular layer, no transmission; no coat, no sheen,
+ * no anisotropic frame) whose base colour is not black. Evaluating and sampling it through
+ * every lobe's code (closure/bsdf_eval.cl, bsdf_sample.cl) computes, term for term, the
+ * diffuse lobe and zeros; the Lambertian shortcut there computes the same values. */
+static inline bool bsdf_lambertian(const BsdfParams* p)
+{
+#ifdef PATHCL_FULL_BSDF
+    bool lambertian = !p->specular_lobes && p->lobes.diffuse == 1.0f;
+#ifdef PATHCL_HAS_ANISOTROPY
+    lambertian = lambertian && !bsdf_anisotropic(p);
+#endif
+#ifdef PATHCL_HAS_CLEARCOAT
+    lambertian = lambertian && !(p->coat > 0.0f);
+#endif
+#ifdef PATHCL_HAS_SHEEN
+    lambertian = lambertian && !(p->sheen_max > 0.0f);
+#endif
+    return lambertian;
+#else
+    return true;
+#endif
+}
+
 /* The shading frame of the base material's lobes around sp->ns: t along the anisotropy
  * direction for an anisotropic material, any other frame (make_basis) otherwise. */
 static inline void bsdf_frame(const BsdfParams* p, const SurfacePoint* sp, float3* t, float3* b)

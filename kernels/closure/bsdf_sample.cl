@@ -100,6 +100,20 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     s.weight = p->base_color; /* (albedo / pi) cos / (cos / pi) */
     return s;
 #else
+    if (bsdf_lambertian(p)) {
+        /* The diffuse lobe's sample as the lobe choice below takes it (u_lobe < 1 always
+         * picks it) and weighs it (bsdf_eval_local's f cos / pdf): the same values. */
+        float3 wi = sample_cosine_hemisphere(u);
+        s.wi = to_world(wi, t, b, sp->ns);
+        if (!(wi.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
+            return s;
+        float pdf = wi.z * INV_PI;
+        if (!(pdf > 0.0f))
+            return s;
+        s.pdf = pdf;
+        s.weight = (p->diffuse_scale * wi.z) / pdf;
+        return s;
+    }
     float3 wo_l = to_local(wo, t, b, sp->ns);
     const LobeChoice lobes = p->lobes;
 #ifdef PATHCL_HAS_CLEARCOAT
