@@ -31,12 +31,13 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         return;
 
     PathState ps = path_state_start(kd.rays[pixel]);
+    const SamplerState path_sampler = frame_sampler(&frame, pixel, DIM_PATH_START);
     for (uint depth = 0;; ++depth) {
         /* The bounce's decisions start at its own sampler dimension, their numbers drawn
          * at once, before the ray is traced: they do not depend on the hit, and the
          * processor overlaps their chain of multiplies with the traversal. */
         uint dims = DIM_PATH_START + depth * DIMS_PER_BOUNCE;
-        SamplerState sampler = frame_sampler_bounce(&frame, pixel, dims);
+        SamplerState sampler = sampler_bounce(&path_sampler, dims);
 #ifdef PATHCL_HAS_LIGHTS
         LightChoice light_choice;
 #ifndef PATHCL_FULL_BSDF

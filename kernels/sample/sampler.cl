@@ -143,11 +143,14 @@ static inline void sampler_draw_bounce(SamplerState* s, uint start)
     s->block_count = min((uint)DIMS_PER_BOUNCE, SAMPLER_LANES);
 }
 
-/* The sampler of a path's bounce whose decisions start at dimension `start`, its numbers
- * drawn at once where sampler_draw_bounce can (the same values as frame_sampler's). */
-static inline SamplerState frame_sampler_bounce(const FrameParams* frame, uint pixel, uint start)
+/* The sampler of a path's bounce whose decisions start at dimension `start`, made from
+ * the path's sampler (frame_sampler, once per path: its keys are the same at every
+ * bounce), its numbers drawn at once where sampler_draw_bounce can (the same values as
+ * frame_sampler's). */
+static inline SamplerState sampler_bounce(const SamplerState* path, uint start)
 {
-    SamplerState s = frame_sampler(frame, pixel, start);
+    SamplerState s = *path;
+    s.dimension = start;
     sampler_draw_bounce(&s, start);
     return s;
 }

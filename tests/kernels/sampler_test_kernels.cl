@@ -49,7 +49,8 @@ __kernel void test_frame_sampler(FrameParams frame, uint dim, __global float2* o
     out[pixel] = sampler_get_2d(&s);
 }
 
-/* A bounce's numbers drawn at once (frame_sampler_bounce) against the same decisions drawn
+/* A bounce's numbers drawn at once (sampler_bounce, from the path's sampler made at the
+ * path's first dimension, as the path kernel makes it) against the same decisions drawn
  * one by one (frame_sampler), for every pixel (one work-item each), the bounce's decisions
  * starting at `start`. Per pixel, 2 * DIMS_PER_BOUNCE values each way: first the
  * decisions as a path draws them (a 2D pair at each start DIM_PAIRS_IN_BOUNCE names, 1D
@@ -60,7 +61,8 @@ __kernel void test_sampler_draw_bounce(FrameParams frame, uint start, __global f
                                        __global float* one_by_one, __global uint* count)
 {
     uint pixel = get_global_id(0);
-    SamplerState a = frame_sampler_bounce(&frame, pixel, start);
+    const SamplerState path = frame_sampler(&frame, pixel, DIM_PATH_START);
+    SamplerState a = sampler_bounce(&path, start);
     SamplerState b = frame_sampler(&frame, pixel, start);
     count[pixel] = a.block_count;
     uint o = pixel * 2u * DIMS_PER_BOUNCE;
