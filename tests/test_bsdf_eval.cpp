@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <random>
 #include <string>
@@ -15,14 +16,17 @@
 #include <gtest/gtest.h>
 
 #include "support/bsdf_harness.h"
+#include "support/device_fixture.h"
 #include "support/reference_bsdf.h"
 
 namespace pathcl {
 namespace {
 
+using test::conductor;
 using test::dielectric;
 using test::eval_bsdf;
 using test::full_program;
+using test::lambertian;
 using test::make_material;
 using test::MaterialSpec;
 using test::near_rel;
@@ -120,6 +124,88 @@ TEST(BsdfEval, ReflectionIsReciprocal)
                 bad += !near_rel(f1, f2, 1e-4, 1e-7);
             }
         EXPECT_EQ(bad, 0u) << "material " << k;
+        ++k;
+    }
+}
+
+struct ShortcutRun {
+    std::vector<pcl_float4> shortcut, lobes; // four per pair: see test_bsdf_lambertian_shortcut
+};
+
+// test_bsdf_lambertian_shortcut for each (wo, wi) pair at a shading point with normal +Z.
+ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
+                                const std::vector<glm::dvec3>& wi)
+{
+    auto f4 = [](const glm::dvec3& v) {
+        return pcl_float4{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
+    };
+    std::vector<pcl_float4> o, i;
+    for (std::size_t k = 0; k < wo.size(); ++k) {
+        o.push_back(f4(wo[k]));
+        i.push_back(f4(wi[k]));
+    }
+    std::size_t n = wo.size();
+    ClDevice& dev = test::test_device();
+    cl::Buffer a(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
+    cl::Buffer b(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
+    cl::Buffer ob = test::upload(o), ib = test::upload(i);
+    cl::Kernel k(full_program(), "test_bsdf_lambertian_shortcut");
+    set_kernel_args(k, m, static_cast<cl_uint>(front_face), static_cast<cl_uint>(5), test::layer_buffer(), ob, ib, a,
+                    b);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n), cl::NDRange(64)); // n: a multiple of 64
+    return {test::read_back<pcl_float4>(a, 4 * n), test::read_back<pcl_float4>(b, 4 * n)};
+}
+
+TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)
+{
+    // A program with glossy code evaluates and samples an exactly Lambertian material
+    // through bsdf_eval_lambertian and bsdf_sample_lambertian instead of every lobe's code
+    // (renders are bit-identical across the change): the two must give the same bits for
+    // the sample's direction, pdf and weight and for f cos and the pdf at any wi, from
+    // either side, and no other material may take the shortcut. Broken variants seen
+    // failing: the sample's weight as the Lambertian program's (the base colour); f cos
+    // as base x (cos / pi); the predicate without the diffuse lobe's probability of 1
+    // (a black base then takes it).
+    const std::size_t n = 4096;
+    std::vector<glm::dvec3> wo = random_directions(n, 21, false), wi = random_directions(n, 22, false);
+    for (glm::vec3 base : {glm::vec3(0.8f), glm::vec3(0.9f, 0.35f, 0.05f), glm::vec3(0.01f, 0.02f, 0.5f)})
+        for (bool front : {true, false}) {
+            ShortcutRun r = lambertian_shortcut(make_material(lambertian(base)), front, wo, wi);
+            std::size_t taken = 0, sampled = 0, lit = 0, differ = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                taken += r.shortcut[4 * k + 3].x == 1.0f;
+                sampled += r.shortcut[4 * k].w > 0.0f;
+                lit += r.shortcut[4 * k + 2].w > 0.0f;
+                differ += std::memcmp(&r.shortcut[4 * k], &r.lobes[4 * k], 3 * sizeof(pcl_float4)) != 0;
+            }
+            EXPECT_EQ(taken, n) << "base " << base.x << " " << base.y << " " << base.z;
+            EXPECT_EQ(differ, 0u) << "base " << base.x << " " << base.y << " " << base.z
+                                  << (front ? " front" : " back");
+            // Not vacuous: most samples exist, and half the wi are above the surface.
+            EXPECT_GT(sampled, n * 9 / 10);
+            EXPECT_GT(lit, n * 4 / 10);
+        }
+    MaterialSpec black = lambertian(glm::vec3(0.0f));
+    MaterialSpec plastic = lambertian(glm::vec3(0.5f));
+    plastic.specular = 0.5f;
+    MaterialSpec coated = lambertian(glm::vec3(0.5f));
+    coated.clearcoat = 0.5f;
+    MaterialSpec velvet = lambertian(glm::vec3(0.5f));
+    velvet.sheen = {0.5f, 0.5f, 0.5f};
+    velvet.sheen_roughness = 0.5f;
+    MaterialSpec brushed = lambertian(glm::vec3(0.5f));
+    brushed.roughness = 0.5f;
+    brushed.anisotropy = 0.5f;
+    MaterialSpec part_metal = lambertian(glm::vec3(0.5f));
+    part_metal.metallic = 0.1f;
+    MaterialSpec glass = dielectric(0.3f);
+    for (std::size_t k = 0;
+         const MaterialSpec& spec : {black, plastic, coated, velvet, brushed, part_metal, glass, conductor(0.5f)}) {
+        ShortcutRun r = lambertian_shortcut(make_material(spec), true, wo, wi);
+        std::size_t taken = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            taken += r.shortcut[4 * i + 3].x != 0.0f;
+        EXPECT_EQ(taken, 0u) << "material " << k;
         ++k;
     }
 }

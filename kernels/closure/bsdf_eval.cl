@@ -117,30 +117,15 @@ static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi
 
 #endif /* PATHCL_FULL_BSDF */
 
-/* The base material's lobes (everything but the sheen and the clear coat). */
-static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
+#ifdef PATHCL_FULL_BSDF
+
+/* The base material's lobes through every lobe's code. */
+static inline BsdfEval bsdf_eval_lobes(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
 {
     BsdfEval e;
     e.f_cos = (float3)(0.0f);
     e.pdf = 0.0f;
     float cos_i = dot(wi, sp->ns), cos_ig = dot(wi, sp->ng);
-#ifndef PATHCL_FULL_BSDF
-    /* Lambertian with albedo = base colour. */
-    if (cos_i <= 0.0f || !above_surface(sp, cos_ig))
-        return e;
-    e.f_cos = p->base_color * (INV_PI * cos_i);
-    e.pdf = cos_i * INV_PI;
-    return e;
-#else
-    if (bsdf_lambertian(p)) {
-        /* bsdf_eval_local's diffuse lobe with its factors of exactly 1 (the layer's
-         * albedos 0, the lobe's probability 1) left out: the same values. */
-        if (!(cos_i > 0.0f) || !above_surface(sp, cos_ig))
-            return e;
-        e.f_cos = p->diffuse_scale * cos_i;
-        e.pdf = cos_i * INV_PI;
-        return e;
-    }
     bool reflect = cos_i > 0.0f && above_surface(sp, cos_ig);
     bool transmit = cos_i < 0.0f && cos_ig < 0.0f;
     if (!reflect && !transmit)
@@ -148,6 +133,42 @@ static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* s
     float3 t, b;
     bsdf_frame(p, sp, &t, &b);
     return bsdf_eval_local(p, to_local(wo, t, b, sp->ns), to_local(wi, t, b, sp->ns), reflect);
+}
+
+/* bsdf_eval_lobes where bsdf_lambertian holds: bsdf_eval_local's diffuse lobe with its
+ * factors of exactly 1 (the layer's albedos 0, the lobe's probability 1) left out, the
+ * same values (tested bit for bit). */
+static inline BsdfEval bsdf_eval_lambertian(const BsdfParams* p, const SurfacePoint* sp, float3 wi)
+{
+    BsdfEval e;
+    e.f_cos = (float3)(0.0f);
+    e.pdf = 0.0f;
+    float cos_i = dot(wi, sp->ns);
+    if (!(cos_i > 0.0f) || !above_surface(sp, dot(wi, sp->ng)))
+        return e;
+    e.f_cos = p->diffuse_scale * cos_i;
+    e.pdf = cos_i * INV_PI;
+    return e;
+}
+
+#endif /* PATHCL_FULL_BSDF */
+
+/* The base material's lobes (everything but the sheen and the clear coat). */
+static inline BsdfEval bsdf_eval_base(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float3 wi)
+{
+#ifndef PATHCL_FULL_BSDF
+    /* Lambertian with albedo = base colour. */
+    BsdfEval e;
+    e.f_cos = (float3)(0.0f);
+    e.pdf = 0.0f;
+    float cos_i = dot(wi, sp->ns);
+    if (cos_i <= 0.0f || !above_surface(sp, dot(wi, sp->ng)))
+        return e;
+    e.f_cos = p->base_color * (INV_PI * cos_i);
+    e.pdf = cos_i * INV_PI;
+    return e;
+#else
+    return bsdf_lambertian(p) ? bsdf_eval_lambertian(p, sp, wi) : bsdf_eval_lobes(p, sp, wo, wi);
 #endif
 }
 

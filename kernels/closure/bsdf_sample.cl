@@ -85,35 +85,35 @@ static inline float sheen_delta_scale(const BsdfParams* p, const SurfacePoint* s
 
 #endif /* PATHCL_HAS_SHEEN */
 
-/* u_lobe picks the lobe, u samples it. */
-static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
+#ifdef PATHCL_FULL_BSDF
+
+/* bsdf_sample_lobes where bsdf_lambertian holds: the diffuse lobe's sample as the lobe
+ * choice there takes it (u_lobe < 1 always picks it) and weighs it (bsdf_eval_local's
+ * f cos / pdf), the same values (tested bit for bit). */
+static inline BsdfSample bsdf_sample_lambertian(const BsdfParams* p, const SurfacePoint* sp, float2 u)
 {
     BsdfSample s = no_bsdf_sample();
     float3 t, b;
     bsdf_frame(p, sp, &t, &b);
-#ifndef PATHCL_FULL_BSDF
     float3 wi = sample_cosine_hemisphere(u);
     s.wi = to_world(wi, t, b, sp->ns);
-    if (wi.z <= 0.0f || !above_surface(sp, dot(s.wi, sp->ng)))
+    if (!(wi.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
         return s;
-    s.pdf = wi.z * INV_PI;
-    s.weight = p->base_color; /* (albedo / pi) cos / (cos / pi) */
+    float pdf = wi.z * INV_PI;
+    if (!(pdf > 0.0f))
+        return s;
+    s.pdf = pdf;
+    s.weight = (p->diffuse_scale * wi.z) / pdf;
     return s;
-#else
-    if (bsdf_lambertian(p)) {
-        /* The diffuse lobe's sample as the lobe choice below takes it (u_lobe < 1 always
-         * picks it) and weighs it (bsdf_eval_local's f cos / pdf): the same values. */
-        float3 wi = sample_cosine_hemisphere(u);
-        s.wi = to_world(wi, t, b, sp->ns);
-        if (!(wi.z > 0.0f) || !above_surface(sp, dot(s.wi, sp->ng)))
-            return s;
-        float pdf = wi.z * INV_PI;
-        if (!(pdf > 0.0f))
-            return s;
-        s.pdf = pdf;
-        s.weight = (p->diffuse_scale * wi.z) / pdf;
-        return s;
-    }
+}
+
+/* A sample through every lobe's code: u_lobe picks the lobe, u samples it. */
+static inline BsdfSample bsdf_sample_lobes(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe,
+                                           float2 u)
+{
+    BsdfSample s = no_bsdf_sample();
+    float3 t, b;
+    bsdf_frame(p, sp, &t, &b);
     float3 wo_l = to_local(wo, t, b, sp->ns);
     const LobeChoice lobes = p->lobes;
 #ifdef PATHCL_HAS_CLEARCOAT
@@ -215,7 +215,7 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     sheen_eval(p, sp, wo, s.wi, &e); /* the sheen's lobe too, and its scale of the base */
 #endif
 #ifdef PATHCL_HAS_CLEARCOAT
-    coat_eval(p, sp, wo, s.wi, &e);  /* the coat's lobe too */
+    coat_eval(p, sp, wo, s.wi, &e); /* the coat's lobe too */
 #endif
     if (!(e.pdf > 0.0f))
         return s;
@@ -224,5 +224,25 @@ static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp
     if (!reflect && !p->thin)
         s.eta2 = p->eta * p->eta;
     return s;
+}
+
+#endif /* PATHCL_FULL_BSDF */
+
+/* u_lobe picks the lobe, u samples it. */
+static inline BsdfSample bsdf_sample(const BsdfParams* p, const SurfacePoint* sp, float3 wo, float u_lobe, float2 u)
+{
+#ifndef PATHCL_FULL_BSDF
+    BsdfSample s = no_bsdf_sample();
+    float3 t, b;
+    bsdf_frame(p, sp, &t, &b);
+    float3 wi = sample_cosine_hemisphere(u);
+    s.wi = to_world(wi, t, b, sp->ns);
+    if (wi.z <= 0.0f || !above_surface(sp, dot(s.wi, sp->ng)))
+        return s;
+    s.pdf = wi.z * INV_PI;
+    s.weight = p->base_color; /* (albedo / pi) cos / (cos / pi) */
+    return s;
+#else
+    return bsdf_lambertian(p) ? bsdf_sample_lambertian(p, sp, u) : bsdf_sample_lobes(p, sp, wo, u_lobe, u);
 #endif
 }

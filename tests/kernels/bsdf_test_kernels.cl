@@ -70,3 +70,35 @@ __kernel void test_bsdf_is_delta(Material m, __global const float* layer, __glob
     BsdfParams p = bsdf_params(&m, &sp, (float3)(0.0f, 0.0f, 1.0f), layer);
     out[0] = bsdf_is_delta(&p) ? 1 : 0;
 }
+
+#ifdef PATHCL_FULL_BSDF
+/* The Lambertian shortcut against every lobe's code, for the same material, numbers and
+ * directions, one work-item each (wo and wi pairs as test_bsdf_eval takes them; the
+ * sample's numbers from `seed`). Four float4 per work-item each way:
+ *   (sample wi, sample pdf), (sample weight, delta), (eval f_cos at wi[i], eval pdf),
+ *   (bsdf_lambertian, 0, 0, 0)
+ * to `shortcut` from bsdf_sample_lambertian and bsdf_eval_lambertian, to `lobes` from
+ * bsdf_sample_lobes and bsdf_eval_lobes. */
+__kernel void test_bsdf_lambertian_shortcut(Material m, uint front_face, uint seed, __global const float* layer,
+                                            __global const float4* wo, __global const float4* wi,
+                                            __global float4* shortcut, __global float4* lobes)
+{
+    uint i = get_global_id(0);
+    SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), front_face);
+    BsdfParams p = bsdf_params(&m, &sp, wo[i].xyz, layer);
+    SamplerState s = sampler_start(i, 0u, seed, 0u);
+    float u_lobe = sampler_get_1d(&s);
+    float2 u = sampler_get_2d(&s);
+    BsdfSample a = bsdf_sample_lambertian(&p, &sp, u), b = bsdf_sample_lobes(&p, &sp, wo[i].xyz, u_lobe, u);
+    BsdfEval ea = bsdf_eval_lambertian(&p, &sp, wi[i].xyz), eb = bsdf_eval_lobes(&p, &sp, wo[i].xyz, wi[i].xyz);
+    float flag = bsdf_lambertian(&p) ? 1.0f : 0.0f;
+    shortcut[4u * i] = (float4)(a.wi, a.pdf);
+    shortcut[4u * i + 1u] = (float4)(a.weight, a.delta ? 1.0f : 0.0f);
+    shortcut[4u * i + 2u] = (float4)(ea.f_cos, ea.pdf);
+    shortcut[4u * i + 3u] = (float4)(flag, 0.0f, 0.0f, 0.0f);
+    lobes[4u * i] = (float4)(b.wi, b.pdf);
+    lobes[4u * i + 1u] = (float4)(b.weight, b.delta ? 1.0f : 0.0f);
+    lobes[4u * i + 2u] = (float4)(eb.f_cos, eb.pdf);
+    lobes[4u * i + 3u] = (float4)(flag, 0.0f, 0.0f, 0.0f);
+}
+#endif
