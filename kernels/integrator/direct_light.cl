@@ -15,12 +15,19 @@
 
 #ifdef PATHCL_HAS_LIGHTS
 
+/* Whether the render samples lights at all (there are some, and the strategy is not BSDF
+ * sampling alone). */
+static inline bool frame_samples_lights(const FrameParams* frame)
+{
+    return frame->light_count > 0u && frame->strategy != STRATEGY_BSDF;
+}
+
 /* Whether the strategy samples a light at this vertex (never where every lobe is a delta
  * function: no light sample can land in one). */
 static inline bool direct_light_wanted(const FrameParams* frame, const ShadingPoint* s, bool technique_light)
 {
-    return frame->light_count > 0u && frame->strategy != STRATEGY_BSDF &&
-           (frame->strategy != STRATEGY_ONE_SAMPLE || technique_light) && !bsdf_is_delta(&s->bsdf);
+    return frame_samples_lights(frame) && (frame->strategy != STRATEGY_ONE_SAMPLE || technique_light) &&
+           !bsdf_is_delta(&s->bsdf);
 }
 
 /* The light the bounce whose decisions start at sampler dimension `dims` samples (its

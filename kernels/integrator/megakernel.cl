@@ -45,7 +45,7 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
          * (the alias table's chain of integer divisions) is made before the traversal too.
          * Where delta lobes skip light sampling it waits for the hit (drawn early it ran
          * slower through glass and on the material spheres). */
-        if (frame.light_count > 0u && frame.strategy != STRATEGY_BSDF)
+        if (frame_samples_lights(&frame))
             light_choice = direct_light_choose(&kd, &frame, dims, &sampler);
 #endif
 #endif
