@@ -16,7 +16,6 @@
 #include <gtest/gtest.h>
 
 #include "support/bsdf_harness.h"
-#include "support/device_fixture.h"
 #include "support/reference_bsdf.h"
 
 namespace pathcl {
@@ -27,10 +26,12 @@ using test::dielectric;
 using test::eval_bsdf;
 using test::full_program;
 using test::lambertian;
+using test::lambertian_shortcut;
 using test::make_material;
 using test::MaterialSpec;
 using test::near_rel;
 using test::reflective_materials;
+using test::ShortcutRun;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -126,34 +127,6 @@ TEST(BsdfEval, ReflectionIsReciprocal)
         EXPECT_EQ(bad, 0u) << "material " << k;
         ++k;
     }
-}
-
-struct ShortcutRun {
-    std::vector<pcl_float4> shortcut, lobes; // four per pair: see test_bsdf_lambertian_shortcut
-};
-
-// test_bsdf_lambertian_shortcut for each (wo, wi) pair at a shading point with normal +Z.
-ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
-                                const std::vector<glm::dvec3>& wi)
-{
-    auto f4 = [](const glm::dvec3& v) {
-        return pcl_float4{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
-    };
-    std::vector<pcl_float4> o, i;
-    for (std::size_t k = 0; k < wo.size(); ++k) {
-        o.push_back(f4(wo[k]));
-        i.push_back(f4(wi[k]));
-    }
-    std::size_t n = wo.size();
-    ClDevice& dev = test::test_device();
-    cl::Buffer a(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
-    cl::Buffer b(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
-    cl::Buffer ob = test::upload(o), ib = test::upload(i);
-    cl::Kernel k(full_program(), "test_bsdf_lambertian_shortcut");
-    set_kernel_args(k, m, static_cast<cl_uint>(front_face), static_cast<cl_uint>(5), test::layer_buffer(), ob, ib, a,
-                    b);
-    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n), cl::NDRange(64)); // n: a multiple of 64
-    return {test::read_back<pcl_float4>(a, 4 * n), test::read_back<pcl_float4>(b, 4 * n)};
 }
 
 TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)

@@ -17,6 +17,14 @@ pcl_float4 f4(const glm::dvec3& v)
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
 }
 
+std::vector<pcl_float4> f4s(const std::vector<glm::dvec3>& v)
+{
+    std::vector<pcl_float4> out;
+    for (const glm::dvec3& x : v)
+        out.push_back(f4(x));
+    return out;
+}
+
 } // namespace
 
 const cl::Program& full_program()
@@ -198,14 +206,8 @@ std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m,
                                   glm::dvec3 normal, glm::dvec3 tangent)
 {
     ClDevice& dev = test::test_device();
-    std::vector<pcl_float4> o, i;
-    for (std::size_t k = 0; k < wo.size(); ++k) {
-        o.push_back(f4(wo[k]));
-        i.push_back(f4(wi[k]));
-    }
     std::size_t n = wo.size();
-    cl::Buffer ob(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), o.data());
-    cl::Buffer ib(dev.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(pcl_float4), i.data());
+    cl::Buffer ob = upload(f4s(wo)), ib = upload(f4s(wi));
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_bsdf_eval");
     set_kernel_args(k, m, f4(normal), f4(tangent), static_cast<cl_uint>(front_face), layer_buffer(), ob, ib, out);
@@ -213,6 +215,21 @@ std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m,
     std::vector<pcl_float4> r(n);
     dev.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(pcl_float4), r.data());
     return r;
+}
+
+ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
+                                const std::vector<glm::dvec3>& wi)
+{
+    ClDevice& dev = test::test_device();
+    std::size_t n = wo.size();
+    cl::Buffer ob = upload(f4s(wo)), ib = upload(f4s(wi));
+    cl::Buffer a(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
+    cl::Buffer b(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
+    cl::Kernel k(full_program(), "test_bsdf_lambertian_shortcut");
+    set_kernel_args(k, m, static_cast<cl_uint>(front_face), static_cast<cl_uint>(5), layer_buffer(), ob, ib, a, b);
+    // PoCL's own work-group size for this many work-items failed to launch; 64 divides n.
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n), cl::NDRange(64));
+    return {read_back<pcl_float4>(a, 4 * n), read_back<pcl_float4>(b, 4 * n)};
 }
 
 glm::dvec3 xyz(const pcl_float4& v)

@@ -64,6 +64,15 @@ std::vector<pcl_float4> eval_bsdf(const cl::Program& program, const Material& m,
                                   const std::vector<glm::dvec3>& wo, const std::vector<glm::dvec3>& wi,
                                   glm::dvec3 normal = {0, 0, 1}, glm::dvec3 tangent = {1, 0, 0});
 
+// test_bsdf_lambertian_shortcut for each (wo, wi) pair, at a shading point with normal +Z
+// (the full program): four float4 per pair each way, from the Lambertian shortcut and
+// from every lobe's code (see the kernel).
+struct ShortcutRun {
+    std::vector<pcl_float4> shortcut, lobes;
+};
+ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
+                                const std::vector<glm::dvec3>& wi);
+
 glm::dvec3 xyz(const pcl_float4& v);
 
 // |a - b| <= rel * max(|a|, |b|) + abs_floor.
