@@ -9,6 +9,7 @@
 #include "closure/sheen.h"
 #include "features.h"
 #include "geom/ray_offset.cl"
+#include "util/compat.h"
 #include "util/math.cl"
 
 #ifdef PATHCL_FULL_BSDF
@@ -42,7 +43,7 @@ static inline void bsdf_eval_anisotropic_reflection(const BsdfParams* p, float3 
 
 /* Evaluation of the non-delta lobes in the frame of bsdf_frame; wo.z > 0 is not required (shading
  * normals), the rough lobes vanish where it fails. */
-static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi, bool reflect)
+PATHCL_ALWAYS_INLINE static inline BsdfEval bsdf_eval_local(const BsdfParams* p, float3 wo, float3 wi, bool reflect)
 {
     BsdfEval e;
     e.f_cos = (float3)(0.0f);

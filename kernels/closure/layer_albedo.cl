@@ -8,6 +8,7 @@
 #include "closure/fresnel_layer.cl"
 #include "closure/layer_table.h"
 #include "features.h"
+#include "util/compat.h"
 
 #ifdef PATHCL_FULL_BSDF
 
@@ -56,7 +57,7 @@ static inline float layer_b(__global const float* table, float r, float x, float
 
 /* The dielectric layer's directional albedo E(cos theta), per channel: exact for a
  * smooth layer, else interpolated from the tables (linear in sqrt(cos), roughness, x). */
-static inline float3 layer_albedo(const BsdfParams* p, float mu)
+PATHCL_ALWAYS_INLINE static inline float3 layer_albedo(const BsdfParams* p, float mu)
 {
     if (!(p->specular > 0.0f))
         return (float3)(0.0f); /* no layer: the base is exactly Lambertian, no lookups */

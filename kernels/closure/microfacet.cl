@@ -3,6 +3,7 @@
 #include "closure/bsdf_params.cl"
 #include "closure/ggx.h"
 #include "features.h"
+#include "util/compat.h"
 #include "util/sincos.cl"
 
 #ifdef PATHCL_FULL_BSDF
@@ -18,7 +19,7 @@ static inline float ggx_visible_pdf(float3 wo, float3 wm, float a2)
 
 /* Visible-normal sampling by spherical caps (Dupuy and Benyoub 2023) for alpha ax along x
  * and ay along y; wo.z > 0. */
-static inline float3 ggx_sample_visible(float3 wo, float ax, float ay, float2 u)
+PATHCL_ALWAYS_INLINE static inline float3 ggx_sample_visible(float3 wo, float ax, float ay, float2 u)
 {
     float3 w = normalize((float3)(wo.x * ax, wo.y * ay, wo.z));
     float z = fma(1.0f - u.y, 1.0f + w.z, -w.z);

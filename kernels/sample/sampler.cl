@@ -41,6 +41,7 @@
 #include "sample/sobol.cl"
 #include "sample/strata.h"
 #include "types.h"
+#include "util/compat.h"
 #include "util/hash.cl"
 
 /* How many numbers sampler_draw_bounce draws at once: all eight decisions of a bounce
@@ -253,7 +254,7 @@ static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
 }
 
 /* The value for the decision at s->dimension; advances by one dimension. */
-static inline float sampler_get_1d(SamplerState* s)
+PATHCL_ALWAYS_INLINE static inline float sampler_get_1d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 1u;
@@ -266,7 +267,7 @@ static inline float sampler_get_1d(SamplerState* s)
 }
 
 /* The pair for the 2D decision at (s->dimension, s->dimension + 1); advances by two. */
-static inline float2 sampler_get_2d(SamplerState* s)
+PATHCL_ALWAYS_INLINE static inline float2 sampler_get_2d(SamplerState* s)
 {
     uint dim = s->dimension;
     s->dimension += 2u;
