@@ -23,6 +23,8 @@ namespace {
 
 using test::conductor;
 using test::dielectric;
+using test::diffuse_only_params;
+using test::DiffuseOnlyRun;
 using test::eval_bsdf;
 using test::full_program;
 using test::lambertian;
@@ -179,6 +181,63 @@ TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)
         for (std::size_t i = 0; i < n; ++i)
             taken += r.shortcut[4 * i + 3].x != 0.0f;
         EXPECT_EQ(taken, 0u) << "material " << k;
+        ++k;
+    }
+}
+
+TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
+{
+    // bsdf_params sets an exactly Lambertian material's layer albedo, diffuse scale and
+    // lobe choice without the general code (bsdf_params_base_diffuse; renders are
+    // bit-identical across the change): for every material bsdf_params_diffuse_only
+    // admits, from either side, the fields must be the general code's bits, and
+    // bsdf_params must have taken them; no other material may be admitted. The anisotropic
+    // one is admitted (no layer, so its anisotropy changes none of these fields) though
+    // bsdf_lambertian turns it away. Broken variants seen failing: the diffuse scale as
+    // base / pi; the predicate without the specular weight (the plastic is admitted).
+    const std::size_t n = 1024;
+    std::vector<glm::dvec3> wo = random_directions(n, 23, false);
+    MaterialSpec brushed = lambertian(glm::vec3(0.5f, 0.25f, 0.125f));
+    brushed.roughness = 0.5f;
+    brushed.anisotropy = 0.5f;
+    std::vector<MaterialSpec> admitted_specs = {lambertian(glm::vec3(0.8f)), lambertian(glm::vec3(1.0f)),
+                                                lambertian(glm::vec3(1e-30f, 0.0f, 0.0f)), brushed};
+    std::mt19937 rng(24); // base colours whose products with 1 / pi round every way
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int j = 0; j < 16; ++j)
+        admitted_specs.push_back(lambertian(glm::vec3(unit(rng), unit(rng), unit(rng))));
+    for (std::size_t k = 0; const MaterialSpec& spec : admitted_specs) {
+        for (bool front : {true, false}) {
+            DiffuseOnlyRun r = diffuse_only_params(make_material(spec), front, wo);
+            std::size_t admitted = 0, differ = 0, taken = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                admitted += r.diffuse_only[i] == 1.0f;
+                differ += std::memcmp(&r.diffuse[3 * i], &r.general[3 * i], 3 * sizeof(pcl_float4)) != 0;
+                taken += std::memcmp(&r.params[3 * i], &r.diffuse[3 * i], 3 * sizeof(pcl_float4)) == 0;
+            }
+            EXPECT_EQ(admitted, n) << "material " << k;
+            EXPECT_EQ(differ, 0u) << "material " << k << (front ? " front" : " back");
+            EXPECT_EQ(taken, n) << "material " << k;
+        }
+        ++k;
+    }
+    MaterialSpec black = lambertian(glm::vec3(0.0f));
+    MaterialSpec plastic = lambertian(glm::vec3(0.5f));
+    plastic.specular = 0.5f;
+    MaterialSpec coated = lambertian(glm::vec3(0.5f));
+    coated.clearcoat = 0.5f;
+    MaterialSpec velvet = lambertian(glm::vec3(0.5f));
+    velvet.sheen = {0.5f, 0.5f, 0.5f};
+    velvet.sheen_roughness = 0.5f;
+    MaterialSpec part_metal = lambertian(glm::vec3(0.5f));
+    part_metal.metallic = 0.1f;
+    for (std::size_t k = 0;
+         const MaterialSpec& spec : {black, plastic, coated, velvet, part_metal, dielectric(0.3f), conductor(0.5f)}) {
+        DiffuseOnlyRun r = diffuse_only_params(make_material(spec), true, wo);
+        std::size_t admitted = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            admitted += r.diffuse_only[i] != 0.0f;
+        EXPECT_EQ(admitted, 0u) << "material " << k;
         ++k;
     }
 }

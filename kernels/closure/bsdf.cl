@@ -115,6 +115,86 @@
 #include "types.h"
 #include "util/math.cl"
 
+#ifdef PATHCL_FULL_BSDF
+
+/* wo in the frame of bsdf_frame where the material is anisotropic (its (x, y) then read
+ * the anisotropic tables); (0, 0, cos_o) otherwise. */
+static inline float3 bsdf_wo_local(const BsdfParams* p, const SurfacePoint* sp, float3 wo)
+{
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (bsdf_anisotropic(p)) {
+        float3 t, b;
+        bsdf_frame(p, sp, &t, &b);
+        return (float3)(dot(wo, t), dot(wo, b), p->cos_o);
+    }
+#endif
+    return (float3)(0.0f, 0.0f, p->cos_o);
+}
+
+/* The last part of bsdf_params: the dielectric layer's albedo from wo (wo_l:
+ * bsdf_wo_local), the diffuse base's scale under it and the lobe choice, from the fields
+ * before them. */
+static inline void bsdf_params_base(BsdfParams* p, const Material* m, float3 wo_l)
+{
+    float3 layer_avg;
+#ifdef PATHCL_HAS_ANISOTROPY
+    if (layer_anisotropic(p)) {
+        p->layer_o = aniso_layer_albedo(p, wo_l); /* never inside: the layer is on no solid */
+        layer_avg = aniso_layer_average(p);
+    } else
+#endif
+    {
+        p->layer_o = p->inside ? (float3)(0.0f) : layer_albedo(p, p->cos_o);
+        layer_avg = layer_average(p, m);
+    }
+    float3 one_minus_avg = 1.0f - layer_avg;
+    float w = p->inside ? 0.0f : (1.0f - p->metallic) * (1.0f - p->transmission) * INV_PI;
+    /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
+    p->diffuse_scale =
+        select((float3)(0.0f), p->base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
+    p->lobes = choose_lobes(p);
+}
+
+/* Whether bsdf_params_base_diffuse may stand in for bsdf_params_base: metal, transmission
+ * and specular 0 (no layer: its albedo is 0 whether or not the material is anisotropic),
+ * no coat, no sheen, and a base colour whose components are finite, not negative and not
+ * all 0 (so that every lobe but the diffuse one is estimated +0 and the diffuse one d / d). */
+static inline bool bsdf_params_diffuse_only(const BsdfParams* p)
+{
+    float d = mean3(p->base_color);
+    bool diffuse_only = p->metallic == 0.0f && p->transmission == 0.0f && !(p->specular > 0.0f) &&
+                        all(p->base_color >= (float3)(0.0f)) && d > 0.0f && isfinite(d);
+#ifdef PATHCL_HAS_CLEARCOAT
+    diffuse_only = diffuse_only && p->coat == 0.0f;
+#endif
+#ifdef PATHCL_HAS_SHEEN
+    diffuse_only = diffuse_only && all(p->sheen == (float3)(0.0f));
+#endif
+    return diffuse_only;
+}
+
+/* bsdf_params_base where bsdf_params_diffuse_only holds: the values its general code
+ * computes there, term for term (no layer, w = 1 x 1 x 1 / pi over 1 - 0, the diffuse lobe
+ * chosen with probability 1; tested bit for bit), without its table lookups, Fresnel
+ * estimates and divisions (a Lambertian wall in a program with glossy code). */
+static inline void bsdf_params_base_diffuse(BsdfParams* p)
+{
+    p->layer_o = (float3)(0.0f);
+    p->diffuse_scale = p->base_color * INV_PI;
+    LobeChoice c;
+    c.diffuse = 1.0f;
+    c.conductor = c.interface = 0.0f;
+#ifdef PATHCL_HAS_SHEEN
+    c.sheen = 0.0f;
+#endif
+#ifdef PATHCL_HAS_CLEARCOAT
+    c.coat = 0.0f;
+#endif
+    p->lobes = c;
+}
+
+#endif /* PATHCL_FULL_BSDF */
+
 /* The BSDF at a shading point seen from wo. layer: the LAYER_* tables. */
 static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, float3 wo, __global const float* layer)
 {
@@ -166,14 +246,10 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.specular_lobes = p.metallic > 0.0f || p.transmission > 0.0f || p.specular > 0.0f;
     p.ms_scale = p.ms_albedo = (float3)(0.0f);
     p.ess_o = p.conductor_e_o = 1.0f;
+    float3 wo_l = bsdf_wo_local(&p, sp, wo);
 #ifdef PATHCL_HAS_ANISOTROPY
-    float3 wo_l = (float3)(0.0f, 0.0f, p.cos_o); /* wo in the frame of bsdf_frame, when anisotropic */
-    if (bsdf_anisotropic(&p)) {
-        float3 t, b;
-        bsdf_frame(&p, sp, &t, &b);
-        wo_l = (float3)(dot(wo, t), dot(wo, b), p.cos_o);
+    if (bsdf_anisotropic(&p))
         p.aniso_x = sqrt(clamp(r / LAYER_X_MAX, 0.0f, 1.0f)) * (float)(LAYER_ANISO_ETA_RES - 1);
-    }
 #endif
 #ifndef PATHCL_SINGLE_SCATTERING
     /* Energy lost to masking, restored (multiple-scattering compensation). */
@@ -227,23 +303,10 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
     p.sheen_r = m->sheen.w * (float)(LAYER_ROUGH_RES - 1);
     p.sheen_e_o = p.sheen_max > 0.0f ? sheen_albedo(&p, p.cos_o) : 0.0f;
 #endif
-    float3 layer_avg;
-#ifdef PATHCL_HAS_ANISOTROPY
-    if (layer_anisotropic(&p)) {
-        p.layer_o = aniso_layer_albedo(&p, wo_l); /* never inside: the layer is on no solid */
-        layer_avg = aniso_layer_average(&p);
-    } else
-#endif
-    {
-        p.layer_o = p.inside ? (float3)(0.0f) : layer_albedo(&p, p.cos_o);
-        layer_avg = layer_average(&p, m);
-    }
-    float3 one_minus_avg = 1.0f - layer_avg;
-    float w = p.inside ? 0.0f : (1.0f - p.metallic) * (1.0f - p.transmission) * INV_PI;
-    /* A layer that reflects everything on average leaves the base nothing (and 0 / 0). */
-    p.diffuse_scale =
-        select((float3)(0.0f), p.base_color * w / one_minus_avg, isgreater(one_minus_avg, (float3)(1e-6f)));
-    p.lobes = choose_lobes(&p);
+    if (bsdf_params_diffuse_only(&p))
+        bsdf_params_base_diffuse(&p);
+    else
+        bsdf_params_base(&p, m, wo_l);
 #endif
     return p;
 }

@@ -101,4 +101,42 @@ __kernel void test_bsdf_lambertian_shortcut(Material m, uint front_face, uint se
     lobes[4u * i + 2u] = (float4)(eb.f_cos, eb.pdf);
     lobes[4u * i + 3u] = (float4)(flag, 0.0f, 0.0f, 0.0f);
 }
+/* A BsdfParams' fields from the dielectric layer's albedo on (what bsdf_params_base sets),
+ * in three float4: (layer_o, lobes.diffuse), (diffuse_scale, lobes.conductor),
+ * (lobes.interface, lobes.sheen, lobes.coat, 0); a lobe the program lacks is 0. */
+static void write_base_fields(const BsdfParams* p, __global float4* out)
+{
+    float sheen = 0.0f, coat = 0.0f;
+#ifdef PATHCL_HAS_SHEEN
+    sheen = p->lobes.sheen;
+#endif
+#ifdef PATHCL_HAS_CLEARCOAT
+    coat = p->lobes.coat;
+#endif
+    out[0] = (float4)(p->layer_o, p->lobes.diffuse);
+    out[1] = (float4)(p->diffuse_scale, p->lobes.conductor);
+    out[2] = (float4)(p->lobes.interface, sheen, coat, 0.0f);
+}
+
+/* bsdf_params_base_diffuse against bsdf_params_base for one material and each wo, one
+ * work-item each: the fields of write_base_fields as bsdf_params left them to `params`,
+ * as the shortcut sets them to `diffuse`, as the general code computes them to `general`,
+ * and bsdf_params_diffuse_only (1 or 0) to `diffuse_only`. */
+__kernel void test_bsdf_params_diffuse_only(Material m, uint front_face, __global const float* layer,
+                                            __global const float4* wo, __global float4* params,
+                                            __global float4* diffuse, __global float4* general,
+                                            __global float* diffuse_only)
+{
+    uint i = get_global_id(0);
+    SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), front_face);
+    BsdfParams p = bsdf_params(&m, &sp, wo[i].xyz, layer);
+    BsdfParams a = p, b = p;
+    bsdf_params_base_diffuse(&a);
+    bsdf_params_base(&b, &m, bsdf_wo_local(&b, &sp, wo[i].xyz));
+    write_base_fields(&p, params + 3u * i);
+    write_base_fields(&a, diffuse + 3u * i);
+    write_base_fields(&b, general + 3u * i);
+    diffuse_only[i] = bsdf_params_diffuse_only(&p) ? 1.0f : 0.0f;
+}
+
 #endif

@@ -232,6 +232,22 @@ ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::v
     return {read_back<pcl_float4>(a, 4 * n), read_back<pcl_float4>(b, 4 * n)};
 }
 
+DiffuseOnlyRun diffuse_only_params(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo)
+{
+    ClDevice& dev = test::test_device();
+    std::size_t n = wo.size();
+    cl::Buffer ob = upload(f4s(wo));
+    cl::Buffer params(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
+    cl::Buffer diffuse(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
+    cl::Buffer general(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
+    cl::Buffer flags(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Kernel k(full_program(), "test_bsdf_params_diffuse_only");
+    set_kernel_args(k, m, static_cast<cl_uint>(front_face), layer_buffer(), ob, params, diffuse, general, flags);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n), cl::NDRange(64));
+    return {read_back<pcl_float4>(params, 3 * n), read_back<pcl_float4>(diffuse, 3 * n),
+            read_back<pcl_float4>(general, 3 * n), read_back<float>(flags, n)};
+}
+
 glm::dvec3 xyz(const pcl_float4& v)
 {
     return {v.x, v.y, v.z};

@@ -73,6 +73,16 @@ struct ShortcutRun {
 ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
                                 const std::vector<glm::dvec3>& wi);
 
+// test_bsdf_params_diffuse_only for each wo, at a shading point with normal +Z (the full
+// program): three float4 per wo each way (the fields bsdf_params_base sets) as
+// bsdf_params left them, as bsdf_params_base_diffuse sets them and as bsdf_params_base
+// computes them, and whether bsdf_params_diffuse_only held (1 or 0).
+struct DiffuseOnlyRun {
+    std::vector<pcl_float4> params, diffuse, general;
+    std::vector<float> diffuse_only;
+};
+DiffuseOnlyRun diffuse_only_params(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo);
+
 glm::dvec3 xyz(const pcl_float4& v);
 
 // |a - b| <= rel * max(|a|, |b|) + abs_floor.
