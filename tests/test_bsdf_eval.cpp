@@ -131,6 +131,23 @@ TEST(BsdfEval, ReflectionIsReciprocal)
     }
 }
 
+// Materials one step from exactly Lambertian (a black base, a specular layer, a coat, a
+// sheen, a little metal) and two far from it: none may take a Lambertian shortcut.
+std::vector<MaterialSpec> nearly_lambertian()
+{
+    MaterialSpec black = lambertian(glm::vec3(0.0f));
+    MaterialSpec plastic = lambertian(glm::vec3(0.5f));
+    plastic.specular = 0.5f;
+    MaterialSpec coated = lambertian(glm::vec3(0.5f));
+    coated.clearcoat = 0.5f;
+    MaterialSpec velvet = lambertian(glm::vec3(0.5f));
+    velvet.sheen = {0.5f, 0.5f, 0.5f};
+    velvet.sheen_roughness = 0.5f;
+    MaterialSpec part_metal = lambertian(glm::vec3(0.5f));
+    part_metal.metallic = 0.1f;
+    return {black, plastic, coated, velvet, part_metal, dielectric(0.3f), conductor(0.5f)};
+}
+
 TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)
 {
     // A program with glossy code evaluates and samples an exactly Lambertian material
@@ -160,22 +177,12 @@ TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)
             EXPECT_GT(sampled, n * 9 / 10);
             EXPECT_GT(lit, n * 4 / 10);
         }
-    MaterialSpec black = lambertian(glm::vec3(0.0f));
-    MaterialSpec plastic = lambertian(glm::vec3(0.5f));
-    plastic.specular = 0.5f;
-    MaterialSpec coated = lambertian(glm::vec3(0.5f));
-    coated.clearcoat = 0.5f;
-    MaterialSpec velvet = lambertian(glm::vec3(0.5f));
-    velvet.sheen = {0.5f, 0.5f, 0.5f};
-    velvet.sheen_roughness = 0.5f;
+    std::vector<MaterialSpec> others = nearly_lambertian();
     MaterialSpec brushed = lambertian(glm::vec3(0.5f));
     brushed.roughness = 0.5f;
     brushed.anisotropy = 0.5f;
-    MaterialSpec part_metal = lambertian(glm::vec3(0.5f));
-    part_metal.metallic = 0.1f;
-    MaterialSpec glass = dielectric(0.3f);
-    for (std::size_t k = 0;
-         const MaterialSpec& spec : {black, plastic, coated, velvet, brushed, part_metal, glass, conductor(0.5f)}) {
+    others.push_back(brushed); // its frame is the anisotropy's
+    for (std::size_t k = 0; const MaterialSpec& spec : others) {
         ShortcutRun r = lambertian_shortcut(make_material(spec), true, wo, wi);
         std::size_t taken = 0;
         for (std::size_t i = 0; i < n; ++i)
@@ -221,18 +228,7 @@ TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
         }
         ++k;
     }
-    MaterialSpec black = lambertian(glm::vec3(0.0f));
-    MaterialSpec plastic = lambertian(glm::vec3(0.5f));
-    plastic.specular = 0.5f;
-    MaterialSpec coated = lambertian(glm::vec3(0.5f));
-    coated.clearcoat = 0.5f;
-    MaterialSpec velvet = lambertian(glm::vec3(0.5f));
-    velvet.sheen = {0.5f, 0.5f, 0.5f};
-    velvet.sheen_roughness = 0.5f;
-    MaterialSpec part_metal = lambertian(glm::vec3(0.5f));
-    part_metal.metallic = 0.1f;
-    for (std::size_t k = 0;
-         const MaterialSpec& spec : {black, plastic, coated, velvet, part_metal, dielectric(0.3f), conductor(0.5f)}) {
+    for (std::size_t k = 0; const MaterialSpec& spec : nearly_lambertian()) {
         DiffuseOnlyRun r = diffuse_only_params(make_material(spec), true, wo);
         std::size_t admitted = 0;
         for (std::size_t i = 0; i < n; ++i)
