@@ -101,6 +101,7 @@ __kernel void test_bsdf_lambertian_shortcut(Material m, uint front_face, uint se
     lobes[4u * i + 2u] = (float4)(eb.f_cos, eb.pdf);
     lobes[4u * i + 3u] = (float4)(flag, 0.0f, 0.0f, 0.0f);
 }
+
 /* A BsdfParams' fields from the dielectric layer's albedo on (what bsdf_params_base sets),
  * in three float4: (layer_o, lobes.diffuse), (diffuse_scale, lobes.conductor),
  * (lobes.interface, lobes.sheen, lobes.coat, 0); a lobe the program lacks is 0. */
