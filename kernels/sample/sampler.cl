@@ -174,7 +174,7 @@ static inline float halton_value(const SamplerState* s, uint dim)
     return radical_inverse(base, s->sample, max(s->spp, 1u), seed, true);
 }
 
-static inline float sampler_value_1d(const SamplerState* s, uint dim)
+PATHCL_NOINLINE static float sampler_value_1d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
     uint set = hash_combine(s->set_key, dim); /* this decision's point set */
@@ -201,7 +201,7 @@ static inline float sampler_value_1d(const SamplerState* s, uint dim)
     }
 }
 
-static inline float2 sampler_value_2d(const SamplerState* s, uint dim)
+PATHCL_NOINLINE static float2 sampler_value_2d(const SamplerState* s, uint dim)
 {
     uint n = max(s->spp, 1u);
     uint set = hash_combine(s->set_key, dim); /* this decision's point set */

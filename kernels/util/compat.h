@@ -31,13 +31,19 @@ typedef float3 pcl_real3;
 #define PATHCL_FN static inline
 #define PATHCL_BEGIN
 #define PATHCL_END
-/* Marks a device function the compiler must inline: a hot function LLVM in PoCL 3.1 left
- * out of line on a CPU, whose call (arguments through memory, nothing overlapped across
- * it) cost more than its code (README "Speed"). GPU compilers inline every call anyway. */
+/* PATHCL_ALWAYS_INLINE marks a device function the compiler must inline: a hot function
+ * LLVM in PoCL 3.1 left out of line on a CPU, whose call (arguments through memory,
+ * nothing overlapped across it) cost more than its code. PATHCL_NOINLINE marks one it must
+ * keep out of line: a cold path (the samplers' general draws) that, inlined at every call
+ * of a hot function, made a program a third larger and its first build slower, for no
+ * speed. README "Speed" has the measurements. GPU compilers inline every call anyway,
+ * so there only PATHCL_NOINLINE changes anything: a call on a cold path. */
 #ifdef __clang__
 #define PATHCL_ALWAYS_INLINE __attribute__((always_inline))
+#define PATHCL_NOINLINE __attribute__((noinline))
 #else
 #define PATHCL_ALWAYS_INLINE
+#define PATHCL_NOINLINE
 #endif
 
 #else
