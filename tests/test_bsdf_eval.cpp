@@ -3,6 +3,7 @@
 // over the whole sphere, from both sides, and reflection is reciprocal. Next to each
 // test: the broken variant seen to fail it.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,8 +24,6 @@ namespace {
 
 using test::conductor;
 using test::dielectric;
-using test::diffuse_only_params;
-using test::DiffuseOnlyRun;
 using test::eval_bsdf;
 using test::full_program;
 using test::lambertian;
@@ -32,6 +31,8 @@ using test::lambertian_shortcut;
 using test::make_material;
 using test::MaterialSpec;
 using test::near_rel;
+using test::params_shortcut;
+using test::ParamsShortcutRun;
 using test::reflective_materials;
 using test::ShortcutRun;
 
@@ -215,12 +216,12 @@ TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
         admitted_specs.push_back(lambertian(glm::vec3(unit(rng), unit(rng), unit(rng))));
     for (std::size_t k = 0; const MaterialSpec& spec : admitted_specs) {
         for (bool front : {true, false}) {
-            DiffuseOnlyRun r = diffuse_only_params(make_material(spec), front, wo);
+            ParamsShortcutRun r = params_shortcut(make_material(spec), front, false, wo);
             std::size_t admitted = 0, differ = 0, taken = 0;
             for (std::size_t i = 0; i < n; ++i) {
-                admitted += r.diffuse_only[i] == 1.0f;
-                differ += std::memcmp(&r.diffuse[3 * i], &r.general[3 * i], 3 * sizeof(pcl_float4)) != 0;
-                taken += std::memcmp(&r.params[3 * i], &r.diffuse[3 * i], 3 * sizeof(pcl_float4)) == 0;
+                admitted += r.admitted[i] == 1.0f;
+                differ += std::memcmp(&r.shortcut[3 * i], &r.general[3 * i], 3 * sizeof(pcl_float4)) != 0;
+                taken += std::memcmp(&r.params[3 * i], &r.shortcut[3 * i], 3 * sizeof(pcl_float4)) == 0;
             }
             EXPECT_EQ(admitted, n) << "material " << k;
             EXPECT_EQ(differ, 0u) << "material " << k << (front ? " front" : " back");
@@ -229,10 +230,113 @@ TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
         ++k;
     }
     for (std::size_t k = 0; const MaterialSpec& spec : nearly_lambertian()) {
-        DiffuseOnlyRun r = diffuse_only_params(make_material(spec), true, wo);
+        ParamsShortcutRun r = params_shortcut(make_material(spec), true, false, wo);
         std::size_t admitted = 0;
         for (std::size_t i = 0; i < n; ++i)
-            admitted += r.diffuse_only[i] != 0.0f;
+            admitted += r.admitted[i] != 0.0f;
+        EXPECT_EQ(admitted, 0u) << "material " << k;
+        ++k;
+    }
+}
+
+// The lobe choice's bits in write_base_fields' three float4: diffuse, conductor, interface,
+// sheen, coat.
+std::array<float, 5> lobe_choice(const pcl_float4* f)
+{
+    return {f[0].w, f[1].w, f[2].x, f[2].y, f[2].z};
+}
+
+TEST(BsdfEval, TheIdealMirrorAndGlassParamsChooseTheGeneralLobesBitForBit)
+{
+    // bsdf_params makes an ideal mirror's or ideal glass's lobe choice without the general
+    // code (bsdf_params_base_ideal; renders are bit-identical across the change): for
+    // every material bsdf_params_ideal_only admits, from either side, the lobe choice must
+    // be the general code's bits and what bsdf_params returned, and bsdf_sample must give
+    // the same bits from the shortcut's fields as from the general ones (it reads neither
+    // the layer's albedo nor the diffuse scale there); no other material may be admitted.
+    // Broken variants seen failing: the mirror's lobe taken with probability 1 when its
+    // estimate is 0 (the black mirror at normal incidence); the predicate without the
+    // coat check (the coated mirror is admitted).
+    const std::size_t n = 1024;
+    std::vector<glm::dvec3> wo = random_directions(n - 2, 26, false);
+    wo.push_back({0.0, 0.0, 1.0}); // normal incidence: a black mirror's estimate is 0 there
+    wo.push_back({0.0, 0.0, -1.0});
+    std::vector<MaterialSpec> admitted_specs = {
+        conductor(0.0f),       conductor(0.0f, glm::vec3(0.0f)), conductor(0.02f, glm::vec3(1.0f, 0.78f, 0.34f)),
+        dielectric(0.0f),      dielectric(0.0f, 1.33f, true),    dielectric(0.0f, 1.0f),
+        dielectric(0.0f, 0.0f)};
+    MaterialSpec tinted = dielectric(0.0f, 1.7f);
+    tinted.specular = 0.5f;
+    tinted.specular_color = {0.0f, 0.5f, 2.0f};
+    MaterialSpec faint = dielectric(0.0f);
+    faint.base = glm::vec3(0x1.0p-90f, 0.0f, 0.0f);
+    MaterialSpec plain_mirror = conductor(0.0f, glm::vec3(0.5f));
+    plain_mirror.specular = 0.0f;
+    admitted_specs.insert(admitted_specs.end(), {tinted, faint, plain_mirror});
+    std::mt19937 rng(27); // bases whose Schlick means and glass tints round every way
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int j = 0; j < 6; ++j) {
+        admitted_specs.push_back(conductor(0.0f, glm::vec3(unit(rng), unit(rng), unit(rng))));
+        MaterialSpec glass = dielectric(0.0f, 1.0f + unit(rng), j % 2 == 0);
+        glass.base = glm::vec3(unit(rng), unit(rng), unit(rng));
+        admitted_specs.push_back(glass);
+    }
+    std::size_t sampled = 0, delta = 0;
+    for (std::size_t k = 0; const MaterialSpec& spec : admitted_specs) {
+        for (bool front : {true, false}) {
+            ParamsShortcutRun r = params_shortcut(make_material(spec), front, true, wo);
+            std::size_t admitted = 0, differ = 0, taken = 0, samples_differ = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                admitted += r.admitted[i] == 1.0f;
+                std::array<float, 5> a = lobe_choice(&r.shortcut[3 * i]), b = lobe_choice(&r.general[3 * i]);
+                std::array<float, 5> p = lobe_choice(&r.params[3 * i]);
+                differ += std::memcmp(a.data(), b.data(), sizeof(a)) != 0;
+                taken += std::memcmp(p.data(), a.data(), sizeof(a)) == 0;
+                samples_differ += std::memcmp(&r.samples[4 * i], &r.samples[4 * i + 2], 2 * sizeof(pcl_float4)) != 0;
+                sampled += r.samples[4 * i].w > 0.0f;
+                delta += r.samples[4 * i + 1].w > 0.0f;
+            }
+            std::string what = "material " + std::to_string(k) + (front ? " front" : " back");
+            EXPECT_EQ(admitted, n) << what;
+            EXPECT_EQ(differ, 0u) << what;
+            EXPECT_EQ(taken, n) << what;
+            EXPECT_EQ(samples_differ, 0u) << what;
+        }
+        ++k;
+    }
+    // Not vacuous: most directions give a sample, each a delta one.
+    EXPECT_GT(sampled, admitted_specs.size() * 2 * n / 3);
+    EXPECT_EQ(delta, sampled);
+
+    MaterialSpec part_metal = conductor(0.0f);
+    part_metal.metallic = 0.999f;
+    MaterialSpec part_glass = dielectric(0.0f);
+    part_glass.transmission = 0.999f;
+    MaterialSpec coated = conductor(0.0f);
+    coated.clearcoat = 0.5f;
+    MaterialSpec velvet = dielectric(0.0f);
+    velvet.sheen = {0.5f, 0.5f, 0.5f};
+    MaterialSpec brushed = conductor(0.0f);
+    brushed.anisotropy = 0.5f;
+    MaterialSpec black_glass = dielectric(0.0f);
+    black_glass.base = glm::vec3(0.0f);
+    MaterialSpec bright_glass = dielectric(0.0f);
+    bright_glass.base = glm::vec3(1.5f, 1.0f, 1.0f);
+    std::vector<MaterialSpec> others = {part_metal,
+                                        part_glass,
+                                        coated,
+                                        velvet,
+                                        brushed,
+                                        black_glass,
+                                        bright_glass,
+                                        conductor(0.04f),
+                                        dielectric(0.04f),
+                                        lambertian(glm::vec3(0.5f))};
+    for (std::size_t k = 0; const MaterialSpec& spec : others) {
+        ParamsShortcutRun r = params_shortcut(make_material(spec), true, true, wo);
+        std::size_t admitted = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            admitted += r.admitted[i] != 0.0f;
         EXPECT_EQ(admitted, 0u) << "material " << k;
         ++k;
     }

@@ -155,6 +155,35 @@ static inline void bsdf_params_base(BsdfParams* p, const Material* m, float3 wo_
     p->lobes = choose_lobes(p);
 }
 
+/* No clear coat and no sheen (their factor and colour 0): the base's lobes alone. */
+static inline bool bsdf_no_coat_no_sheen(const BsdfParams* p)
+{
+    bool none = true;
+#ifdef PATHCL_HAS_CLEARCOAT
+    none = none && p->coat == 0.0f;
+#endif
+#ifdef PATHCL_HAS_SHEEN
+    none = none && all(p->sheen == (float3)(0.0f));
+#endif
+    return none;
+}
+
+/* A choice among the base's lobes; the sheen and the coat are never chosen. */
+static inline LobeChoice base_lobe_choice(float diffuse, float conductor, float interface)
+{
+    LobeChoice c;
+    c.diffuse = diffuse;
+    c.conductor = conductor;
+    c.interface = interface;
+#ifdef PATHCL_HAS_SHEEN
+    c.sheen = 0.0f;
+#endif
+#ifdef PATHCL_HAS_CLEARCOAT
+    c.coat = 0.0f;
+#endif
+    return c;
+}
+
 /* Whether bsdf_params_base_diffuse may stand in for bsdf_params_base: metal, transmission
  * and specular 0 (no layer: its albedo is 0 whether or not the material is anisotropic),
  * no coat, no sheen, and a base colour whose components are finite, not negative and not
@@ -164,13 +193,7 @@ static inline bool bsdf_params_diffuse_only(const BsdfParams* p)
     float d = mean3(p->base_color);
     bool diffuse_only = p->metallic == 0.0f && p->transmission == 0.0f && !(p->specular > 0.0f) &&
                         all(p->base_color >= (float3)(0.0f)) && d > 0.0f && isfinite(d);
-#ifdef PATHCL_HAS_CLEARCOAT
-    diffuse_only = diffuse_only && p->coat == 0.0f;
-#endif
-#ifdef PATHCL_HAS_SHEEN
-    diffuse_only = diffuse_only && all(p->sheen == (float3)(0.0f));
-#endif
-    return diffuse_only;
+    return diffuse_only && bsdf_no_coat_no_sheen(p);
 }
 
 /* bsdf_params_base where bsdf_params_diffuse_only holds: the values its general code
@@ -181,16 +204,42 @@ static inline void bsdf_params_base_diffuse(BsdfParams* p)
 {
     p->layer_o = (float3)(0.0f);
     p->diffuse_scale = p->base_color * INV_PI;
-    LobeChoice c;
-    c.diffuse = 1.0f;
-    c.conductor = c.interface = 0.0f;
-#ifdef PATHCL_HAS_SHEEN
-    c.sheen = 0.0f;
-#endif
-#ifdef PATHCL_HAS_CLEARCOAT
-    c.coat = 0.0f;
-#endif
-    p->lobes = c;
+    p->lobes = base_lobe_choice(1.0f, 0.0f, 0.0f);
+}
+
+/* Whether bsdf_params_base_ideal may stand in for bsdf_params_base: an ideal mirror
+ * (metallic 1, transmission 0) or ideal glass, solid or thin (metallic 0, transmission 1),
+ * whose lobes are all delta functions (bsdf_is_delta), with no coat and no sheen, and a base
+ * colour finite and not negative; glass's base colour at most 1 and its mean at least
+ * 2^-100. Then the general code's lobe estimates are +0 but the one lobe's: the mirror's
+ * Schlick mean, and glass's mean(F) + (1 - max(F)) mean(base), F in [0, 1] (to a rounding),
+ * which those bounds keep positive. */
+static inline bool bsdf_params_ideal_only(const BsdfParams* p)
+{
+    float d = mean3(p->base_color);
+    bool mirror = p->metallic == 1.0f && p->transmission == 0.0f;
+    bool glass =
+        p->metallic == 0.0f && p->transmission == 1.0f && all(p->base_color <= (float3)(1.0f)) && d >= 0x1.0p-100f;
+    return (mirror || glass) && bsdf_is_delta(p) && all(p->base_color >= (float3)(0.0f)) && isfinite(d) &&
+           bsdf_no_coat_no_sheen(p);
+}
+
+/* bsdf_params_base where bsdf_params_ideal_only holds: the lobe choice its general code
+ * makes there, bit for bit (the one lobe's estimate over itself, the others +0 over it;
+ * tested), without the layer's albedo, the Fresnel estimate of the interface and the
+ * normalizing divisions (every hit on the glass and mirror box's sphere and block). The
+ * layer's albedo and the diffuse scale are set to 0: only bsdf_eval reads them, and
+ * next event estimation evaluates no BSDF whose lobes are all delta functions. */
+static inline void bsdf_params_base_ideal(BsdfParams* p)
+{
+    p->layer_o = (float3)(0.0f);
+    p->diffuse_scale = (float3)(0.0f);
+    if (p->metallic == 1.0f) {
+        float e = mean3(fresnel_schlick(p->base_color, p->cos_o)); /* 0 for black at normal incidence */
+        p->lobes = base_lobe_choice(0.0f, e > 0.0f ? e / e : e, 0.0f);
+    } else {
+        p->lobes = base_lobe_choice(0.0f, 0.0f, 1.0f);
+    }
 }
 
 #endif /* PATHCL_FULL_BSDF */
@@ -305,6 +354,8 @@ static inline BsdfParams bsdf_params(const Material* m, const SurfacePoint* sp, 
 #endif
     if (bsdf_params_diffuse_only(&p))
         bsdf_params_base_diffuse(&p);
+    else if (bsdf_params_ideal_only(&p))
+        bsdf_params_base_ideal(&p);
     else
         bsdf_params_base(&p, m, wo_l);
 #endif

@@ -119,25 +119,38 @@ static void write_base_fields(const BsdfParams* p, __global float4* out)
     out[2] = (float4)(p->lobes.interface, sheen, coat, 0.0f);
 }
 
-/* bsdf_params_base_diffuse against bsdf_params_base for one material and each wo, one
- * work-item each: the fields of write_base_fields as bsdf_params left them to `params`,
- * as the shortcut sets them to `diffuse`, as the general code computes them to `general`,
- * and bsdf_params_diffuse_only (1 or 0) to `diffuse_only`. */
-__kernel void test_bsdf_params_diffuse_only(Material m, uint front_face, __global const float* layer,
-                                            __global const float4* wo, __global float4* params,
-                                            __global float4* diffuse, __global float4* general,
-                                            __global float* diffuse_only)
+/* A shortcut of bsdf_params against its general part (bsdf_params_base), for one material
+ * and each wo, one work-item each: `ideal` 0 takes bsdf_params_base_diffuse and its
+ * predicate bsdf_params_diffuse_only, 1 bsdf_params_base_ideal and bsdf_params_ideal_only.
+ * Three float4 per wo (the fields of write_base_fields) to `params` as bsdf_params left
+ * them, to `shortcut` as the shortcut sets them and to `general` as the general code
+ * computes them; the predicate (1 or 0) to `admitted`; to `samples`, bsdf_sample with the
+ * numbers u[i] = (u_lobe, u) from the shortcut's fields and from the general ones, two
+ * float4 each: (wi, pdf), (weight, eta2, negated when not a delta sample). */
+__kernel void test_bsdf_params_shortcut(Material m, uint front_face, uint ideal, __global const float* layer,
+                                        __global const float4* wo, __global const float4* u, __global float4* params,
+                                        __global float4* shortcut, __global float4* general, __global float* admitted,
+                                        __global float4* samples)
 {
     uint i = get_global_id(0);
     SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), front_face);
     BsdfParams p = bsdf_params(&m, &sp, wo[i].xyz, layer);
     BsdfParams a = p, b = p;
-    bsdf_params_base_diffuse(&a);
+    if (ideal != 0u)
+        bsdf_params_base_ideal(&a);
+    else
+        bsdf_params_base_diffuse(&a);
     bsdf_params_base(&b, &m, bsdf_wo_local(&b, &sp, wo[i].xyz));
     write_base_fields(&p, params + 3u * i);
-    write_base_fields(&a, diffuse + 3u * i);
+    write_base_fields(&a, shortcut + 3u * i);
     write_base_fields(&b, general + 3u * i);
-    diffuse_only[i] = bsdf_params_diffuse_only(&p) ? 1.0f : 0.0f;
+    admitted[i] = (ideal != 0u ? bsdf_params_ideal_only(&p) : bsdf_params_diffuse_only(&p)) ? 1.0f : 0.0f;
+    BsdfSample sa = bsdf_sample(&a, &sp, wo[i].xyz, u[i].x, u[i].yz);
+    BsdfSample sb = bsdf_sample(&b, &sp, wo[i].xyz, u[i].x, u[i].yz);
+    samples[4u * i] = (float4)(sa.wi, sa.pdf);
+    samples[4u * i + 1u] = (float4)(sa.weight, sa.delta ? sa.eta2 : -sa.eta2);
+    samples[4u * i + 2u] = (float4)(sb.wi, sb.pdf);
+    samples[4u * i + 3u] = (float4)(sb.weight, sb.delta ? sb.eta2 : -sb.eta2);
 }
 
 #endif

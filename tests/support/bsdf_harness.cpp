@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "features.h"
 #include "render/layer_albedo.h"
@@ -232,20 +233,28 @@ ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::v
     return {read_back<pcl_float4>(a, 4 * n), read_back<pcl_float4>(b, 4 * n)};
 }
 
-DiffuseOnlyRun diffuse_only_params(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo)
+ParamsShortcutRun params_shortcut(const Material& m, bool front_face, bool ideal, const std::vector<glm::dvec3>& wo,
+                                  std::uint32_t seed)
 {
     ClDevice& dev = test::test_device();
     std::size_t n = wo.size();
-    cl::Buffer ob = upload(f4s(wo));
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<pcl_float4> numbers(n);
+    for (pcl_float4& v : numbers)
+        v = {unit(rng), unit(rng), unit(rng), 0.0f};
+    cl::Buffer ob = upload(f4s(wo)), ub = upload(numbers);
     cl::Buffer params(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
-    cl::Buffer diffuse(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
+    cl::Buffer shortcut(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
     cl::Buffer general(dev.context, CL_MEM_WRITE_ONLY, 3 * n * sizeof(pcl_float4));
     cl::Buffer flags(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(float));
-    cl::Kernel k(full_program(), "test_bsdf_params_diffuse_only");
-    set_kernel_args(k, m, static_cast<cl_uint>(front_face), layer_buffer(), ob, params, diffuse, general, flags);
+    cl::Buffer samples(dev.context, CL_MEM_WRITE_ONLY, 4 * n * sizeof(pcl_float4));
+    cl::Kernel k(full_program(), "test_bsdf_params_shortcut");
+    set_kernel_args(k, m, static_cast<cl_uint>(front_face), static_cast<cl_uint>(ideal), layer_buffer(), ob, ub, params,
+                    shortcut, general, flags, samples);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n), cl::NDRange(64));
-    return {read_back<pcl_float4>(params, 3 * n), read_back<pcl_float4>(diffuse, 3 * n),
-            read_back<pcl_float4>(general, 3 * n), read_back<float>(flags, n)};
+    return {read_back<pcl_float4>(params, 3 * n), read_back<pcl_float4>(shortcut, 3 * n),
+            read_back<pcl_float4>(general, 3 * n), read_back<pcl_float4>(samples, 4 * n), read_back<float>(flags, n)};
 }
 
 glm::dvec3 xyz(const pcl_float4& v)

@@ -73,15 +73,19 @@ struct ShortcutRun {
 ShortcutRun lambertian_shortcut(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo,
                                 const std::vector<glm::dvec3>& wi);
 
-// test_bsdf_params_diffuse_only for each wo, at a shading point with normal +Z (the full
-// program): three float4 per wo each way (the fields bsdf_params_base sets) as
-// bsdf_params left them, as bsdf_params_base_diffuse sets them and as bsdf_params_base
-// computes them, and whether bsdf_params_diffuse_only held (1 or 0).
-struct DiffuseOnlyRun {
-    std::vector<pcl_float4> params, diffuse, general;
-    std::vector<float> diffuse_only;
+// test_bsdf_params_shortcut for each wo, at a shading point with normal +Z (the full
+// program), for the Lambertian shortcut (ideal false) or the ideal mirror and glass one:
+// three float4 per wo each way (the fields bsdf_params_base sets) as bsdf_params left them,
+// as the shortcut sets them and as bsdf_params_base computes them; whether the shortcut's
+// predicate held (1 or 0); and bsdf_sample's (wi, pdf), (weight, +-eta2) with numbers
+// drawn from `seed`, from the shortcut's fields and then from the general ones (four
+// float4 per wo).
+struct ParamsShortcutRun {
+    std::vector<pcl_float4> params, shortcut, general, samples;
+    std::vector<float> admitted;
 };
-DiffuseOnlyRun diffuse_only_params(const Material& m, bool front_face, const std::vector<glm::dvec3>& wo);
+ParamsShortcutRun params_shortcut(const Material& m, bool front_face, bool ideal, const std::vector<glm::dvec3>& wo,
+                                  std::uint32_t seed = 25);
 
 glm::dvec3 xyz(const pcl_float4& v);
 
