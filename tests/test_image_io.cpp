@@ -3,6 +3,7 @@
 // read anew.
 #include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
@@ -17,12 +18,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
+fs::path temp_dir_path()
+{
+    return fs::temp_directory_path() / ("pathcl-image-io-" + std::to_string(::getpid()));
+}
+
 fs::path temp_dir()
 {
-    fs::path d = fs::temp_directory_path() / ("pathcl-image-io-" + std::to_string(::getpid()));
+    fs::path d = temp_dir_path();
     fs::create_directories(d);
     return d;
 }
+
+// This process's folder goes when its tests are done (it was left in the temporary
+// folder, one per run).
+class TempDirCleanup : public ::testing::Environment {
+public:
+    void TearDown() override
+    {
+        std::error_code ec;
+        fs::remove_all(temp_dir_path(), ec);
+    }
+};
+const ::testing::Environment* const kTempDirCleanup = ::testing::AddGlobalTestEnvironment(new TempDirCleanup);
 
 Image gradient(std::uint32_t w, std::uint32_t h)
 {
