@@ -193,6 +193,20 @@ TEST(BsdfEval, TheLambertianShortcutGivesEveryLobesValuesBitForBit)
     }
 }
 
+// No material of `specs` may take the bsdf_params shortcut (the Lambertian one, or the
+// ideal mirror and glass one), from the front, at any wo.
+void expect_none_admitted(const std::vector<MaterialSpec>& specs, bool ideal, const std::vector<glm::dvec3>& wo)
+{
+    for (std::size_t k = 0; const MaterialSpec& spec : specs) {
+        ParamsShortcutRun r = params_shortcut(make_material(spec), true, ideal, wo);
+        std::size_t admitted = 0;
+        for (float a : r.admitted)
+            admitted += a != 0.0f;
+        EXPECT_EQ(admitted, 0u) << "material " << k;
+        ++k;
+    }
+}
+
 TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
 {
     // bsdf_params sets an exactly Lambertian material's layer albedo, diffuse scale and
@@ -229,14 +243,7 @@ TEST(BsdfEval, TheDiffuseOnlyParamsAreTheGeneralOnesBitForBit)
         }
         ++k;
     }
-    for (std::size_t k = 0; const MaterialSpec& spec : nearly_lambertian()) {
-        ParamsShortcutRun r = params_shortcut(make_material(spec), true, false, wo);
-        std::size_t admitted = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            admitted += r.admitted[i] != 0.0f;
-        EXPECT_EQ(admitted, 0u) << "material " << k;
-        ++k;
-    }
+    expect_none_admitted(nearly_lambertian(), false, wo);
 }
 
 // The lobe choice's bits in write_base_fields' three float4: diffuse, conductor, interface,
@@ -333,14 +340,7 @@ TEST(BsdfEval, TheIdealMirrorAndGlassParamsChooseTheGeneralLobesBitForBit)
                                         conductor(0.04f),
                                         dielectric(0.04f),
                                         lambertian(glm::vec3(0.5f))};
-    for (std::size_t k = 0; const MaterialSpec& spec : others) {
-        ParamsShortcutRun r = params_shortcut(make_material(spec), true, true, wo);
-        std::size_t admitted = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            admitted += r.admitted[i] != 0.0f;
-        EXPECT_EQ(admitted, 0u) << "material " << k;
-        ++k;
-    }
+    expect_none_admitted(others, true, wo);
 }
 
 } // namespace
