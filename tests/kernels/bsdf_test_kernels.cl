@@ -119,6 +119,14 @@ static void write_base_fields(const BsdfParams* p, __global float4* out)
     out[2] = (float4)(p->lobes.interface, sheen, coat, 0.0f);
 }
 
+/* A BsdfSample as two float4: (wi, pdf), (weight, eta2, negated when not a delta sample).
+ * wi is written as 0 where there is no sample: a sampler may return before setting it. */
+static void write_sample(const BsdfSample* s, __global float4* out)
+{
+    out[0] = (float4)(s->pdf > 0.0f ? s->wi : (float3)(0.0f), s->pdf);
+    out[1] = (float4)(s->weight, s->delta ? s->eta2 : -s->eta2);
+}
+
 /* A shortcut of bsdf_params against its general part (bsdf_params_base), for one material
  * and each wo, one work-item each: `ideal` 0 takes bsdf_params_base_diffuse and its
  * predicate bsdf_params_diffuse_only, 1 bsdf_params_base_ideal and bsdf_params_ideal_only.
@@ -126,7 +134,7 @@ static void write_base_fields(const BsdfParams* p, __global float4* out)
  * them, to `shortcut` as the shortcut sets them and to `general` as the general code
  * computes them; the predicate (1 or 0) to `admitted`; to `samples`, bsdf_sample with the
  * numbers u[i] = (u_lobe, u) from the shortcut's fields and from the general ones, two
- * float4 each: (wi, pdf), (weight, eta2, negated when not a delta sample). */
+ * float4 each (write_sample). */
 __kernel void test_bsdf_params_shortcut(Material m, uint front_face, uint ideal, __global const float* layer,
                                         __global const float4* wo, __global const float4* u, __global float4* params,
                                         __global float4* shortcut, __global float4* general, __global float* admitted,
@@ -147,10 +155,8 @@ __kernel void test_bsdf_params_shortcut(Material m, uint front_face, uint ideal,
     admitted[i] = (ideal != 0u ? bsdf_params_ideal_only(&p) : bsdf_params_diffuse_only(&p)) ? 1.0f : 0.0f;
     BsdfSample sa = bsdf_sample(&a, &sp, wo[i].xyz, u[i].x, u[i].yz);
     BsdfSample sb = bsdf_sample(&b, &sp, wo[i].xyz, u[i].x, u[i].yz);
-    samples[4u * i] = (float4)(sa.wi, sa.pdf);
-    samples[4u * i + 1u] = (float4)(sa.weight, sa.delta ? sa.eta2 : -sa.eta2);
-    samples[4u * i + 2u] = (float4)(sb.wi, sb.pdf);
-    samples[4u * i + 3u] = (float4)(sb.weight, sb.delta ? sb.eta2 : -sb.eta2);
+    write_sample(&sa, samples + 4u * i);
+    write_sample(&sb, samples + 4u * i + 2u);
 }
 
 #endif
