@@ -136,8 +136,7 @@ static inline Hit bvh_closest_hit(const KernelData* kd, float3 origin, float3 di
              * one. */
             __global const TriangleBlock* block = &kd->triangle_blocks[cur.x];
             float8 t8, b18, b28, ts8, det8;
-            int8 hit8 = ray_triangle_block(&r, block, hit.t, &t8, &b18, &b28, &ts8, &det8);
-            uint lanes = lane_bits(hit8);
+            uint lanes = ray_triangle_block(&r, block, hit.t, &t8, &b18, &b28, &ts8, &det8);
             if (lanes != 0u) {
                 float t[8], b1[8], b2[8], ts[8], det_abs[8];
                 int tri[8];
@@ -247,9 +246,8 @@ static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 d
             if (cur.y > 0) {
             __global const TriangleBlock* block = &kd->triangle_blocks[cur.x];
             float8 t8, b18, b28, ts8, det8;
-            int8 hit8 = ray_triangle_block(&r, block, t_max, &t8, &b18, &b28, &ts8, &det8);
+            uint lanes = ray_triangle_block(&r, block, t_max, &t8, &b18, &b28, &ts8, &det8);
 #ifdef PATHCL_HAS_ALPHA
-            uint lanes = lane_bits(hit8);
             if (lanes != 0u) {
                 float b1[8], b2[8];
                 int tri[8];
@@ -267,7 +265,7 @@ static inline float bvh_visibility(const KernelData* kd, float3 origin, float3 d
                 }
             }
 #else
-            if (any(hit8))
+            if (lanes != 0u)
                 return 0.0f;
 #endif
         } else {

@@ -67,11 +67,13 @@ static inline uint lane_bits(int8 mask)
 /* The watertight test of the up to eight triangles of a leaf's block (types.h
  * TriangleBlock) at once, one per lane; each lane's arithmetic is that of testing its
  * triangle alone, so a lane's t and barycentrics do not depend on its neighbours. The
- * ray's permutation picks the block's rows. Returns the lanes hit at t in (0, t_max), with
- * t and the barycentric weights of v1 and v2; *ts_out and *det_abs_out are the two sides
- * of the comparison with t_max (ts < t_max * det_abs), so that a caller can ask a lane
- * again, exactly as testing it later would, after a closer hit has lowered t_max. */
-PATHCL_HOT_INLINE int8 ray_triangle_block(const RayTraversal* r, __global const TriangleBlock* block, float t_max,
+ * ray's permutation picks the block's rows. Returns the lanes hit at t in (0, t_max) as
+ * bits (lane_bits: bit k for lane k; the bits rather than the mask, so that a caller's
+ * branch on them follows the early exit below without a second reduction), with t and
+ * the barycentric weights of v1 and v2; *ts_out and *det_abs_out are the two sides of the
+ * comparison with t_max (ts < t_max * det_abs), so that a caller can ask a lane again,
+ * exactly as testing it later would, after a closer hit has lowered t_max. */
+PATHCL_HOT_INLINE uint ray_triangle_block(const RayTraversal* r, __global const TriangleBlock* block, float t_max,
                                           float8* t_out, float8* b1_out, float8* b2_out, float8* ts_out,
                                           float8* det_abs_out)
 {
@@ -116,7 +118,7 @@ PATHCL_HOT_INLINE int8 ray_triangle_block(const RayTraversal* r, __global const 
      * of lanes not hit are never read. */
     if (lane_bits(hit) == 0u) {
         *t_out = *b1_out = *b2_out = *ts_out = *det_abs_out = (float8)(0.0f);
-        return hit;
+        return 0u;
     }
     float8 inv_det = 1.0f / det;
     float8 t = t_scaled * inv_det;
@@ -142,7 +144,7 @@ PATHCL_HOT_INLINE int8 ray_triangle_block(const RayTraversal* r, __global const 
     *b2_out = w * inv_det;
     *ts_out = ts;
     *det_abs_out = det_abs;
-    return hit;
+    return lane_bits(hit);
 }
 
 #pragma OPENCL FP_CONTRACT ON

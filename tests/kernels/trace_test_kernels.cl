@@ -43,7 +43,7 @@ __kernel void test_trace_brute_force(__global const float4* origins, __global co
     h.triangle = -1;
     for (uint k = 0; k < count; ++k) {
         float8 t, b1, b2, ts, det_abs;
-        if (ray_triangle_block(&r, &singles[k], h.t, &t, &b1, &b2, &ts, &det_abs).s0) {
+        if (ray_triangle_block(&r, &singles[k], h.t, &t, &b1, &b2, &ts, &det_abs) & 1u) {
             h.t = t.s0;
             h.b1 = b1.s0;
             h.b2 = b2.s0;
