@@ -112,7 +112,7 @@ PATHCL_HOT_INLINE uint ray_triangle_block(const RayTraversal* r, __global const 
     float8 det_abs = det * sign;
     float8 ts = t_scaled * sign;
     hit &= (ts > 0.0f) & (ts < t_max * det_abs);
-    /* Most leaf tests end here with no lane left (the ray passes beside every triangle,
+    /* Many leaf tests end here with no lane left (the ray passes beside every triangle,
      * or meets their planes beyond the closest hit so far): the division and the error
      * bound below are then skipped (Cornell box 1.04-1.05x; README "Speed"). The outputs
      * of lanes not hit are never read. */
