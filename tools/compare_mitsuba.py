@@ -49,8 +49,9 @@ def errors(img, ref):
     return float(np.sqrt(np.mean(d2))), float(np.mean(d2 / (ref * ref + 0.01)))
 
 
-def pathcl_render(binary, scene, out, size, spp, bounces, sampler, seed, cache):
-    cmd = [binary, "render", scene, "-o", out, "--width", str(size), "--height", str(size), "--spp", str(spp),
+def pathcl_render(binary, scene, out, size, spp, bounces, sampler, seed, cache, wrapper=()):
+    """pathcl's render seconds; wrapper: a command that runs it (tools/profile_split.py's perf)."""
+    cmd = list(wrapper) + [binary, "render", scene, "-o", out, "--width", str(size), "--height", str(size), "--spp", str(spp),
            "--max-bounces", str(bounces), "--sampler", sampler, "--seed", str(seed)]
     env = dict(os.environ, PATHCL_CACHE_DIR=cache)
     text = subprocess.run(cmd, check=True, capture_output=True, text=True, env=env).stdout
@@ -58,6 +59,31 @@ def pathcl_render(binary, scene, out, size, spp, bounces, sampler, seed, cache):
     if not m:
         sys.exit(f"compare_mitsuba.py: no render time in: {text}")
     return float(m.group(1))
+
+
+def flat_copy(scene_path, out):
+    """The scene's flat-shaded copy in out (made once): both renderers see the same facets."""
+    name = os.path.splitext(os.path.basename(scene_path))[0]
+    flat = os.path.join(out, name + "-flat.gltf")
+    if not os.path.exists(flat):
+        subprocess.run([sys.executable, os.path.join(TOOLS, "strip_normals.py"), scene_path, flat], check=True)
+    return flat
+
+
+def mitsuba_runs(mi, loaded, size, spp, bounces, sampler, runs):
+    """Mitsuba's llvm_ad_rgb renders of a scene (mitsuba_reference.load_scene's triple) with
+    seeds 1..runs after a warm-up render (Dr.Jit compiles its kernels): the samples per pixel
+    it takes (orthogonal rounds up to the square of a prime) and (seconds, RGB) per run."""
+    prims, camera, lights = loaded
+    scene = mr.build_scene(mi, prims, camera, size, size, spp, bounces, lights, sampler)
+    spp = int(scene.sensors()[0].sampler().sample_count())
+    np.array(mi.render(scene, spp=spp, seed=0))
+    out = []
+    for seed in range(1, runs + 1):
+        t0 = time.time()
+        img = np.array(mi.render(scene, spp=spp, seed=seed), np.float64)[..., :3]
+        out.append((time.time() - t0, img))
+    return spp, out
 
 
 def summarize(rows, label, secs, errs, spp, pixels):
@@ -95,9 +121,7 @@ def main():
     tables = []
     for scene_path in args.scenes:
         name = os.path.splitext(os.path.basename(scene_path))[0]
-        flat = os.path.join(args.out, name + "-flat.gltf")
-        if not os.path.exists(flat):
-            subprocess.run([sys.executable, os.path.join(TOOLS, "strip_normals.py"), scene_path, flat], check=True)
+        flat = flat_copy(scene_path, args.out)
         ref_path = os.path.join(args.out, f"{name}-ref-{args.size}-{args.max_bounces}-{args.reference_spp}.exr")
         if not os.path.exists(ref_path):
             print(f"{name}: rendering the reference ({args.reference_spp} spp)", flush=True)
@@ -117,16 +141,10 @@ def main():
             summarize(rows, f"pathcl {sampler}", secs, errs, args.spp, pixels)
         prims, camera, lights = mr.load_scene(flat)
         for sampler in args.mitsuba_samplers.split(","):
-            scene = mr.build_scene(mi, prims, camera, args.size, args.size, args.spp, args.max_bounces, lights, sampler)
-            # The samples it takes (orthogonal rounds up to the square of a prime).
-            spp = int(scene.sensors()[0].sampler().sample_count())
-            np.array(mi.render(scene, spp=spp, seed=0))  # warm-up: Dr.Jit compiles its kernels
-            secs, errs = [], []
-            for seed in range(1, args.runs + 1):
-                t0 = time.time()
-                img = np.array(mi.render(scene, spp=spp, seed=seed), np.float64)[..., :3]
-                secs.append(time.time() - t0)
-                errs.append(errors(img, ref))
+            spp, runs = mitsuba_runs(mi, (prims, camera, lights), args.size, args.spp, args.max_bounces, sampler,
+                                     args.runs)
+            secs = [t for t, _ in runs]
+            errs = [errors(img, ref) for _, img in runs]
             summarize(rows, f"mitsuba llvm {sampler}" + (f" ({spp} spp)" if spp != args.spp else ""), secs, errs,
                       spp, pixels)
         tables.append((name, rows))
