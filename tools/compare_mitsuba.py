@@ -51,8 +51,8 @@ def errors(img, ref):
 
 def pathcl_render(binary, scene, out, size, spp, bounces, sampler, seed, cache, wrapper=()):
     """pathcl's render seconds; wrapper: a command that runs it (tools/profile_split.py's perf)."""
-    cmd = list(wrapper) + [binary, "render", scene, "-o", out, "--width", str(size), "--height", str(size), "--spp", str(spp),
-           "--max-bounces", str(bounces), "--sampler", sampler, "--seed", str(seed)]
+    cmd = list(wrapper) + [binary, "render", scene, "-o", out, "--width", str(size), "--height", str(size),
+                           "--spp", str(spp), "--max-bounces", str(bounces), "--sampler", sampler, "--seed", str(seed)]
     env = dict(os.environ, PATHCL_CACHE_DIR=cache)
     text = subprocess.run(cmd, check=True, capture_output=True, text=True, env=env).stdout
     m = re.search(r"render ([0-9.]+) s", text)
