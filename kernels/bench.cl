@@ -68,7 +68,7 @@ __kernel void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint dif
         out.origin = (float4)(spawn_ray_origin(&sp, wi), 0.0f);
         out.direction = (float4)(wi, 0.0f);
     } else {
-        LightSample ls = light_sample(&kd, frame.light_count, sp.p, &s);
+        LightSample ls = light_sample(&kd, &frame, sp.p, sp.ns, &s);
         float3 from = spawn_ray_origin(&sp, ls.wi);
         float3 dir = ls.wi;
         float extent = 0.0f; /* unbounded */

@@ -33,7 +33,9 @@
 #define FEATURE_INSTANCES (1u << 18)         /* a mesh stored once and drawn by instances (two-level BVH) */
 #define FEATURE_SHEEN (1u << 19)             /* a material with a KHR_materials_sheen colour above 0 */
 #define FEATURE_ANISOTROPY (1u << 20)        /* a material with KHR_materials_anisotropy strength above 0 */
-#define FEATURE_ALL ((1u << 21) - 1u)
+/* Model options added later. */
+#define FEATURE_LIGHT_TREE (1u << 21) /* --light-sampler tree: lights picked by the light tree */
+#define FEATURE_ALL ((1u << 22) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -103,6 +105,9 @@
 #endif
 #if PATHCL_FEATURES & FEATURE_ANISOTROPY
 #define PATHCL_HAS_ANISOTROPY
+#endif
+#if PATHCL_FEATURES & FEATURE_LIGHT_TREE
+#define PATHCL_LIGHT_TREE
 #endif
 
 /* Derived guards. */

@@ -278,6 +278,19 @@ typedef struct {
     pcl_int pad0;
 } LightAliasEntry;
 
+/* A node of the light tree (--light-sampler tree; kernels/light/light_tree.cl, built by
+ * host/render/light_tree.cpp): the bounds of the lights below it, from which the descent
+ * weighs its two children at a shading point (Conty Estevez and Kulla 2018). Nodes are in
+ * depth-first order: an inner node's first child follows it. 64 bytes. */
+typedef struct {
+    pcl_float4 lo;   /* xyz: the lights' box; w: phi, their power */
+    pcl_float4 hi;   /* xyz: the box's far corner; w: cos theta_o, the cone of their normals */
+    pcl_float4 axis; /* xyz: that cone's axis; w: cos theta_e, how far past it they emit */
+    pcl_int child;   /* inner node: its second child; leaf: -1 - the light */
+    pcl_int two_sided;
+    pcl_int pad0, pad1;
+} LightTreeNode;
+
 /* Camera projections */
 #define CAMERA_PERSPECTIVE 0  /* pinhole, or a thin lens when lens_radius > 0 */
 #define CAMERA_ORTHOGRAPHIC 1 /* parallel rays along forward (thin lens too if lens_radius > 0) */
@@ -334,7 +347,8 @@ typedef struct {
                                  independent numbers (sample/sampler.cl) */
     pcl_uint adaptive;        /* 1: pixels whose film array `active` entry is 0 take no sample */
     pcl_uint first_row;       /* image row of work-item row 0: the device's band (render/device_bands.h) */
-    pcl_uint pad0, pad1;
+    pcl_float infinite_pick;  /* light tree: how often next event estimation picks an infinite light */
+    pcl_uint infinite_count;  /* light tree: the infinite lights (directional, environment) */
 } FrameParams;
 
 /* Film pixel: Neumaier-compensated float sums of the radiance and of its square, so a

@@ -31,10 +31,13 @@ static_assert(sizeof(RectSpotLight) == 64 && offsetof(RectSpotLight, tan_half_h)
 static_assert(sizeof(SphereLight) == 32 && offsetof(SphereLight, radius) == 16);
 static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80);
 static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) == 8);
+static_assert(sizeof(LightTreeNode) == 64 && offsetof(LightTreeNode, axis) == 32 &&
+              offsetof(LightTreeNode, child) == 48 && offsetof(LightTreeNode, two_sided) == 52);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
               offsetof(Camera, focus_distance) == 72);
 static_assert(sizeof(FrameParams) == 64 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40 &&
-              offsetof(FrameParams, adaptive) == 48 && offsetof(FrameParams, first_row) == 52);
+              offsetof(FrameParams, adaptive) == 48 && offsetof(FrameParams, first_row) == 52 &&
+              offsetof(FrameParams, infinite_pick) == 56 && offsetof(FrameParams, infinite_count) == 60);
 static_assert(sizeof(FilmPixel) == 64);
 
 } // namespace pathcl

@@ -5,7 +5,8 @@
 //   compile_materials.cpp  Material records
 //   compile_textures.cpp   texel buffer, images, views, texture-coordinate sets
 //   compile_lights.cpp     Light records and their powers (light_distribution.h turns the
-//                          powers into the pick probabilities and the alias table)
+//                          powers into the pick probabilities and the alias table, and
+//                          light_tree.h into the light tree)
 //   environment.cpp        the environment map's texels and sampling distribution
 //   compile_camera.cpp     the Camera for an image size
 // compile_scene runs them in that order; only the steps the feature mask asks for fill
@@ -19,6 +20,7 @@
 #include "bvh/bvh_builder.h"
 #include "render/device_arrays.h"
 #include "render/kernel_features.h"
+#include "render/render_options.h"
 #include "scene/scene.h"
 
 namespace pathcl {
@@ -31,6 +33,11 @@ struct CompiledScene {
     // lights, and the environment last (environment_light; -1 if none).
     std::size_t sphere_count = 0;
     int environment_light = -1;
+    // The light tree (FEATURE_LIGHT_TREE; render/light_tree.h): how often the infinite
+    // lights (arrays.light_tree_infinite) are picked, the tree's depth and build time.
+    double infinite_pick = 0.0;
+    std::uint32_t light_tree_depth = 0;
+    double light_tree_build_seconds = 0.0;
     // Depth and leaf figures (its nodes moved into arrays.nodes; with instances, the
     // top-level tree's) and triangle_order: the stored triangle at each leaf position.
     Bvh bvh;
@@ -39,7 +46,10 @@ struct CompiledScene {
     std::size_t texel_bytes() const { return arrays.texels.size() * sizeof(pcl_uint); }
 };
 
-CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features);
+// light_sampler: the weights of the power table (uniform: all alike); the tree is built
+// when the features ask for it.
+CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features,
+                            LightSampler light_sampler = LightSampler::Power);
 
 inline pcl_float4 to_float4(const glm::vec3& v, float w = 0.0f)
 {

@@ -48,8 +48,9 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     set(FEATURE_THIN_LENS, scene.camera.aperture > 0.0);
     set(FEATURE_INSTANCES, !scene.instances.empty());
     if (options.specialization == Specialization::All)
-        f.mask |= FEATURE_ALL & ~FEATURE_SINGLE_SCATTERING; // a model option, not a scene feature
+        f.mask |= FEATURE_ALL & ~(FEATURE_SINGLE_SCATTERING | FEATURE_LIGHT_TREE); // model options, not scene features
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
+    set(FEATURE_LIGHT_TREE, options.light_sampler == LightSampler::Tree);
     return f;
 }
 
@@ -84,8 +85,9 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "clearcoat",
                                         "instances",
                                         "sheen",
-                                        "anisotropy"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 21 && FEATURE_ALL == (1u << 21) - 1u);
+                                        "anisotropy",
+                                        "light-tree"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 22 && FEATURE_ALL == (1u << 22) - 1u);
     std::vector<std::string> out;
     for (std::uint32_t b = 0; b < sizeof(names) / sizeof(names[0]); ++b)
         if (mask & (1u << b))

@@ -42,6 +42,27 @@ enum class Specialization : std::uint32_t {
     All,   // every scene feature, whatever the scene (for measuring what specializing saves)
 };
 
+// How next event estimation picks a light (--light-sampler).
+enum class LightSampler : std::uint32_t {
+    Power,   // in proportion to each light's power, wherever the shading point is (an alias table)
+    Tree,    // by the light tree: power, distance and orientation at the shading point
+    Uniform, // every light alike (Mitsuba 3's default; for comparisons)
+};
+
+// "power", "tree" or "uniform".
+inline const char* light_sampler_name(LightSampler s)
+{
+    switch (s) {
+    case LightSampler::Power:
+        return "power";
+    case LightSampler::Tree:
+        return "tree";
+    case LightSampler::Uniform:
+        return "uniform";
+    }
+    return "unknown";
+}
+
 // How a pass is run on the device (kernels/integrator/megakernel.cl,
 // kernels/wavefront/wavefront.cl); both render the same image.
 enum class Integrator : std::uint32_t {
@@ -57,6 +78,7 @@ struct RenderOptions {
     std::uint32_t max_bounces = 8; // scattering events: 0 = emission only, 1 = direct light
     std::uint32_t seed = 0;
     Strategy strategy = Strategy::Mis;
+    LightSampler light_sampler = LightSampler::Power;
     // Owen-scrambled Sobol': on the Cornell box at 64 spp a quarter of the independent
     // sampler's RMSE for about 1.2 times the time per sample (README). spp is rounded as
     // sampler_spp() says.

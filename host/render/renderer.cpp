@@ -124,7 +124,7 @@ struct Renderer::Impl {
         check_options(opt);
         default_plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
-        compiled = compile_scene(scene, kernel_features(scene, opt));
+        compiled = compile_scene(scene, kernel_features(scene, opt), opt.light_sampler);
         compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
         setup.triangles = compiled.arrays.triangles.size();
         setup.drawn_triangles = scene.drawn_triangles();
@@ -407,16 +407,22 @@ struct Renderer::Impl {
     // are taken: sample ranges of one render carry the same key (render/partial_renders.h).
     std::string render_key(const RenderRun& run, const RenderOptions& opt, const BatchPlan& plan) const
     {
-        return "scene " + run.scene_key + "; size " + std::to_string(opt.width) + "x" + std::to_string(opt.height) +
-               "; seed " + std::to_string(run.seed) + "; sampler " + sampler_name(opt.sampler) + "; strategy " +
-               strategy_name(opt.strategy) + "; bounces " + std::to_string(opt.max_bounces) + "; stratified bounces " +
-               std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
-               std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
-               std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
-               std::to_string(opt.adaptive) + "; sample layout " + std::to_string(DIM_LAYOUT_VERSION) +
-               // The integrators' images agree to rounding, not bit for bit: ranges of one
-               // do not merge with ranges of the other.
-               (opt.integrator == Integrator::Wavefront ? "; integrator wavefront" : "");
+        std::string key =
+            "scene " + run.scene_key + "; size " + std::to_string(opt.width) + "x" + std::to_string(opt.height) +
+            "; seed " + std::to_string(run.seed) + "; sampler " + sampler_name(opt.sampler) + "; strategy " +
+            strategy_name(opt.strategy) + "; bounces " + std::to_string(opt.max_bounces) + "; stratified bounces " +
+            std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
+            std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
+            std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
+            std::to_string(opt.adaptive) + "; sample layout " + std::to_string(DIM_LAYOUT_VERSION);
+        // Named only when not the default, so that the keys of earlier renders stay valid.
+        // The integrators' images agree to rounding, not bit for bit: ranges of one do not
+        // merge with ranges of the other.
+        if (opt.integrator == Integrator::Wavefront)
+            key += "; integrator wavefront";
+        if (opt.light_sampler != LightSampler::Power)
+            key += std::string("; light sampler ") + light_sampler_name(opt.light_sampler);
+        return key;
     }
 
     // And what a checkpoint must match besides: the range and the devices.
@@ -745,6 +751,8 @@ FrameParams frame_params(const CompiledScene& compiled, const RenderOptions& opt
     // at least max_bounces.
     std::uint64_t dims = DIM_PATH_START + static_cast<std::uint64_t>(opt.stratified_bounces) * DIMS_PER_BOUNCE;
     frame.stratified_dims = static_cast<pcl_uint>(std::min<std::uint64_t>(dims, 0xffffffffu));
+    frame.infinite_pick = static_cast<float>(compiled.infinite_pick);
+    frame.infinite_count = static_cast<pcl_uint>(compiled.arrays.light_tree_infinite.size());
     return frame;
 }
 

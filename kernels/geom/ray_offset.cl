@@ -44,3 +44,11 @@ static inline float3 spawn_ray_origin(const SurfacePoint* sp, float3 w)
         return offset_ray_origin(sp->p_smooth, sp->p_error, sp->ng, sp->ng);
     return offset_ray_origin(sp->p, sp->p_error, sp->ng, w);
 }
+
+/* Where a shading point's light samples are seen from: reflected rays (shadow rays
+ * included) leave from there, so that a light's pdf at the point and on the hits of its
+ * BSDF rays, which is measured from there, agree. */
+static inline float3 light_sample_origin(const SurfacePoint* sp)
+{
+    return sp->lifted ? sp->p_smooth : sp->p;
+}

@@ -31,12 +31,13 @@ static inline bool direct_light_wanted(const FrameParams* frame, const ShadingPo
 }
 
 /* The light the bounce whose decisions start at sampler dimension `dims` samples (its
- * DIM_LIGHT decisions). */
-static inline LightChoice direct_light_choose(const KernelData* kd, const FrameParams* frame, uint dims,
-                                              SamplerState* sampler)
+ * DIM_LIGHT decisions), for the shading point ref with normal n (which only the light
+ * tree reads). */
+static inline LightChoice direct_light_choose(const KernelData* kd, const FrameParams* frame, uint dims, float3 ref,
+                                              float3 n, SamplerState* sampler)
 {
     sampler->dimension = dims + DIM_LIGHT;
-    return light_choose(kd, frame->light_count, sampler);
+    return light_choose(kd, frame, ref, n, sampler);
 }
 
 /* Adds the contribution of a sample of the chosen light to the path's radiance. */
@@ -44,9 +45,7 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
                                 float3 wo, bool technique_light, const LightChoice* choice)
 {
     const SurfacePoint* sp = &s->sp;
-    /* From where reflected rays (shadow rays included) leave, so that the light's pdf here
-     * and on BSDF hits, which is measured from there, agree. */
-    LightSample ls = light_sample_chosen(kd, choice, sp->lifted ? sp->p_smooth : sp->p);
+    LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp));
     if (!(ls.pdf > 0.0f))
         return;
     BsdfEval e = bsdf_eval(&s->bsdf, sp, wo, ls.wi);

@@ -40,13 +40,14 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         SamplerState sampler = sampler_bounce(&path_sampler, dims);
 #ifdef PATHCL_HAS_LIGHTS
         LightChoice light_choice;
-#ifndef PATHCL_FULL_BSDF
+#if !defined(PATHCL_FULL_BSDF) && !defined(PATHCL_LIGHT_TREE)
         /* Lambertian surfaces only: every hit that scatters samples a light, so the pick
          * (the alias table's chain of integer divisions) is made before the traversal too.
          * Where delta lobes skip light sampling it waits for the hit (drawn early it ran
-         * slower through glass and on the material spheres). */
+         * slower through glass and on the material spheres), as does the light tree, which
+         * weighs the lights as seen from the hit. */
         if (frame_samples_lights(&frame))
-            light_choice = direct_light_choose(&kd, &frame, dims, &sampler);
+            light_choice = direct_light_choose(&kd, &frame, dims, (float3)(0.0f), (float3)(0.0f), &sampler);
 #endif
 #endif
         Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);
@@ -76,8 +77,8 @@ __kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         bool technique_light = frame.strategy == STRATEGY_ONE_SAMPLE && sampler_get_1d(&sampler) < 0.5f;
 #ifdef PATHCL_HAS_LIGHTS
         if (direct_light_wanted(&frame, &s, technique_light)) {
-#ifdef PATHCL_FULL_BSDF
-            light_choice = direct_light_choose(&kd, &frame, dims, &sampler);
+#if defined(PATHCL_FULL_BSDF) || defined(PATHCL_LIGHT_TREE)
+            light_choice = direct_light_choose(&kd, &frame, dims, light_sample_origin(&s.sp), s.sp.ns, &sampler);
 #endif
             direct_light(&kd, &frame, &ps, &s, wo, technique_light, &light_choice);
         }

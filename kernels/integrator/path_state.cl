@@ -17,6 +17,10 @@ typedef struct {
 #ifdef PATHCL_HAS_UNLIT
     bool specular_chain; /* every bounce so far was a delta lobe: unlit surfaces are seen */
 #endif
+#ifdef PATHCL_LIGHT_TREE
+    float3 prev_ref, prev_n; /* the point and shading normal the ray left from: the light tree's
+                              * pmf for a light the ray hits is the one a pick there had */
+#endif
 } PathState;
 
 /* A path starting along a camera ray. */
@@ -36,6 +40,9 @@ static inline PathState path_state_start(Ray ray)
 #endif
 #ifdef PATHCL_HAS_UNLIT
     ps.specular_chain = true;
+#endif
+#ifdef PATHCL_LIGHT_TREE
+    ps.prev_ref = ps.prev_n = (float3)(0.0f); /* read only after a non-delta bounce */
 #endif
     return ps;
 }

@@ -7,6 +7,7 @@
 #include "integrator/path_state.cl"
 #include "kernel_data.cl"
 #include "light/environment.cl"
+#include "light/light_sample.cl"
 #include "light/sphere.cl"
 
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
@@ -25,7 +26,11 @@ static inline bool shade_sphere_lights(const KernelData* kd, const FrameParams* 
         ps->beta *= medium_transmittance(kd, ps->medium, t_sphere);
 #endif
         Light light = kd->lights[sphere];
+#ifdef PATHCL_LIGHT_TREE
+        float pmf = light_pick_pmf(kd, frame, ps->prev_ref, ps->prev_n, sphere);
+#else
         float pmf = kd->light_distribution[sphere].pmf;
+#endif
         float w = ps->prev_delta ? 1.0f
                                  : bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf,
                                                    sphere_light_pdf(&light, pmf, ps->origin));
@@ -41,7 +46,11 @@ static inline void shade_background(const KernelData* kd, const FrameParams* fra
 #ifdef PATHCL_HAS_ENVIRONMENT
     if (frame->environment >= 0) {
         Light e = kd->lights[frame->environment];
+#ifdef PATHCL_LIGHT_TREE
+        float pmf = light_pick_pmf(kd, frame, ps->prev_ref, ps->prev_n, frame->environment);
+#else
         float pmf = kd->light_distribution[frame->environment].pmf;
+#endif
         uint2 texel = environment_texel(&e.data.environment, ps->dir);
         float w = ps->prev_delta ? 1.0f
                                  : bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf,

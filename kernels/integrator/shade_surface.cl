@@ -8,6 +8,7 @@
 #include "integrator/mis.cl"
 #include "integrator/path_state.cl"
 #include "kernel_data.cl"
+#include "light/light_sample.cl"
 #include "light/triangle.cl"
 #include "texture/anisotropy.cl"
 #include "texture/material_inputs.cl"
@@ -45,7 +46,11 @@ static inline void shade_surface_emission(const KernelData* kd, const FrameParam
             ps->radiance += ps->beta * le;
         } else {
             Light light = kd->lights[s->sp.emitter];
+#ifdef PATHCL_LIGHT_TREE
+            float pmf = light_pick_pmf(kd, frame, ps->prev_ref, ps->prev_n, s->sp.emitter);
+#else
             float pmf = kd->light_distribution[s->sp.emitter].pmf;
+#endif
             float light_pdf = triangle_light_pdf(&light, pmf, hit.t, dot(s->sp.ng, wo));
             ps->radiance +=
                 ps->beta * le * bsdf_hit_weight(frame->strategy, ps->prev_technique_bsdf, ps->prev_bsdf_pdf, light_pdf);

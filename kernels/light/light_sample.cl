@@ -1,29 +1,51 @@
-/* Next event estimation's light sample: pick one light in proportion to its power, then
- * a point or direction on it as its type says (the other files of light/). Only the light types a
- * scene has are compiled (PATHCL_HAS_*_LIGHTS). */
+/* Next event estimation's light sample: pick one light (in proportion to its power, or by
+ * the light tree with --light-sampler tree), then a point or direction on it as its type
+ * says (the other files of light/). Only the light types a scene has are compiled
+ * (PATHCL_HAS_*_LIGHTS). */
 #include "features.h"
 #include "kernel_data.cl"
 #include "light/environment.cl"
 #include "light/light_pick.cl"
 #include "light/light_sample_record.cl"
+#include "light/light_tree.cl"
 #include "light/punctual.cl"
 #include "light/sphere.cl"
 #include "light/triangle.cl"
 #include "sample/sampler.cl"
 #include "util/hash.cl"
 
-/* The part of a light sample that does not depend on the point it is seen from: the light
- * picked and the numbers left for its point on it. */
+/* The light a sample is of: the light picked, the probability it was picked with, and the
+ * numbers left for its point on it. */
 typedef struct {
-    int light;
-    float2 u; /* the point's numbers, u.x rescaled within the picked slot */
+    int light; /* -1: none (the light tree found no light that can reach the point) */
+    float pmf;
+    float2 u; /* the point's numbers (power table: u.x rescaled within the picked slot) */
 } LightChoice;
 
-/* Picks the light, drawing the alias coin (a 1D decision) and the point (a 2D decision
- * whose first number also picks the slot) from the sampler. */
-static inline LightChoice light_choose(const KernelData* kd, uint count, SamplerState* sampler)
+/* The probability that a light is picked for the shading point ref with normal n. */
+static inline float light_pick_pmf(const KernelData* kd, const FrameParams* frame, float3 ref, float3 n, int light)
+{
+#ifdef PATHCL_LIGHT_TREE
+    return light_tree_pmf(kd, frame, ref, n, light);
+#else
+    return kd->light_distribution[light].pmf;
+#endif
+}
+
+/* Picks the light for the shading point ref with normal n, drawing a 1D decision (the
+ * alias coin, or the tree's descent) and the point's 2D decision from the sampler. The
+ * power table needs no point: the megakernel picks before it traces (ref, n unused). */
+static inline LightChoice light_choose(const KernelData* kd, const FrameParams* frame, float3 ref, float3 n,
+                                       SamplerState* sampler)
 {
     LightChoice c;
+#ifdef PATHCL_LIGHT_TREE
+    uint fresh_key = hash_combine(sampler->sample_key, sampler->dimension);
+    float u_tree = sampler_get_1d(sampler);
+    c.u = sampler_get_2d(sampler);
+    c.light = light_tree_pick(kd, frame, ref, n, u_tree, fresh_key, &c.pmf);
+#else
+    uint count = frame->light_count;
     float u_alias = sampler_get_1d(sampler);
     /* Independent of every sampler's numbers: the pair's own independent number, hashed
      * once more. With at most 16 lights a step is at most 2^-20 of the slot and its middle
@@ -33,10 +55,11 @@ static inline LightChoice light_choose(const KernelData* kd, uint count, Sampler
         step_jitter = u32_to_unit_float(hash_combine(hash_combine(sampler->sample_key, sampler->dimension), 1u));
     float2 u = sampler_get_2d(sampler);
     float u_slot = u.x;
-    int picked = light_pick(kd->light_distribution, count, &u_slot, u_alias, step_jitter);
+    c.light = light_pick(kd->light_distribution, count, &u_slot, u_alias, step_jitter);
     u.x = u_slot; /* rescaled within the slot: uniform again */
-    c.light = picked;
     c.u = u;
+    c.pmf = kd->light_distribution[c.light].pmf;
+#endif
     return c;
 }
 
@@ -50,8 +73,10 @@ static inline LightSample light_sample_chosen(const KernelData* kd, const LightC
     ls.p_error = (float3)(0.0f);
     ls.radiance = (float3)(0.0f);
     ls.wi = ls.n = ls.p = (float3)(0.0f);
+    if (c->light < 0)
+        return ls;
     Light light = kd->lights[c->light];
-    float pmf = kd->light_distribution[c->light].pmf;
+    float pmf = c->pmf;
     float2 u = c->u;
 
 #ifdef PATHCL_HAS_ENVIRONMENT
@@ -87,9 +112,10 @@ static inline LightSample light_sample_chosen(const KernelData* kd, const LightC
     return ls;
 }
 
-/* One light sample seen from ref, its numbers from the sampler. */
-static inline LightSample light_sample(const KernelData* kd, uint count, float3 ref, SamplerState* sampler)
+/* One light sample seen from ref (shading normal n), its numbers from the sampler. */
+static inline LightSample light_sample(const KernelData* kd, const FrameParams* frame, float3 ref, float3 n,
+                                       SamplerState* sampler)
 {
-    LightChoice c = light_choose(kd, count, sampler);
+    LightChoice c = light_choose(kd, frame, ref, n, sampler);
     return light_sample_chosen(kd, &c, ref);
 }

@@ -79,7 +79,7 @@ __kernel void wavefront_extend(PATHCL_KERNEL_PARAMS FrameParams frame, __global 
     SamplerState sampler = sampler_bounce(&path_sampler, dims);
 #ifdef PATHCL_HAS_LIGHTS
     if (frame_samples_lights(&frame)) {
-        LightChoice choice = direct_light_choose(&kd, &frame, dims, &sampler);
+        LightChoice choice = direct_light_choose(&kd, &frame, dims, (float3)(0.0f), (float3)(0.0f), &sampler);
         STATE_SET_I(s, light, p, choice.light);
         STATE_SET_F(s, light_u0, p, choice.u.x);
         STATE_SET_F(s, light_u1, p, choice.u.y);

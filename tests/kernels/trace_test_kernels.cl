@@ -99,7 +99,9 @@ __kernel void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uin
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
-    LightSample ls = light_sample(&kd, count, ref.xyz, &s);
+    FrameParams frame = {0};
+    frame.light_count = count;
+    LightSample ls = light_sample(&kd, &frame, ref.xyz, (float3)(0.0f), &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }

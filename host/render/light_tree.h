@@ -1,0 +1,55 @@
+// The light tree (--light-sampler tree): a binary tree over every light's bounds (box,
+// power, the cone of directions it emits along), built on the host and descended on the
+// device, where each step picks a child in proportion to its importance at the shading
+// point (kernels/light/light_tree.cl; Conty Estevez and Kulla 2018). Infinite lights
+// (directional, environment) have no bounds: they stay out of the tree and are picked
+// beside it, with a probability in proportion to their share of the power.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "types.h"
+
+namespace pathcl {
+
+// The directions a light emits along: within theta_o of `axis` (cos_o; -1: every
+// direction), and spreading theta_e past that cone (cos_e; 0 for a Lambertian surface).
+struct LightCone {
+    glm::dvec3 axis{0.0, 0.0, 1.0};
+    double cos_o = -1.0;
+    double cos_e = 0.0;
+};
+
+struct LightBounds {
+    bool infinite = false; // directional or environment: no bounds, picked beside the tree
+    glm::dvec3 lo{0.0}, hi{0.0};
+    double phi = 0.0; // power (W of luminance), as the power table weighs lights
+    LightCone cone;
+    bool two_sided = false;
+};
+
+// Every light's bounds, in the order of the light records: from the records themselves
+// (what the kernels sample) and each light's power (compile_lights).
+std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const std::vector<double>& power);
+
+// The smallest cone (up to the method's slack) that holds both.
+LightCone cone_union(const LightCone& a, const LightCone& b);
+
+struct LightTree {
+    std::vector<LightTreeNode> nodes; // depth-first, root first; empty when every light is infinite
+    std::vector<pcl_ulong> trails;    // per light: bit k = the child taken at depth k (1: the second); all
+                                      // ones for an infinite light
+    std::vector<pcl_int> infinite;    // the infinite lights
+    double infinite_pick = 0.0;       // the probability of picking one of them
+    std::uint32_t depth = 0;          // the deepest leaf's depth
+};
+
+// Builds the tree by the surface area orientation heuristic (the paper's SAOH: binned
+// along each axis, power x orientation measure x box area), one light per leaf. Throws
+// pathcl::Error if a light's bounds are not finite.
+LightTree build_light_tree(const std::vector<LightBounds>& lights);
+
+} // namespace pathcl

@@ -1,0 +1,209 @@
+// The light tree on the device (kernels/light/light_tree.cl), over a few hundred lights
+// of every bounded kind and power over four decades, with an infinite light beside them,
+// seen from points in and around them: each light is picked as often as light_tree_pmf
+// says, and no light as often as the pmfs of all lights fall short of 1 (a chi-square test
+// of the pick counts; a descent stops where both children's lights are judged unable to
+// reach the point, though their parent's looser bounds were not), every pick reports the
+// pmf light_tree_pmf computes for its light bit for bit, and a light of pmf 0 is never
+// picked. A descent that does not rescale its number fails the same test.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "render/light_tree.h"
+#include "support/chi_square.h"
+#include "support/device_fixture.h"
+
+namespace pathcl {
+namespace {
+
+constexpr std::size_t kLights = 300;
+constexpr std::size_t kPicks = 1 << 19;
+
+struct TreeScene {
+    SceneArrays arrays;
+    FrameParams frame{};
+};
+
+TreeScene make_scene()
+{
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto direction = [&] {
+        double z = 2.0 * u(rng) - 1.0, phi = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
+        return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+    };
+    std::vector<LightBounds> lights(kLights);
+    for (std::size_t i = 0; i < kLights; ++i) {
+        LightBounds& b = lights[i];
+        glm::dvec3 c(8.0 * u(rng) - 4.0, 8.0 * u(rng) - 4.0, 8.0 * u(rng) - 4.0);
+        glm::dvec3 half = i % 4 == 0 ? glm::dvec3(0.0) : glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng));
+        b.lo = c - half;
+        b.hi = c + half;
+        b.phi = std::pow(10.0, 4.0 * u(rng) - 2.0);
+        switch (i % 4) {
+        case 0: // a point light
+            b.cone = {{0.0, 0.0, 1.0}, -1.0, 0.0};
+            break;
+        case 1: // a spot
+            b.cone = {direction(), std::cos(0.6), std::cos(0.001)};
+            break;
+        default: // a one-sided emissive triangle
+            b.cone = {direction(), 1.0, 0.0};
+        }
+    }
+    LightBounds sun;
+    sun.infinite = true;
+    sun.phi = 20.0;
+    lights[7] = sun;
+    LightTree tree = build_light_tree(lights);
+    TreeScene s;
+    s.arrays.lights.resize(kLights);
+    s.arrays.light_tree = tree.nodes;
+    s.arrays.light_tree_trail = tree.trails;
+    s.arrays.light_tree_infinite = tree.infinite;
+    s.frame.light_count = kLights;
+    s.frame.infinite_pick = static_cast<float>(tree.infinite_pick);
+    s.frame.infinite_count = static_cast<pcl_uint>(tree.infinite.size());
+    return s;
+}
+
+struct Shading {
+    pcl_float4 ref, n;
+};
+
+// Points inside the lights' box, at its edge and far outside; with a normal, and without.
+std::vector<Shading> shading_points()
+{
+    return {{{0.1f, 0.2f, 0.3f, 0.0f}, {0.0f, 0.0f, 1.0f, 0.0f}},
+            {{3.9f, -3.5f, 1.0f, 0.0f}, {0.6f, 0.0f, 0.8f, 0.0f}},
+            {{40.0f, 30.0f, -20.0f, 0.0f}, {-0.8f, -0.6f, 0.0f, 0.0f}},
+            {{-2.0f, 1.0f, 0.5f, 0.0f}, {0.0f, 0.0f, 0.0f, 0.0f}}};
+}
+
+// Pearson's test of `counts` against n * pmf, cells of fewer than 5 expected pooled.
+double chi_square_p_value(const std::vector<std::size_t>& counts, const std::vector<double>& pmf, std::size_t n,
+                          std::string* worst)
+{
+    std::vector<std::size_t> order(pmf.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pmf[a] < pmf[b]; });
+    double statistic = 0.0, pooled_expected = 0.0, pooled_observed = 0.0, worst_term = 0.0;
+    int cells = 0;
+    auto add = [&](double observed, double expected, std::size_t light) {
+        double term = (observed - expected) * (observed - expected) / expected;
+        statistic += term;
+        ++cells;
+        if (term > worst_term) {
+            worst_term = term;
+            *worst = "cell " + std::to_string(light) + ": " + std::to_string(observed) + " picks, expected " +
+                     std::to_string(expected);
+        }
+    };
+    for (std::size_t i : order) {
+        double expected = pmf[i] * static_cast<double>(n);
+        if (expected < 5.0 || pooled_expected > 0.0) {
+            pooled_expected += expected;
+            pooled_observed += static_cast<double>(counts[i]);
+            if (pooled_expected >= 5.0) {
+                add(pooled_observed, pooled_expected, i);
+                pooled_expected = pooled_observed = 0.0;
+            }
+            continue;
+        }
+        add(static_cast<double>(counts[i]), expected, i);
+    }
+    if (pooled_expected > 0.0)
+        add(pooled_observed, pooled_expected, order.back());
+    return test::chi_square_survival(statistic, cells - 1);
+}
+
+// Runs the checks at every shading point; returns how many points failed the chi-square
+// test (the other checks are expectations).
+int check_picks(const std::vector<KernelPatch>& patches, bool report)
+{
+    static const TreeScene scene = make_scene();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE, patches);
+    ClDevice& dev = test::test_device();
+    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
+    const std::vector<Shading> points = shading_points();
+    const double alpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / static_cast<double>(points.size())); // Sidak
+    int failed = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Shading& sp = points[k];
+        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, kLights * sizeof(float));
+        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
+        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(kLights));
+        std::vector<float> pmf = test::read_back<float>(pmf_out, kLights);
+
+        cl::Buffer light_out(dev.context, CL_MEM_WRITE_ONLY, kPicks * sizeof(int));
+        cl::Buffer pick_pmf_out(dev.context, CL_MEM_WRITE_ONLY, kPicks * sizeof(float));
+        cl::Buffer again_out(dev.context, CL_MEM_WRITE_ONLY, kPicks * sizeof(float));
+        cl::Kernel pick_kernel(program, "test_light_tree_pick");
+        bind_kernel(pick_kernel, a, scene.frame, sp.ref, sp.n, static_cast<cl_uint>(101 + k), light_out, pick_pmf_out,
+                    again_out);
+        dev.queue.enqueueNDRangeKernel(pick_kernel, cl::NullRange, cl::NDRange(kPicks));
+        std::vector<int> light = test::read_back<int>(light_out, kPicks);
+        std::vector<float> pick_pmf = test::read_back<float>(pick_pmf_out, kPicks);
+        std::vector<float> again = test::read_back<float>(again_out, kPicks);
+
+        double sum = 0.0;
+        std::size_t zero = 0;
+        for (float p : pmf) {
+            sum += p;
+            zero += p == 0.0f;
+        }
+        std::vector<std::size_t> counts(kLights, 0); // and, at the end, the picks of no light
+        std::size_t mismatched = 0, none = 0;
+        for (std::size_t i = 0; i < kPicks; ++i) {
+            if (light[i] < 0) {
+                ++none;
+                continue;
+            }
+            ++counts[static_cast<std::size_t>(light[i])];
+            mismatched += pick_pmf[i] != again[i];
+        }
+        // The last cell: no light picked.
+        std::vector<double> expected(pmf.begin(), pmf.end());
+        expected.push_back(std::max(0.0, 1.0 - sum));
+        counts.push_back(none);
+        std::string worst;
+        const double p = chi_square_p_value(counts, expected, kPicks, &worst);
+        if (report) {
+            EXPECT_LE(sum, 1.0 + 1e-5) << "point " << k << ": the pmfs of all lights";
+            EXPECT_GT(sum, 0.5) << "point " << k << ": the pmfs of all lights";
+            EXPECT_EQ(mismatched, 0u) << "point " << k << ": picks whose pmf is not light_tree_pmf's";
+            for (std::size_t l = 0; l < kLights; ++l) {
+                if (pmf[l] == 0.0f) {
+                    EXPECT_EQ(counts[l], 0u) << "point " << k << ": light " << l << " of pmf 0 picked";
+                }
+            }
+            EXPECT_GE(p, alpha) << "point " << k << ": pick counts against the pmf, p = " << p << "; " << worst;
+            std::cout << "point " << k << ": p = " << p << ", " << zero << " lights of pmf 0, no light " << 1.0 - sum
+                      << "\n";
+        }
+        failed += p < alpha;
+    }
+    return failed;
+}
+
+TEST(LightTreeSampling, PicksFollowThePmfAndReportIt)
+{
+    check_picks({}, true);
+}
+
+TEST(LightTreeSampling, ADescentThatDoesNotRescaleItsNumberFails)
+{
+    // The second child's branch keeps u unrescaled: deeper choices are skewed.
+    const int failed = check_picks(
+        {{"light/light_tree.cl", "u = fmin((u - first) / (1.0f - first), ONE_MINUS_EPSILON);", "u = u;"}}, false);
+    EXPECT_GT(failed, 0);
+}
+
+} // namespace
+} // namespace pathcl
