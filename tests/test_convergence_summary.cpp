@@ -30,9 +30,10 @@ TEST(Knobs, ProductVariesTheFirstKnobSlowest)
 TEST(Knobs, EveryKnobSetsItsOption)
 {
     RenderOptions base;
-    std::vector<Setting> s = settings_product(base, {parse_knob("strategy=nee"), parse_knob("stratified-bounces=3"),
-                                                     parse_knob("batch-spp=8"), parse_knob("fast-math=on"),
-                                                     parse_knob("specialization=all"), parse_knob("adaptive=on")});
+    std::vector<Setting> s = settings_product(
+        base, {parse_knob("strategy=nee"), parse_knob("stratified-bounces=3"), parse_knob("batch-spp=8"),
+               parse_knob("fast-math=on"), parse_knob("specialization=all"), parse_knob("adaptive=on"),
+               parse_knob("light-sampler=tree"), parse_knob("integrator=wavefront")});
     ASSERT_EQ(s.size(), 1u);
     const RenderOptions& o = s[0].options;
     EXPECT_EQ(o.strategy, Strategy::Nee);
@@ -41,7 +42,9 @@ TEST(Knobs, EveryKnobSetsItsOption)
     EXPECT_TRUE(o.fast_math);
     EXPECT_EQ(o.specialization, Specialization::All);
     EXPECT_TRUE(o.adaptive);
-    EXPECT_EQ(knob_names().size(), 8u);
+    EXPECT_EQ(o.light_sampler, LightSampler::Tree);
+    EXPECT_EQ(o.integrator, Integrator::Wavefront);
+    EXPECT_EQ(knob_names().size(), 10u);
 }
 
 TEST(Knobs, BadSpecificationsAreOneLineErrors)
@@ -51,6 +54,7 @@ TEST(Knobs, BadSpecificationsAreOneLineErrors)
     EXPECT_TRUE(test::contains(test::error_of([] { parse_knob("sampler=sobol,bogus"); }), "'bogus'"));
     EXPECT_TRUE(test::contains(test::error_of([] { parse_knob("max-bounces=2,x"); }), "'x'"));
     EXPECT_TRUE(test::contains(test::error_of([] { parse_knob("fast-math=yes"); }), "neither off nor on"));
+    EXPECT_TRUE(test::contains(test::error_of([] { parse_knob("light-sampler=bvh"); }), "'bvh'"));
     EXPECT_TRUE(test::contains(test::error_of([] { parse_knob("sampler=sobol,sobol"); }), "twice"));
     EXPECT_TRUE(test::contains(
         test::error_of([] {

@@ -61,6 +61,21 @@ const std::map<std::string, Apply>& appliers()
              o.specialization = v == "all" ? Specialization::All : Specialization::Scene;
          }},
         {"adaptive", [](RenderOptions& o, const std::string& v) { o.adaptive = parse_switch("adaptive", v); }},
+        {"light-sampler",
+         [](RenderOptions& o, const std::string& v) {
+             for (LightSampler s : {LightSampler::Power, LightSampler::Tree, LightSampler::Uniform})
+                 if (v == light_sampler_name(s)) {
+                     o.light_sampler = s;
+                     return;
+                 }
+             throw Error("--vary light-sampler: unknown light sampler '" + v + "' (power, tree, uniform)");
+         }},
+        {"integrator",
+         [](RenderOptions& o, const std::string& v) {
+             if (v != "megakernel" && v != "wavefront")
+                 throw Error("--vary integrator: '" + v + "' is neither megakernel nor wavefront");
+             o.integrator = v == "wavefront" ? Integrator::Wavefront : Integrator::Megakernel;
+         }},
     };
     return table;
 }
@@ -69,8 +84,9 @@ const std::map<std::string, Apply>& appliers()
 
 const std::vector<std::string>& knob_names()
 {
-    static const std::vector<std::string> names = {"sampler",   "strategy",  "max-bounces",    "stratified-bounces",
-                                                   "batch-spp", "fast-math", "specialization", "adaptive"};
+    static const std::vector<std::string> names = {"sampler",       "strategy",  "max-bounces",    "stratified-bounces",
+                                                   "batch-spp",     "fast-math", "specialization", "adaptive",
+                                                   "light-sampler", "integrator"};
     return names;
 }
 
