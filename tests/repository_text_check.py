@@ -11,7 +11,7 @@ that was borrowed or "the development machine"; a figure names its commit, date,
 and command instead (docs/performance.md). Every tracked text file is read.
 
 paths: Markdown links (the file, and the heading an #anchor or a quoted section names),
-paths from the repository root (host/..., kernels/..., scenes/...; globs and {a,b} lists
+no path that leaves the repository ("../shared/..."), paths from the repository root (host/..., kernels/..., scenes/...; globs and {a,b} lists
 expanded), paths relative to a source folder (closure/bsdf.cl in kernels/, common/parallel.h
 in host/) and bare source file names (test_render.cpp) must name files that exist, or files
 that git ignores (what a build or a study writes). Upper-case words are placeholders
@@ -194,7 +194,8 @@ class Tree:
 ROOT_PATH = re.compile(r"(?<![\w./~$-])((?:" + "|".join(re.escape(d) for d in ROOT_FOLDERS) +
                        r")/[\w./*{},<>-]*)")
 RELATIVE_PATH = re.compile(r"(?<![\w./~$-])((?:[a-z_][\w-]*/)+[\w-]+\.(?:cpp|h|cl|py|sh|cmake))\b")
-BARE_NAME = re.compile(r"(?<![\w./~$-])([A-Za-z_][\w-]*\.(?:cpp|h|cl|py|sh|cmake))\b(?![/\w])")
+BARE_NAME = re.compile(r"(?<![\w./~$-])([A-Za-z_][\w-]*\.(?:cpp|h|cl|py|sh|cmake|md))\b(?![/\w])")
+UP_PATH = re.compile(r"(?<![\w.\"'])((?:\.\./)+[\w./-]*\w)")  # a quoted one is an example
 MD_LINK = re.compile(r"!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 SECTION_REF = re.compile(r"((?:[\w./-]+/)?[\w-]+\.md|README)\b(?:,|:)?\s+(?:section\s+)?\"([^\"]+)\"")
 
@@ -242,6 +243,12 @@ def check_paths(root, files):
                     continue
                 if not all(tree.exists(p) or tree.ignored(p) for p in expand_braces(path)):
                     findings.append(f"{where}: {path}: no such file or folder in the repository")
+            for m in UP_PATH.finditer(line):
+                path = os.path.normpath(os.path.join(here, m.group(1)))
+                if path.startswith(".."):
+                    findings.append(f"{where}: {m.group(1)}: points outside the repository")
+                elif not tree.exists(path):
+                    findings.append(f"{where}: {m.group(1)}: no such file or folder in the repository")
             if fence:
                 continue
             for m in RELATIVE_PATH.finditer(line):
@@ -259,6 +266,13 @@ def check_paths(root, files):
                     continue  # wo.h is a dot product in a formula; OUT.cpp a placeholder
                 if name not in tree.basenames and name not in NOT_OURS:
                     findings.append(f"{where}: {name}: no file of that name in the repository")
+    arch = "docs/architecture.md"
+    if arch in tree.files:
+        text = read_text(root, arch)
+        for top in ("host", "kernels"):
+            entries = {f.split("/")[1] + ("/" if f.count("/") > 1 else "") for f in files if f.startswith(top + "/")}
+            findings += [f"{arch}: {top}/{e} is not in the map of the tree" for e in sorted(entries)
+                         if f"{top}/{e}" not in text]
     return findings
 
 
