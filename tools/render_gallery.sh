@@ -1,7 +1,8 @@
 #!/bin/sh
 # Renders the committed scenes for the gallery that the README and docs/scenes.md show:
-# 384x384, filmic tone curve, 256 samples per pixel (1024 where glass and caustics need
-# them), written as JPEG (quality 85) into docs/gallery/, about 30 KB an image.
+# 384x384, filmic tone curve, 256 samples per pixel (1024 where glass, caustics or light
+# from a punctual spot need them), written as JPEG (quality 85) into docs/gallery/, 10 to
+# 30 KB an image.
 #
 #   tools/render_gallery.sh [BUILD_DIR] [OUT_DIR] [SCENE...]
 #
@@ -48,7 +49,8 @@ SCENES=${*:-"cornell-box cornell-box-glass-mirror cornell-box-features cornell-b
   cornell-box-sphere material-spheres textured sky-spheres sky-glass"}
 for scene in $SCENES; do
     case $scene in
-    cornell-box-glass-mirror | cornell-box-features | sky-glass) gallery "$scene" 1024 ;;
+    cornell-box-glass-mirror | cornell-box-features | cornell-box-rect-spot | material-spheres | sky-glass)
+        gallery "$scene" 1024 ;;
     *) gallery "$scene" 256 ;;
     esac
 done
