@@ -113,6 +113,19 @@ void add_program_options(CLI::App* command, RenderOptions& options)
                      "specializing saves)")
         ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case))
         ->default_str("scene");
+    static const std::map<std::string, Integrator> integrators = {{"megakernel", Integrator::Megakernel},
+                                                                  {"wavefront", Integrator::Wavefront}};
+    command
+        ->add_option("--integrator", options.integrator,
+                     "megakernel (one work-item per path) or wavefront (one kernel per stage, shading in lanes; "
+                     "Lambertian scenes lit by emissive triangles so far)")
+        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))
+        ->default_str("megakernel");
+    command
+        ->add_option("--wavefront-lanes", options.wavefront_lanes,
+                     "paths per shading work-item of the wavefront: 8 (the default on CPUs) or 1 (elsewhere; on a CPU, "
+                     "for measuring what lanes gain)")
+        ->check(CLI::IsMember({1u, 8u}));
     command->add_flag("--fast-math", options.fast_math,
                       "build the kernels with -cl-unsafe-math-optimizations (fast math; not -cl-finite-math-only, "
                       "which traversal cannot take; a measured opt-in: README \"What accuracy costs\")");

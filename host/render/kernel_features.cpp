@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/wavefront.h"
 #include "scene/alpha_cutouts.h"
 
 namespace pathcl {
@@ -57,7 +58,8 @@ std::string program_build_options(const KernelFeatures& features, const RenderOp
     // -cl-fast-relaxed-math less -cl-finite-math-only: the traversal's slab test and empty
     // hit records are infinities by design, and with finite math assumed PoCL 3.1 rendered
     // the glass-and-mirror box 50x slower (same image).
-    return features.define() + (options.fast_math ? std::string(" ") + kUnsafeMathOption : std::string());
+    return features.define() + (options.fast_math ? std::string(" ") + kUnsafeMathOption : std::string()) +
+           (options.integrator == Integrator::Wavefront ? std::string(" ") + wavefront_build_option() : std::string());
 }
 
 std::vector<std::string> feature_names(std::uint32_t mask)

@@ -42,6 +42,13 @@ enum class Specialization : std::uint32_t {
     All,   // every scene feature, whatever the scene (for measuring what specializing saves)
 };
 
+// How a pass is run on the device (kernels/integrator/megakernel.cl,
+// kernels/wavefront/wavefront.cl); both render the same image.
+enum class Integrator : std::uint32_t {
+    Megakernel, // one work-item follows one path through every bounce
+    Wavefront,  // one kernel per stage over all the pass's paths, shading in lanes
+};
+
 struct RenderOptions {
     std::uint32_t width = 512, height = 512;
     // Samples per pixel: the render's count, or its cap when a budget below can end it
@@ -61,6 +68,10 @@ struct RenderOptions {
     // model, for cross-checks).
     bool single_scattering = false;
     Specialization specialization = Specialization::Scene;
+    Integrator integrator = Integrator::Megakernel;
+    // The wavefront's paths per shading work-item (1 or 8); 0: by device kind
+    // (host/render/wavefront.h).
+    std::uint32_t wavefront_lanes = 0;
     // Builds with -cl-unsafe-math-optimizations (fast math without the finite-math
     // assumption, which traversal cannot take): a measured opt-in, docs/accuracy.md.
     bool fast_math = false;

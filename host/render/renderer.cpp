@@ -17,6 +17,7 @@
 #include "render/kernel_features.h"
 #include "render/partial_renders.h"
 #include "render/render_metadata.h"
+#include "render/wavefront.h"
 #include "sample/dimensions.h"
 #include "sampling/samplers.h"
 #include "scene/render_space.h"
@@ -66,6 +67,7 @@ struct DeviceRender {
     ClDevice dev;
     ProgramBuild build;
     cl::Kernel camera_kernel, path_kernel, clear_kernel;
+    std::unique_ptr<WavefrontPass> wavefront; // --integrator wavefront: the pass's stages, instead of path_kernel
     DeviceArrays arrays;
     Tile tile{8, 8};
     std::uint32_t clear_items = 64;
@@ -143,10 +145,16 @@ struct Renderer::Impl {
         auto dr = std::make_unique<DeviceRender>();
         dr->dev = open_device(index);
         check_device_memory(dr->dev, compiled.arrays, pixels()); // before the program is built
+        if (options.integrator == Integrator::Wavefront)
+            if (std::string why = wavefront_unsupported(compiled.features.mask); !why.empty())
+                throw ParameterError("integrator", why);
         ProgramSource source;
         source.patches = options.kernel_patches;
-        dr->build =
-            build_program(dr->dev, program_build_options(compiled.features, options), source, CacheStore::Deferred);
+        std::string build_options = program_build_options(compiled.features, options);
+        const std::uint32_t lanes = wavefront_lanes(dr->dev.info, options.wavefront_lanes);
+        if (options.integrator == Integrator::Wavefront)
+            build_options += wavefront_lanes_option(lanes);
+        dr->build = build_program(dr->dev, build_options, source, CacheStore::Deferred);
         setup.kernel_build_seconds += dr->build.seconds;
         setup.kernel_from_cache = setup.kernel_from_cache && dr->build.from_cache;
         try {
@@ -155,6 +163,8 @@ struct Renderer::Impl {
             dr->path_kernel = cl::Kernel(program, "trace_paths");
             dr->clear_kernel = cl::Kernel(program, "clear_film");
             dr->arrays = upload_arrays(dr->dev, compiled.arrays, pixels());
+            if (options.integrator == Integrator::Wavefront)
+                dr->wavefront = std::make_unique<WavefrontPass>(dr->dev, program, pixels(), lanes);
             auto max_items = [&](const cl::Kernel& k) {
                 return k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dr->dev.device);
             };
@@ -264,7 +274,13 @@ struct Renderer::Impl {
             if (dr->y1 <= dr->y0)
                 continue;
             done.emplace_back();
-            launch(*dr, dr->path_kernel, &done.back());
+            if (dr->wavefront) {
+                frame.first_row = dr->y0;
+                dr->wavefront->enqueue(dr->dev.queue, dr->arrays, frame, (dr->y1 - dr->y0) * options.width,
+                                       &done.back());
+            } else {
+                launch(*dr, dr->path_kernel, &done.back());
+            }
             if (finish) { // timed: the callback is set before the flush, which may run the pass
                 finish->push_back(std::make_shared<PassFinish>());
                 finish->back()->start = start;
@@ -397,7 +413,10 @@ struct Renderer::Impl {
                std::to_string(opt.stratified_bounces) + "; batch spp " + std::to_string(plan.batch_spp) + "; spp " +
                std::to_string(plan.max_spp) + "; options " + std::to_string(opt.single_scattering) +
                std::to_string(opt.fast_math) + std::to_string(static_cast<int>(opt.specialization)) +
-               std::to_string(opt.adaptive) + "; sample layout " + std::to_string(DIM_LAYOUT_VERSION);
+               std::to_string(opt.adaptive) + "; sample layout " + std::to_string(DIM_LAYOUT_VERSION) +
+               // The integrators' images agree to rounding, not bit for bit: ranges of one
+               // do not merge with ranges of the other.
+               (opt.integrator == Integrator::Wavefront ? "; integrator wavefront" : "");
     }
 
     // And what a checkpoint must match besides: the range and the devices.
