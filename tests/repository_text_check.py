@@ -42,6 +42,7 @@ ROOT_FOLDERS = ("host", "kernels", "tests", "tools", "docs", "scenes", ".ci")
 # Names of other projects' files (Cycles', pbrt's, CMake's) that comments compare with, and
 # words that look like paths.
 NOT_OURS = {"bsdf.h", "closure/bsdf_sheen.h", "bxdfs.h", "kernel/data_arrays.h", "integrator/megakernel.h",
+            "kernel/integrator/state_template.h",
             "OpenImageIOConfig.cmake", "host/device"}
 PLACEHOLDER = re.compile(r"(?<![A-Za-z])[A-Z]{2,}(?![a-z])")
 
