@@ -1,6 +1,6 @@
 /* Kernel features: what a program is compiled for, so that a scene pays only for the
- * effects it uses (MISSION.md, promise 3). Every feature bit and every guard derived from
- * the bits is defined here and nowhere else.
+ * effects it uses (docs/architecture.md, "Design notes"). Every feature bit and every
+ * guard derived from the bits is defined here and nowhere else.
  *
  * The host computes one mask for a render (host/render/kernel_features.cpp) and passes it
  * as the one define -DPATHCL_FEATURES=<mask>; this file turns the mask into the

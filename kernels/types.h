@@ -3,7 +3,7 @@
  *
  * Rules that keep the two compilers in agreement: members are 4-byte scalars or 16-byte
  * vectors, vectors come first, padding is explicit, and every size is a multiple of 16.
- * host/cl/shared_types_check.cpp static_asserts each size and offset on the host.
+ * host/cl/types_check.cpp static_asserts each size and offset on the host.
  * Byte sizes are part of the design (device memory traffic); they are listed per struct. */
 #ifndef PATHCL_TYPES_H
 #define PATHCL_TYPES_H

@@ -1,6 +1,6 @@
 #!/bin/bash
 # Runs pathcl on every case of the hostile-input corpus (tests/corpus/expected.tsv, written
-# by tests/corpus/make_corpus.py) and checks the contract of issue 14:
+# by tests/corpus/make_corpus.py) and checks pathcl's contract for bad input:
 #   error   exit 2; stderr exactly one line "pathcl: error: ..." that names the file (or
 #           the flag); no output written, no temporary file left, nothing beside the scene
 #           changed, an existing output left byte-identical;

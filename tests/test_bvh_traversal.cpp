@@ -1,4 +1,4 @@
-// The kernels' BVH traversal (kernels/bvh.cl) against brute force over every triangle,
+// The kernels' BVH traversal (kernels/bvh/traversal.cl) against brute force over every triangle,
 // on the device, for 100k random rays per mesh. Both use the same ray/triangle test, so
 // the closest distance must agree exactly; a traversal that culls a box it should enter
 // shows up as a different (farther) hit or a miss.

@@ -78,7 +78,7 @@ TEST(CameraImport, OrthographicWithoutPositiveYmagIsAnError)
 
 TEST(CameraImport, ThinLensFromNodeExtrasInWorldUnits)
 {
-    // Exact: the extras' values, not scaled by the node's scale 2 (CONVENTIONS.md).
+    // Exact: the extras' values, not scaled by the node's scale 2 (docs/gltf.md).
     Scene s = import_gltf(
         one_camera(false, object({{"aperture", tinygltf::Value(0.05)}, {"focusDistance", tinygltf::Value(3.5)}})).model,
         "lens.gltf");

@@ -356,7 +356,7 @@ TEST(LayerAlbedo, AnisotropicLayerIntegrationAgreesWithTheIsotropicOneAndABruteF
 TEST(LayerAlbedo, AnisotropicInterfaceIntegrationAgreesWithTheIsotropicOne)
 {
     // The anisotropic dielectric interface's energy albedo (what a transmitting solid's
-    // anisotropic compensation would need; the README's comparisons with isotropic
+    // anisotropic compensation would need; docs/gltf.md's comparisons with isotropic
     // readings of it used this): at equal roughness along and across, the isotropic
     // integration's at any azimuth, from outside and inside; never above 1, and 1 for a
     // smooth interface. Broken variant seen to fail: the refracted direction's G1 with the

@@ -246,7 +246,7 @@ TEST(Render, MaterialScenesMatchTheirCommittedReferences)
 {
     // The glTF material model end to end (tools/make_scenes.sh): an ideal glass sphere
     // and an ideal mirror block in the Cornell box (caustics, total internal reflection;
-    // checked against Mitsuba 3 separately, see the README), and spheres over metallic x
+    // checked against Mitsuba 3 separately, docs/testing.md), and spheres over metallic x
     // roughness under an environment map, each against its 8192-spp reference. 256 spp:
     // caustics reached only by BSDF sampling make single pixels heavy-tailed.
     for (const char* name : {"cornell-box-glass-mirror", "material-spheres"}) {

@@ -108,7 +108,7 @@ TEST_F(InstancedTextures, NormalMappedMirroredDrawingsRenderAsTheirCopies)
 
 TEST(RenderInstances, TenThousandDrawingsOfAMeshCostItsTrianglesOnce)
 {
-    // The figure: 10,000 instances of a 10,000-triangle mesh (10^8 triangles
+    // The scale of tools/make_instance_field.py: 10,000 instances of a 10,000-triangle mesh (10^8 triangles
     // drawn). The device arrays hold the mesh once and one Instance record (112 bytes)
     // and a top-level share per drawing: under 20 MB, where the copies would need 10^8 x
     // (48 + 64) bytes of triangles alone (11 GB). Its triangles are a 50 x 100 grid of

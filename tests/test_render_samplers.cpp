@@ -110,7 +110,7 @@ TEST_F(ToolRun, SamplesWritesAPlotWithItsSpectrum)
 TEST_F(ToolRun, KernelBenchmarksPrintEveryStage)
 {
     // `bench --kernels` on a tiny image: every stage is timed and printed with a positive
-    // rate (the figures themselves are for the README, not for a test). Broken variant
+    // rate (the figures themselves are for docs/performance.md, not for a test). Broken variant
     // seen to fail: the shadow-ray stage left out.
     ASSERT_EQ(run("bench '" + kSource + "/scenes/cornell-box.gltf' --kernels --runs 1 --width 16 --height 16"), 0);
     std::ifstream in(dir_ / "stdout.txt");

@@ -1,4 +1,5 @@
-// Hard cases from issue 6 that need only diffuse surfaces and area lights. Each test
+// Geometric hard cases (gaps, slivers, far lights, terminators) that need only diffuse
+// surfaces and area lights. Each test
 // names the naive variant it catches.
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-// The samplers of kernels/samplers.cl as estimators, through the real kernel code:
+// The samplers of kernels/sample/sampler.cl as estimators, through the real kernel code:
 // bit-identical values whatever the order of computation, and the convergence order of
 // smooth 2D integrals. Each property test names, beside it, the deliberately broken variant
 // that was seen to fail it (checked once, by hand).

@@ -1,4 +1,4 @@
-// The stratification each of the seven samplers of kernels/samplers.cl promises, through
+// The stratification each of the seven samplers of kernels/sample/sampler.cl promises, through
 // the real kernel code (the kernel sampler_points the visualizer uses): one sample per
 // stratum, row and column, (0,m,2)-nets, and a different point set for every pixel. Each
 // property test names, beside it, the deliberately broken variant that was seen to fail

@@ -1,4 +1,4 @@
-// Rays spawned from surface points (kernels/geometry.cl offset_ray_origin) never re-hit
+// Rays spawned from surface points (kernels/geom/ray_offset.cl offset_ray_origin) never re-hit
 // the surface they leave, on either side, including surfaces lying exactly on a
 // coordinate plane (where the hit point is exact, its error bound is zero and only the
 // intersection test's own conservative t bound prevents a self-hit), and at coordinates

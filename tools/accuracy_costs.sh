@@ -1,12 +1,12 @@
 #!/bin/sh
-# The studies behind the README's "What accuracy costs": `pathcl converge` on the Cornell
+# The studies behind docs/accuracy.md, "On the committed scenes": `pathcl converge` on the Cornell
 # box and the glass-and-mirror box at 128x128, varying one group of knobs at a time, and
 # (when no scenes are named) the build options on sky-glass (glass under an environment).
 # Each study writes OUT/<scene>/<study>/ (convergence.csv, summary.md and two plots).
 # The studies at 8 bounces share one reference (8192 Sobol' spp, rendered by the first
 # study and cached there); the bounce study renders its own at 16 bounces, so that it
-# measures what cutting paths short costs. About 30 minutes on the 2-core dev machine;
-# run it on an otherwise idle machine, the times are what it compares.
+# measures what cutting paths short costs. About 30 minutes on 2 x86-64 cores with PoCL
+# 3.1; run it on an otherwise idle machine, the times are what it compares.
 #   tools/accuracy_costs.sh [build-dir] [out-dir] [scenes...]
 set -eu
 cd "$(dirname "$0")/.."

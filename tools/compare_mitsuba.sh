@@ -1,5 +1,5 @@
 #!/bin/sh
-# The speed comparison against Mitsuba 3 (README "Speed"), in one command: makes the venv
+# The speed comparison against Mitsuba 3 (docs/performance.md), in one command: makes the venv
 # with Mitsuba 3 and Dr.Jit (tools/mitsuba_venv.sh), builds pathcl, writes the
 # million-triangle scene, and runs tools/compare_mitsuba.py on the Cornell box, the
 # glass-and-mirror box and the dense box. Arguments go to the script (e.g. --runs 5,

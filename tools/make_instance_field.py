@@ -2,7 +2,7 @@
 """Writes the instancing memory scene: one smooth sphere of 10,000 triangles drawn 10,000
 times by EXT_mesh_gpu_instancing (10^8 triangles drawn) on a 100 x 100 grid over a grey
 ground, under a sun (a directional light), seen from above one corner.
-The README's figure for a two-level BVH's memory is measured on it:
+docs/gltf.md's figure for a two-level BVH's memory is measured on it:
 
     python3 tools/make_instance_field.py /tmp/field.gltf
     /usr/bin/time -v build/pathcl render /tmp/field.gltf -o /tmp/field.png --spp 16 --background 0.3,0.4,0.5

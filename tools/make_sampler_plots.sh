@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the sample-visualizer PNGs the README shows (docs/samplers/).
+# Regenerates the sample-visualizer PNGs docs/cameras-and-samplers.md shows (docs/samplers/).
 #   tools/make_sampler_plots.sh [build-dir]
 set -eu
 cd "$(dirname "$0")/.."

@@ -20,7 +20,7 @@ SUN_U, SUN_V = 0.30, 0.25  # sun direction in map coordinates (u from -Z towards
 
 
 def sky(u, v):
-    """Radiance of texel centre (u, v): CONVENTIONS.md mapping, v = 0 is straight up."""
+    """Radiance of texel centre (u, v): docs/gltf.md's mapping, v = 0 is straight up."""
     if v > 0.5:  # below the horizon: a dim, warm ground colour
         return (0.12, 0.10, 0.08)
     t = v / 0.5
@@ -50,7 +50,7 @@ def write_hdr(path):
 
 def scene(name, glass):
     """sky-spheres; with glass, the white sphere is solid glass and the block a mirror
-    (sky-glass: the glass-and-environment scene of README "What accuracy costs")."""
+    (sky-glass: the glass-and-environment scene of docs/accuracy.md)."""
     b = cb.Builder()
     mats = [cb.lambertian("ground", (0.6, 0.6, 0.6)), cb.lambertian("red", (0.7, 0.2, 0.15)),
             cb.lambertian("white", (0.8, 0.8, 0.8))]

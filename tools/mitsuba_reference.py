@@ -313,7 +313,7 @@ def material_texture(g, index, kind):
      "opacity": HxWx1 float32 of exactly 0 or 1 or None, "filter": "nearest"|"bilinear",
      "wrap": Mitsuba wrap_mode, "texcoord": set n}; "cut": True when the whole material
     is cut away (MASK with a constant alpha below the cutoff).
-    pathcl's model (README "Textures"): the base colour is baseColorFactor x the texture's
+    pathcl's model (docs/gltf.md, "Textures"): the base colour is baseColorFactor x the texture's
     RGB decoded from sRGB (8-bit: the exact formula, per texel, before filtering); alpha
     = baseColorFactor's alpha x the texel's (linear) alpha; alphaMode MASK: no surface
     where alpha < alphaCutoff (default 0.5), an opaque one elsewhere. The cutoff is applied

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Where pathcl's and Mitsuba 3's time per sample goes, traversal against everything else
-# (README "Speed"), in one command: perf profiles of both renderers on the scenes of
+# (docs/performance.md), in one command: perf profiles of both renderers on the scenes of
 # tools/compare_mitsuba.sh. pathcl is built from a copy of the working tree's tracked
 # files in $OUT/src with its two traversal functions out of line (so that perf names
 # them; a call per ray costs a little, so pathcl's figures are upper bounds), the venv

@@ -2,7 +2,7 @@
 # One frame over a Slurm job array: each array task renders its share of the frame's
 # batches (pathcl render --sample-range) and a last job merges them (pathcl merge) into the
 # image the uninterrupted render gives, bit for bit (when every task ran on one kind of
-# device; README "Interrupts, resumes, splits and merges").
+# device; docs/scaling-out.md).
 #
 #   sbatch --array=0-15 tools/slurm_render.sh render SCENE DIR SPP BATCH_SPP [render options...]
 #   sbatch --dependency=afterok:JOBID tools/slurm_render.sh merge DIR OUT.exr

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time to first pixel with empty caches (README "Speed"): runs `pathcl render SCENE
+"""Time to first pixel with empty caches (docs/performance.md): runs `pathcl render SCENE
 --width 64 --height 64 --spp 1` with a fresh, empty PATHCL_CACHE_DIR and POCL_CACHE_DIR,
 and prints when the image appeared on disk and when the process ended, in seconds from
 its start. --warm renders once first, so that both caches hold the program;

@@ -134,7 +134,7 @@ std::string base_build_options(const DeviceInfo& device, const std::string& opti
     // for a square root by default, and with NVIDIA's default ones the Halton sampler's
     // radical inverses were no longer exact, the environment's arctangent was 3.4 ulps
     // off, and a coated glass's pdf missed its double-precision reference by 0.25 %. It
-    // costs NVIDIA's H200 a quarter to a third of its samples per second (README, On a GPU);
+    // costs NVIDIA's H200 a quarter to a third of its samples per second (docs/gpu.md);
     // PoCL on CPUs divides correctly rounded either way. --fast-math gives it up.
     bool exact = device.correctly_rounded_divide_sqrt && options.find(kUnsafeMathOption) == std::string::npos;
     return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "");

@@ -47,8 +47,8 @@ struct ProgramBuild {
 };
 
 // When a compiled program goes into pathcl's binary cache. Fetching the binary is not
-// free: PoCL compiles every kernel once more to produce it (1.4 s of the Cornell box's
-// 3.4 s cold render on the development machine), so a render defers it until its image
+// free: PoCL compiles every kernel once more to produce it (longer than the build itself:
+// docs/performance.md, "Each stage on its own"), so a render defers it until its image
 // is written, and a full disk fails the render at its outputs, not in the cache.
 enum class CacheStore { AtBuild, Deferred };
 

@@ -6,7 +6,7 @@
 // render's seed, so a render of one batch is the render of one point set of spp samples.
 // Independently scrambled batches give an error estimate every sampler can be trusted
 // with (the spread of the batch means, render/film.h); the price is that a quasi-Monte
-// Carlo sampler stratifies within a batch only (README "What accuracy costs").
+// Carlo sampler stratifies within a batch only (docs/accuracy.md).
 //
 // The last batch may be partial (a budget ended it, or spp is not a multiple of
 // batch_spp): every padded sampler maps sample indices onto its set through a random

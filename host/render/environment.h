@@ -1,7 +1,7 @@
 // Environment maps: the equirectangular texels (radiance x strength) and the 2D
 // piecewise-constant distribution that importance-samples them in proportion to
-// luminance x sin(theta), as ../shared/CONVENTIONS.md defines the mapping. Layout for the
-// device (kernels/environment.cl): texels row-major from the top row; the marginal CDF
+// luminance x sin(theta), as docs/gltf.md defines the mapping. Layout for the
+// device (kernels/light/environment.cl): texels row-major from the top row; the marginal CDF
 // over rows (height + 1 floats); one conditional CDF per row (height x (width + 1)).
 #pragma once
 

@@ -79,13 +79,12 @@ struct RenderOptions {
     std::uint32_t seed = 0;
     Strategy strategy = Strategy::Mis;
     LightSampler light_sampler = LightSampler::Power;
-    // Owen-scrambled Sobol': on the Cornell box at 64 spp a quarter of the independent
-    // sampler's RMSE for about 1.2 times the time per sample (README). spp is rounded as
-    // sampler_spp() says.
+    // Owen-scrambled Sobol': the most efficient sampler on the committed scenes
+    // (docs/accuracy.md, "On the committed scenes"). spp is rounded as sampler_spp() says.
     SamplerType sampler = SamplerType::Sobol;
     // The decisions of the camera and of the first stratified_bounces bounces take the
     // sampler's stratified sets; deeper bounces take independent numbers (cheaper, and
-    // nearly all of stratification's gain is in the first bounce; README "Samplers").
+    // nearly all of stratification's gain is in the first bounce; docs/accuracy.md).
     std::uint32_t stratified_bounces = 1;
     // Rough microfacets without multiple-scattering compensation (pbrt's and Mitsuba's
     // model, for cross-checks).
@@ -96,8 +95,7 @@ struct RenderOptions {
     // (host/render/wavefront.h).
     std::uint32_t wavefront_lanes = 0;
     // Builds with -cl-unsafe-math-optimizations (fast math without the finite-math
-    // assumption, which traversal cannot take): a measured opt-in, README "What accuracy
-    // costs".
+    // assumption, which traversal cannot take): a measured opt-in, docs/accuracy.md.
     bool fast_math = false;
     // Camera-ray log: the rays of the first ray_log_samples sample indices of the pixels
     // on an evenly spaced grid of at most ray_log_grid x ray_log_grid pixels.

@@ -47,7 +47,7 @@ struct RenderStats {
     bool error_is_bound = false;
     // film_seconds is host work while the devices wait (read_films, FilmAccumulator): on
     // one core about 0.15 s a million pixels, over a third of an H200's 0.42 s for 64
-    // samples of those pixels (README, On a GPU); it runs on every core (common/parallel.h).
+    // samples of those pixels (docs/gpu.md); it runs on every core (common/parallel.h).
 };
 
 // What a render reports after every finished pass.

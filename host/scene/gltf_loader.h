@@ -1,4 +1,4 @@
-// glTF 2.0 (.gltf / .glb) to the flat Scene, following ../shared/CONVENTIONS.md: default
+// glTF 2.0 (.gltf / .glb) to the flat Scene, following docs/gltf.md: default
 // scene, node hierarchy composed in double precision, triangles (strips and fans
 // converted), shading normals, metallic-roughness materials with emissive strength, and
 // one perspective or orthographic camera (with an optional thin lens).

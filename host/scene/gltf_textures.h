@@ -55,7 +55,7 @@ private:
 
 // KHR_texture_transform as the rows of the 2x3 matrix (u', v') = M (u, v, 1), the order
 // the extension specifies (translation x rotation x scale), with the rotation sign of its
-// example and of the reference viewers (see the README):
+// example and of the reference viewers (docs/gltf.md, "Textures"):
 //   u' =  sx cos(r) u + sy sin(r) v + ox,   v' = -sx sin(r) u + sy cos(r) v + oy.
 void texture_transform_matrix(double offset_u, double offset_v, double rotation, double scale_u, double scale_v,
                               glm::vec3& row_u, glm::vec3& row_v);

@@ -111,7 +111,7 @@ struct SceneTriangle {
     std::int32_t material = 0;
 };
 
-// A KHR_lights_punctual light (see ../shared/CONVENTIONS.md for units).
+// A KHR_lights_punctual light (see docs/gltf.md for units).
 struct SceneLight {
     enum class Type { Point, Spot, RectSpot, Directional, Sphere };
     Type type = Type::Point;
@@ -148,7 +148,7 @@ struct SceneCamera {
     bool orthographic = false;
     double ymag = 1.0; // orthographic: half the view's height (glTF ymag), world units
     // Thin lens: radius of the lens disk (0: pinhole) and distance of the plane of focus
-    // along forward, world units (CONVENTIONS.md; node extras aperture, focusDistance).
+    // along forward, world units (docs/gltf.md; node extras aperture, focusDistance).
     double aperture = 0.0;
     double focus_distance = 0.0;
     bool from_file = false;

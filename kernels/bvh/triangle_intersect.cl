@@ -114,7 +114,7 @@ PATHCL_HOT_INLINE uint ray_triangle_block(const RayTraversal* r, __global const 
     hit &= (ts > 0.0f) & (ts < t_max * det_abs);
     /* Many leaf tests end here with no lane left (the ray passes beside every triangle,
      * or meets their planes beyond the closest hit so far): the division and the error
-     * bound below are then skipped (Cornell box 1.04-1.05x; README "Speed"). The outputs
+     * bound below are then skipped. The outputs
      * of lanes not hit are never read. */
     if (lane_bits(hit) == 0u) {
         *t_out = *b1_out = *b2_out = *ts_out = *det_abs_out = (float8)(0.0f);

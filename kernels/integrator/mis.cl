@@ -1,5 +1,5 @@
-/* How the strategies weight their two techniques (frame.strategy; README "Command
- * line"): emission found by a BSDF-sampled ray and a light sample, each weighted against
+/* How the strategies weight their two techniques (frame.strategy; docs/usage.md,
+ * "Image and sampling"): emission found by a BSDF-sampled ray and a light sample, each weighted against
  * the other technique's pdf for the same direction.
  *   bsdf:       w_bsdf = 1, no light sampling;
  *   nee:        w_bsdf = 0, w_light = 1 (BSDF rays carry indirect light only);

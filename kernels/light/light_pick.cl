@@ -9,9 +9,8 @@
  * [0, 1) within its slot's steps, uniform again and independent of the pick, so that the
  * point on the light can take it: a 2D set of points spread over the slots leaves each
  * light a stratified share (Mitsuba 3 reuses a sample the same way to pick an emitter
- * and a mesh's triangle). Against a slot drawn from a dimension of its own: relMSE 0.97x
- * on the Cornell box at 256 spp, 0.98x on the dense box at 64 spp, unchanged through
- * glass (README "Samplers"). The samplers' numbers are multiples of 2^-24, so *u alone
+ * and a mesh's triangle), rather than a random subset chosen by a dimension of its own
+ * (docs/cameras-and-samplers.md, "Samplers"). The samplers' numbers are multiples of 2^-24, so *u alone
  * would leave a slot of s steps only s values (16 with a million lights): step_jitter,
  * an independent uniform number, places the result inside its step. */
 static inline int light_pick(__global const LightAliasEntry* distribution, uint count, float* u, float u_alias,

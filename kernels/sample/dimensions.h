@@ -2,8 +2,8 @@
  * one dimension, a 2D decision the pair (d, d + 1), drawn as one 2D point set. A
  * bounce's decisions sit at fixed offsets, so a path's numbers never depend on which
  * branches earlier bounces took. The camera consumes the first four; bounce k's decisions
- * start at DIM_PATH_START + k * DIMS_PER_BOUNCE. (The sample visualizer and the README
- * name dimensions by these numbers.) */
+ * start at DIM_PATH_START + k * DIMS_PER_BOUNCE. (The sample visualizer and
+ * docs/cameras-and-samplers.md name dimensions by these numbers.) */
 #ifndef PATHCL_SAMPLE_DIMENSIONS_H
 #define PATHCL_SAMPLE_DIMENSIONS_H
 
@@ -32,7 +32,7 @@
 
 /* Changes whenever the layout above does: a render's key holds it (host/render/
  * renderer.cpp), so sample ranges rendered with different layouts never merge. 2: the
- * light's slot taken from the point's first number (stop 36); 1: before. */
+ * light's slot taken from the light point's first number; 1: from a dimension of its own. */
 #define DIM_LAYOUT_VERSION 2
 
 #endif

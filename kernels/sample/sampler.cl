@@ -46,8 +46,8 @@
 
 /* How many numbers sampler_draw_bounce draws at once: all eight decisions of a bounce
  * (DIMS_PER_BOUNCE, sample/dimensions.h). Eight 32-bit lanes are one AVX2 register;
- * sixteen (AVX-512) ran 0.87-0.92x as fast on the development machine's Xeon (README
- * "Speed"). */
+ * sixteen (AVX-512) ran slower than eight in `pathcl bench` on an Intel Xeon under PoCL 3.1,
+ * likely for the lower clock the processor runs 512-bit instructions at. */
 #define SAMPLER_LANES 8u
 
 typedef struct {
@@ -101,7 +101,7 @@ static inline SamplerState sampler_start(uint pixel, uint sample, uint seed, uin
  * first bounces) take the sampler's stratified sets, the deeper ones independent numbers.
  * Nearly all of a stratified sampler's gain is in the first bounce's decisions (direct
  * light at the first hit), while every stratified decision costs more than an
- * independent one (README "What accuracy costs": stratified bounces). */
+ * independent one (docs/accuracy.md, "On the committed scenes": stratified bounces). */
 static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, uint dimension)
 {
     SamplerState s =
@@ -118,8 +118,7 @@ static inline SamplerState frame_sampler(const FrameParams* frame, uint pixel, u
  * sample/permute.cl and sample/sobol.cl), laid out as DIM_PAIRS_IN_BOUNCE says: a 2D
  * decision's pair is one 2D set, its first number that of a 1D decision at the same
  * dimension. On a CPU the lanes run as a few vector instructions where one by one the
- * hashes, the permutations and the scrambles ran as scalar code per decision (README
- * "Speed"). */
+ * hashes, the permutations and the scrambles run as scalar code per decision. */
 static inline void sampler_draw_bounce(SamplerState* s, uint start)
 {
     bool all_independent = s->type == SAMPLER_INDEPENDENT || start >= s->stratified_dims;

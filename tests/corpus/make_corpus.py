@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the hostile-input corpus (issue 14) into tests/corpus/files/ and its manifest
+"""Writes the hostile-input corpus into tests/corpus/files/ and its manifest
 tests/corpus/expected.tsv. Standard library only; deterministic (run it again and git
 shows no change). tests/corpus_test.sh runs pathcl on every case of the manifest.
 

@@ -387,7 +387,7 @@ ReferenceBsdf::Lobes ReferenceBsdf::lobes(const glm::dvec3& wo) const
     double dielectric_coat = mean3(inside ? layer : e_o);
     double glass = mean3(layer) + (1.0 - max3(layer)) * mean3(base_color);
     l.interface = (1.0 - metallic) * ((1.0 - transmission) * dielectric_coat + transmission * glass);
-    const double floor = 0.02; // kernels/bsdf.cl LOBE_ESTIMATE_FLOOR
+    const double floor = 0.02; // kernels/closure/lobes.cl LOBE_ESTIMATE_FLOOR
     bool has_interface = (specular > 0.0 && eta != 1.0) || transmission > 0.0;
     if (conductor_rough())
         l.conductor = std::max(l.conductor, floor * metallic);

@@ -1,5 +1,5 @@
 // An independent double-precision host implementation of the material model in
-// kernels/bsdf.cl (glTF metallic-roughness with KHR_materials_specular, _transmission,
+// kernels/closure/bsdf.cl (glTF metallic-roughness with KHR_materials_specular, _transmission,
 // _ior and _volume), written from the formulas in that file's header comment rather than
 // from its code. The BSDF tests compare the kernels' values and pdfs with it and use its
 // pdf for the chi-square tests of the kernels' samplers.
@@ -72,7 +72,7 @@ public:
     glm::dvec3 specular_reflectance(double cos_h, const glm::dvec3& wo) const;
     glm::dvec3 transmittance(double cos_h, const glm::dvec3& wo) const;
 
-    // Multiple-scattering compensation (see kernels/bsdf.cl): the GGX albedo with Fresnel
+    // Multiple-scattering compensation (see kernels/closure/bsdf.cl): the GGX albedo with Fresnel
     // 1 and its average, the rough dielectric interface's energy albedo, the factor that
     // divides the interface's lobes, and the conductor's Kulla-Conty lobe.
     double ess(double cos_theta) const;

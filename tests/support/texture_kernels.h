@@ -24,7 +24,7 @@ const cl::Program& texture_program();
 // The first n float4 results in `b` (device_fixture.h's read_back<pcl_float4>).
 std::vector<pcl_float4> read_back(const cl::Buffer& b, std::size_t n);
 
-// The value kernels/textures.cl gives an 8-bit channel: linear byte * (1 / 255), or the sRGB table.
+// The value kernels/texture/lookup.cl gives an 8-bit channel: linear byte * (1 / 255), or the sRGB table.
 glm::vec4 texel8(const std::uint8_t* c, bool srgb);
 
 } // namespace pathcl::test
