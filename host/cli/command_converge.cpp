@@ -192,7 +192,7 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
     c->add_option("-o,--output", rq->out_dir, "directory for convergence.csv, summary.md and the plots")->required();
     c->add_option("--vary", rq->vary,
                   "KNOB=V1,V2,... (repeatable: the product); knobs: sampler, strategy, max-bounces, "
-                  "stratified-bounces, batch-spp, fast-math, specialization, adaptive")
+                  "stratified-bounces, batch-spp, fast-math, specialization, adaptive, light-sampler, integrator")
         ->required();
     c->add_option("--spp-ladder", rq->ladder, "samples per pixel to render each setting at")
         ->delimiter(',')
