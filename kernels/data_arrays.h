@@ -22,7 +22,7 @@
     X(Light, lights)                       /* sphere lights first */                                                   \
     X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                          \
     X(LightTreeNode, light_tree)           /* --light-sampler tree: the tree's nodes, root first */                    \
-    X(pcl_ulong, light_tree_trail)         /* per light: its leaf's path from the root, a bit per level */             \
+    X(pcl_ulong, light_tree_trail)         /* per light: its binary path from the root, a bit a step */                \
     X(pcl_int, light_tree_infinite)        /* the infinite lights' indices, which the tree leaves out */               \
     X(pcl_float4, env_texels)              /* environment radiance, width x height, top row first */                   \
     X(pcl_float, env_marginal)             /* its CDF over rows (height + 1) */                                        \

@@ -279,17 +279,28 @@ typedef struct {
 } LightAliasEntry;
 
 /* A node of the light tree (--light-sampler tree; kernels/light/light_tree.cl, built by
- * host/render/light_tree.cpp): the bounds of the lights below it, from which the descent
- * weighs its two children at a shading point (Conty Estevez and Kulla 2018). Nodes are in
- * depth-first order: an inner node's first child follows it. 64 bytes. */
+ * host/render/light_tree.cpp): up to eight children, lane k holding child k's bounds, from
+ * which one float8 computation weighs all eight at a shading point (Conty Estevez and
+ * Kulla 2018): the bounding sphere of its lights' box, their power, and the cone of
+ * directions they emit along (normals within theta_o of the axis, emitting up to theta_e
+ * past that). Rounded outward: every light lies within its lanes' bounds. Empty lanes
+ * have phi 0. 448 bytes. */
+#define LIGHT_TREE_WIDTH 8
 typedef struct {
-    pcl_float4 lo;   /* xyz: the lights' box; w: phi, their power */
-    pcl_float4 hi;   /* xyz: the box's far corner; w: cos theta_o, the cone of their normals */
-    pcl_float4 axis; /* xyz: that cone's axis; w: cos theta_e, how far past it they emit */
-    pcl_int child;   /* inner node: its second child; leaf: -1 - the light */
-    pcl_int two_sided;
-    pcl_int pad0, pad1;
+    pcl_float8 centre_x, centre_y, centre_z;
+    pcl_float8 radius2; /* the bounding sphere's radius squared */
+    pcl_float8 phi;     /* power (luminance, W) */
+    pcl_float8 axis_x, axis_y, axis_z;
+    pcl_float8 cos_o, sin_o, cos_e;
+    pcl_int8 child;     /* >= 0: the child node; < 0: -1 - the light (a leaf) */
+    pcl_int8 two_sided; /* -1: emits on both sides of its normals (0: the front only) */
+    pcl_int8 code;      /* the binary path from this node to the lane: LIGHT_TREE_CODE */
 } LightTreeNode;
+/* A lane's code: its binary path's bits (bit k: the second child at step k) in bits 0-7,
+ * their number in bits 8-11. A light's trail (light_tree_trail) is its whole binary path
+ * from the root; at each node the lane whose bits it starts with leads on. */
+#define LIGHT_TREE_CODE_BITS(code) ((code)&0xff)
+#define LIGHT_TREE_CODE_LENGTH(code) ((code) >> 8)
 
 /* Camera projections */
 #define CAMERA_PERSPECTIVE 0  /* pinhole, or a thin lens when lens_radius > 0 */

@@ -2,12 +2,14 @@
 // of every bounded kind and power over four decades, with an infinite light beside them,
 // seen from points in and around them: each light is picked as often as light_tree_pmf
 // says, and no light as often as the pmfs of all lights fall short of 1 (a chi-square test
-// of the pick counts; a descent stops where both children's lights are judged unable to
-// reach the point, though their parent's looser bounds were not), every pick reports the
-// pmf light_tree_pmf computes for its light bit for bit, and a light of pmf 0 is never
-// picked. A descent that does not rescale its number fails the same test.
+// of the pick counts; a descent stops where no child's lights are judged able to reach
+// the point, though their parent's looser bounds were), every pick reports the pmf
+// light_tree_pmf computes for its light bit for bit, and a light of pmf 0 is never picked.
+// A descent that does not rescale its number fails the same test. The importance of a
+// one-sided emitter is zero exactly where it cannot reach.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
@@ -199,10 +201,66 @@ TEST(LightTreeSampling, PicksFollowThePmfAndReportIt)
 
 TEST(LightTreeSampling, ADescentThatDoesNotRescaleItsNumberFails)
 {
-    // The second child's branch keeps u unrescaled: deeper choices are skewed.
+    // The descent keeps u unrescaled: deeper choices are skewed.
     const int failed = check_picks(
-        {{"light/light_tree.cl", "u = fmin((u - first) / (1.0f - first), ONE_MINUS_EPSILON);", "u = u;"}}, false);
+        {{"light/light_tree.cl", "u = fmin(fmax(target - below, 0.0f) / weight[lane], ONE_MINUS_EPSILON);", "u = u;"}},
+        false);
     EXPECT_GT(failed, 0);
+}
+
+TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
+{
+    // A small emitter at the origin facing +z (a tree of one light: the root's lane 0),
+    // seen from points in every direction, with and without a normal facing it.
+    LightBounds emitter;
+    emitter.lo = {-0.05, -0.05, 0.0};
+    emitter.hi = {0.05, 0.05, 0.0};
+    emitter.phi = 1.0;
+    emitter.cone = {{0.0, 0.0, 1.0}, 1.0, 0.0};
+    LightTree tree = build_light_tree({emitter});
+    SceneArrays arrays;
+    arrays.lights.resize(1);
+    arrays.light_tree = tree.nodes;
+    arrays.light_tree_trail = tree.trails;
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<pcl_float4> points, normals;
+    std::vector<double> theta_w, theta_b;
+    for (int t = 0; t < 4000; ++t) {
+        double z = 2.0 * u(rng) - 1.0, phi = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
+        double dist = 0.5 + 10.0 * (t % 10);
+        glm::dvec3 p = dist * glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+        points.push_back({float(p.x), float(p.y), float(p.z), 0.0f});
+        // Half the points have a shading normal facing the emitter, half one facing away.
+        glm::dvec3 nrm = (t % 2 ? -1.0 : 1.0) * glm::normalize(-p);
+        normals.push_back(t % 4 == 3 ? pcl_float4{0, 0, 0, 0}
+                                     : pcl_float4{float(nrm.x), float(nrm.y), float(nrm.z), 0});
+        theta_w.push_back(std::acos(z));
+        theta_b.push_back(std::asin(std::sqrt(0.005) / dist)); // the box's bounding sphere
+    }
+    ClDevice& dev = test::test_device();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    DeviceArrays a = upload_arrays(dev, arrays, 1);
+    cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * sizeof(float));
+    cl::Kernel k(program, "test_light_tree_importance");
+    bind_kernel(k, a, p_buf, n_buf, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
+    std::vector<float> importance = test::read_back<float>(out, points.size());
+    std::size_t front = 0, behind = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double edge = std::numbers::pi / 2 + theta_b[i];
+        if (theta_w[i] < edge - 1e-4) {
+            EXPECT_GT(importance[i], 0.0f) << "in front, point " << i;
+            ++front;
+        } else if (theta_w[i] > edge + 1e-4) {
+            EXPECT_EQ(importance[i], 0.0f) << "behind, point " << i;
+            ++behind;
+        }
+    }
+    EXPECT_GT(front, 1000u);
+    EXPECT_GT(behind, 1000u);
 }
 
 } // namespace

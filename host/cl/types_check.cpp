@@ -31,8 +31,9 @@ static_assert(sizeof(RectSpotLight) == 64 && offsetof(RectSpotLight, tan_half_h)
 static_assert(sizeof(SphereLight) == 32 && offsetof(SphereLight, radius) == 16);
 static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80);
 static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) == 8);
-static_assert(sizeof(LightTreeNode) == 64 && offsetof(LightTreeNode, axis) == 32 &&
-              offsetof(LightTreeNode, child) == 48 && offsetof(LightTreeNode, two_sided) == 52);
+static_assert(sizeof(LightTreeNode) == 448 && offsetof(LightTreeNode, phi) == 128 &&
+              offsetof(LightTreeNode, cos_e) == 320 && offsetof(LightTreeNode, child) == 352 &&
+              offsetof(LightTreeNode, two_sided) == 384 && offsetof(LightTreeNode, code) == 416);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
               offsetof(Camera, focus_distance) == 72);
 static_assert(sizeof(FrameParams) == 64 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40 &&

@@ -44,6 +44,15 @@ int run_bench(BenchRequest rq)
                 setup.kernel_build_seconds, setup.kernel_from_cache ? " (from cache)" : " (compiled)");
     if (setup.texel_bytes > 0)
         std::printf(" | texels %.1f KiB", static_cast<double>(setup.texel_bytes) / 1024.0);
+    if (setup.light_tree_nodes > 0)
+        std::printf(" | light tree of %zu lights: %zu nodes, %u levels, %.1f KiB (%.0f bytes a light), built in "
+                    "%.2f ms (%.2f Mlights/s)",
+                    setup.lights, setup.light_tree_nodes, setup.light_tree_depth,
+                    static_cast<double>(setup.light_tree_bytes) / 1024.0,
+                    static_cast<double>(setup.light_tree_bytes) /
+                        static_cast<double>(std::max<std::size_t>(1, setup.lights)),
+                    setup.light_tree_build_seconds * 1e3,
+                    static_cast<double>(setup.lights) / std::max(1e-9, setup.light_tree_build_seconds) * 1e-6);
     std::printf("\n");
     renderer.render(0); // warm-up: the driver's first launch compiles the kernels' machine code
     std::vector<double> rates, seconds, film_seconds;

@@ -44,7 +44,7 @@ struct LightTree {
                                       // ones for an infinite light
     std::vector<pcl_int> infinite;    // the infinite lights
     double infinite_pick = 0.0;       // the probability of picking one of them
-    std::uint32_t depth = 0;          // the deepest leaf's depth
+    std::uint32_t depth = 0;          // the number of levels of eight-wide nodes
 };
 
 // Builds the tree by the surface area orientation heuristic (the paper's SAOH: binned

@@ -131,6 +131,11 @@ struct Renderer::Impl {
         setup.lights = compiled.arrays.lights.size();
         setup.bvh_nodes = compiled.arrays.nodes.size();
         setup.bvh_build_seconds = compiled.bvh_build_seconds;
+        setup.light_tree_nodes = compiled.arrays.light_tree.size();
+        setup.light_tree_depth = compiled.light_tree_depth;
+        setup.light_tree_build_seconds = compiled.light_tree_build_seconds;
+        setup.light_tree_bytes = compiled.arrays.light_tree.size() * sizeof(LightTreeNode) +
+                                 compiled.arrays.light_tree_trail.size() * sizeof(pcl_ulong);
         setup.texel_bytes = compiled.texel_bytes();
         setup.kernel_from_cache = true;
         for (int index : opt.devices)

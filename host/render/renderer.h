@@ -29,6 +29,11 @@ struct RenderStats {
     std::size_t triangles = 0, lights = 0, bvh_nodes = 0; // triangles stored (each instanced mesh once)
     std::size_t drawn_triangles = 0;                      // instances' included
     double bvh_build_seconds = 0.0;
+    // --light-sampler tree: the tree's eight-wide nodes, levels, build time and device bytes
+    std::size_t light_tree_nodes = 0;
+    std::uint32_t light_tree_depth = 0;
+    double light_tree_build_seconds = 0.0;
+    std::size_t light_tree_bytes = 0;
     double kernel_build_seconds = 0.0; // summed over devices
     bool kernel_from_cache = false;    // every device's program came from the cache
     double render_seconds = 0.0;       // passes only, from first enqueue to finished films

@@ -1,12 +1,12 @@
 /* --light-sampler tree (PATHCL_LIGHT_TREE): next event estimation's light picked by a
- * descent of the light tree (host/render/light_tree.cpp), each step taking a child with
- * probability in proportion to its importance at the shading point (light/light_tree.h),
- * and the probability of any light at a point computed exactly along its leaf's trail, as
+ * descent of the light tree (host/render/light_tree.cpp), each step taking one of a node's
+ * eight children with probability in proportion to its importance at the shading point,
+ * all eight weighed by one float8 computation (Conty Estevez and Kulla 2018, section 4.2).
+ * The probability of any light at a point is computed exactly along its leaf's trail, as
  * MIS needs where a BSDF-sampled ray hits a light. Infinite lights sit beside the tree:
  * picked with probability frame->infinite_pick, uniformly among them. */
 #include "features.h"
 #include "kernel_data.cl"
-#include "light/light_tree.h"
 #include "util/hash.cl"
 #include "util/math.cl"
 
@@ -16,45 +16,85 @@
 #define LIGHT_TREE_INFINITE_TRAIL 0xfffffffffffffffful
 
 /* Every LIGHT_TREE_FRESH_LEVELS levels the descent takes a fresh number: rescaled at each
- * level, the first one has no bits left after about twenty. */
-#define LIGHT_TREE_FRESH_LEVELS 16u
+ * level, the first one has few bits left after about six. */
+#define LIGHT_TREE_FRESH_LEVELS 5u
 
-/* The importance of `node` at ref, where the shading normal is n (light/light_tree.h). */
-static inline float light_tree_importance(__global const LightTreeNode* node, float3 ref, float3 n)
+/* cos(max(0, a - b)) and sin(max(0, a - b)) from the cosines and sines of angles a, b in
+ * [0, pi], per lane. */
+static inline float8 cos_of_clamped_difference8(float8 cos_a, float8 sin_a, float8 cos_b, float8 sin_b)
 {
-    float3 lo = node->lo.xyz, hi = node->hi.xyz;
-    float3 d = ref - 0.5f * (lo + hi);
-    float dist2 = dot(d, d);
-    float3 diagonal = hi - lo;
-    float radius2 = 0.25f * dot(diagonal, diagonal); /* of the box's bounding sphere */
-    float3 w = dist2 > 0.0f ? d / sqrt(dist2) : (float3)(0.0f, 0.0f, 1.0f);
-    float cos_w = dot(node->axis.xyz, w);
-    if (node->two_sided)
-        cos_w = fabs(cos_w);
-    float cos_b = dist2 > radius2 ? sqrt(fmax(0.0f, 1.0f - radius2 / dist2)) : -1.0f;
-    return light_cone_importance(node->lo.w, node->hi.w, node->axis.w, fmax(dist2, radius2), cos_w, cos_b,
-                                 fabs(dot(w, n)));
+    return select(cos_a * cos_b + sin_a * sin_b, (float8)(1.0f), cos_a > cos_b);
 }
 
-/* The probability that the descent takes inner node `node`'s first child at (ref, n); -1
- * where neither child's lights can reach the point. */
-static inline float light_tree_first_child(const KernelData* kd, int node, float3 ref, float3 n)
+static inline float8 sin_of_clamped_difference8(float8 cos_a, float8 sin_a, float8 cos_b, float8 sin_b)
 {
-    float a = light_tree_importance(&kd->light_tree[node + 1], ref, n);
-    float b = light_tree_importance(&kd->light_tree[kd->light_tree[node].child], ref, n);
-    float m = fmax(a, b);
+    return select(sin_a * cos_b - cos_a * sin_b, (float8)(0.0f), cos_a > cos_b);
+}
+
+/* The importance of each of a node's eight children at the point ref with shading normal
+ * n (zero: none): a bound on how much of its power can reach the point,
+ *   phi cos(theta') / d^2, times cos(theta'_i) at a surface,
+ * where d is the distance to its bounding sphere's centre (at least its radius), theta'
+ * the smallest angle between the direction from it to the point and any direction its
+ * lights emit along (their normals' cone widened by the sphere's angular radius theta_b),
+ * and theta'_i the smallest angle between the normal (either side: transmission) and any
+ * direction to the sphere. Zero where none of its lights can emit towards the point, and
+ * in empty lanes. */
+static inline float8 light_tree_importance(__global const LightTreeNode* node, float3 ref, float3 n)
+{
+    float8 dx = (float8)(ref.x) - node->centre_x, dy = (float8)(ref.y) - node->centre_y,
+           dz = (float8)(ref.z) - node->centre_z;
+    float8 dist2 = dx * dx + dy * dy + dz * dz;
+    float8 radius2 = node->radius2;
+    float8 dist = sqrt(dist2);
+    int8 apart = dist2 > 0.0f;
+    float8 wx = select((float8)(0.0f), dx / dist, apart), wy = select((float8)(0.0f), dy / dist, apart),
+           wz = select((float8)(1.0f), dz / dist, apart);
+    float8 cos_w = node->axis_x * wx + node->axis_y * wy + node->axis_z * wz;
+    cos_w = select(cos_w, fabs(cos_w), node->two_sided);
+    float8 sin_w = sqrt(fmax(0.0f, 1.0f - cos_w * cos_w));
+    int8 outside = dist2 > radius2; /* inside the sphere it subtends every direction */
+    float8 sin2_b = radius2 / dist2;
+    float8 cos_b = select((float8)(-1.0f), sqrt(fmax(0.0f, 1.0f - sin2_b)), outside);
+    float8 sin_b = select((float8)(0.0f), sqrt(fmin(sin2_b, 1.0f)), outside);
+    float8 cos_x = cos_of_clamped_difference8(cos_w, sin_w, node->cos_o, node->sin_o);
+    float8 sin_x = sin_of_clamped_difference8(cos_w, sin_w, node->cos_o, node->sin_o);
+    float8 cos_p = cos_of_clamped_difference8(cos_x, sin_x, cos_b, sin_b);
+    float8 importance = node->phi * cos_p / fmax(dist2, radius2);
+    if (any(n != 0.0f)) {
+        float8 cos_i = fabs((float8)(n.x) * wx + (float8)(n.y) * wy + (float8)(n.z) * wz);
+        float8 sin_i = sqrt(fmax(0.0f, 1.0f - cos_i * cos_i));
+        importance *= cos_of_clamped_difference8(cos_i, sin_i, cos_b, sin_b);
+    }
+    int8 reaches = (cos_p >= node->cos_e) & (node->phi > 0.0f);
+    return select((float8)(0.0f), fmax(importance, 0.0f), reaches);
+}
+
+/* The weights of a node's children at (ref, n) in weight[] (the largest 1; a child of
+ * infinite importance, a point light at the point itself, takes all the weight) and their
+ * children in child[]; returns their sum, 0 where none can reach the point. */
+static inline float light_tree_weights(const KernelData* kd, int node, float3 ref, float3 n, float* weight, int* child)
+{
+    __global const LightTreeNode* nd = &kd->light_tree[node];
+    float8 importance = light_tree_importance(nd, ref, n);
+    float4 m4 = fmax(importance.lo, importance.hi);
+    float2 m2 = fmax(m4.lo, m4.hi);
+    float m = fmax(m2.x, m2.y);
     if (!(m > 0.0f))
-        return -1.0f;
-    if (isinf(m)) /* a point light at the point itself */
-        return isinf(a) ? (isinf(b) ? 0.5f : 1.0f) : 0.0f;
-    a /= m;
-    b /= m;
-    return a / (a + b);
+        return 0.0f;
+    float8 w = isinf(m) ? select((float8)(0.0f), (float8)(1.0f), isinf(importance)) : importance / m;
+    vstore8(w, 0, weight);
+    vstore8(nd->child, 0, child);
+    float total = 0.0f;
+    for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k)
+        total += weight[k];
+    return total;
 }
 
 /* Picks a light for the shading point ref with normal n by the number u; its probability
- * in *pmf. -1 (and pmf 0) where no light can reach the point. fresh_key seeds the numbers
- * of the deeper levels. */
+ * in *pmf. -1 (and pmf 0) where the descent reaches a node none of whose children can
+ * reach the point (the parents' bounds are looser than theirs). fresh_key seeds the
+ * numbers of the deeper levels. */
 static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame, float3 ref, float3 n, float u,
                                   uint fresh_key, float* pmf)
 {
@@ -71,30 +111,38 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
     float p = 1.0f - infinite;
     int node = 0;
     for (uint depth = 1;; ++depth) {
-        int second = kd->light_tree[node].child;
-        if (second < 0) {
-            *pmf = p;
-            return -1 - second;
-        }
-        float first = light_tree_first_child(kd, node, ref, n);
-        if (first < 0.0f)
+        float weight[LIGHT_TREE_WIDTH];
+        int child[LIGHT_TREE_WIDTH];
+        float total = light_tree_weights(kd, node, ref, n, weight, child);
+        if (!(total > 0.0f))
             return -1;
-        if (u < first) {
-            u = fmin(u / first, ONE_MINUS_EPSILON);
-            p *= first;
-            node = node + 1;
-        } else {
-            u = fmin((u - first) / (1.0f - first), ONE_MINUS_EPSILON);
-            p *= 1.0f - first;
-            node = second;
+        /* The lane whose share of [0, total) holds u total; lanes of weight 0 hold none. */
+        float target = u * total, below = 0.0f;
+        uint lane = 0u;
+        for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k) {
+            if (weight[k] > 0.0f) {
+                lane = k;
+                if (target < below + weight[k])
+                    break;
+                below += weight[k];
+            }
         }
+        p *= weight[lane] / total;
+        u = fmin(fmax(target - below, 0.0f) / weight[lane], ONE_MINUS_EPSILON);
+        if (child[lane] < 0) {
+            *pmf = p;
+            return -1 - child[lane];
+        }
+        node = child[lane];
         if (depth % LIGHT_TREE_FRESH_LEVELS == 0u)
             u = u32_to_unit_float(hash_combine(fresh_key, depth));
     }
 }
 
 /* The probability that light_tree_pick picks `light` at (ref, n): the same arithmetic
- * along the light's trail, so a hit on a light weighs it exactly as its sample would. */
+ * along the light's path, so a hit on a light weighs it exactly as its sample would. The
+ * path is the light's binary trail: at each node, the lane whose code it starts with (the
+ * real lanes come first; a tree of one light has one lane of code 0). */
 static inline float light_tree_pmf(const KernelData* kd, const FrameParams* frame, float3 ref, float3 n, int light)
 {
     ulong trail = kd->light_tree_trail[light];
@@ -104,20 +152,25 @@ static inline float light_tree_pmf(const KernelData* kd, const FrameParams* fram
     float p = 1.0f - infinite;
     int node = 0;
     for (;;) {
-        int second = kd->light_tree[node].child;
-        if (second < 0)
-            return p;
-        float first = light_tree_first_child(kd, node, ref, n);
-        if (first < 0.0f)
+        float weight[LIGHT_TREE_WIDTH];
+        int child[LIGHT_TREE_WIDTH], code[LIGHT_TREE_WIDTH];
+        float total = light_tree_weights(kd, node, ref, n, weight, child);
+        if (!(total > 0.0f))
             return 0.0f;
-        if (trail & 1ul) {
-            p *= 1.0f - first;
-            node = second;
-        } else {
-            p *= first;
-            node = node + 1;
+        vstore8(kd->light_tree[node].code, 0, code);
+        uint lane = 0u, length = 0u;
+        for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k) {
+            length = (uint)LIGHT_TREE_CODE_LENGTH(code[k]);
+            if ((uint)(trail & ((1ul << length) - 1ul)) == (uint)LIGHT_TREE_CODE_BITS(code[k])) {
+                lane = k;
+                break;
+            }
         }
-        trail >>= 1;
+        p *= weight[lane] / total;
+        if (child[lane] < 0)
+            return p;
+        node = child[lane];
+        trail >>= length;
     }
 }
 

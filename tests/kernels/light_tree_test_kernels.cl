@@ -28,3 +28,12 @@ __kernel void test_light_tree_pmf(PATHCL_KERNEL_PARAMS FrameParams frame, float4
     uint i = get_global_id(0);
     pmf[i] = light_tree_pmf(&kd, &frame, ref.xyz, n.xyz, (int)i);
 }
+
+/* The importance of the root's lane 0 at point i (points[i].xyz) with normal normals[i].xyz. */
+__kernel void test_light_tree_importance(PATHCL_KERNEL_PARAMS __global const float4* points,
+                                         __global const float4* normals, __global float* importance)
+{
+    PATHCL_KERNEL_DATA;
+    uint i = get_global_id(0);
+    importance[i] = light_tree_importance(&kd.light_tree[0], points[i].xyz, normals[i].xyz).s0;
+}
