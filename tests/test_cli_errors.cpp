@@ -360,5 +360,17 @@ TEST_F(Cli, DevicesListsDeviceZero)
     EXPECT_TRUE(found) << "no line starts with \"0: \":\n" << r.out;
 }
 
+// Strings from files and flags are quoted escaped and shortened: a variant name with a
+// line break keeps the error on one line. Broken variant seen to fail: two lines.
+TEST_F(Cli, AQuotedNameWithALineBreakKeepsTheErrorOnOneLine)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --variant \"$(printf 'gold\\nand silver')\"" + kTiny);
+    expect_clean_failure(r, "there is no material variant \"gold\\nand silver\"");
+    std::string long_name(5000, 'x');
+    r = run("render " + quoted(kCornell) + " -o out.exr --variant " + long_name + kTiny);
+    expect_clean_failure(r, "\"" + std::string(80, 'x') + "\"... (5000 bytes)");
+    EXPECT_LT(r.err.size(), 300u) << r.err;
+}
+
 } // namespace
 } // namespace pathcl

@@ -56,7 +56,7 @@ std::vector<SampleRange> meta_ranges(const Image& img, const std::string& path)
     for (const std::string& item : split_commas(text)) {
         auto r = parse_range(item);
         if (!r)
-            throw Error(path + ": pathcl:sample_ranges '" + text + "' is not a list of FIRST:COUNT");
+            throw Error(path + ": pathcl:sample_ranges " + quote(text) + " is not a list of FIRST:COUNT");
         out.push_back(*r);
     }
     return out;
@@ -68,7 +68,7 @@ SampleRange parse_sample_range(const std::string& text)
 {
     auto r = parse_range(text);
     if (!r)
-        throw Error("--sample-range: '" + text + "' is not FIRST:COUNT (sample indices, COUNT at least 1)");
+        throw Error("--sample-range: " + quote(text) + " is not FIRST:COUNT (sample indices, COUNT at least 1)");
     return *r;
 }
 
@@ -122,8 +122,8 @@ Image merge_partial_renders(const std::vector<std::string>& paths)
             sampler = s->second;
             film.emplace(static_cast<std::size_t>(width) * height, batch_spp);
         } else if (its_key != key || img.width != width || img.height != height) {
-            throw Error(path + ": is a range of another render than " + first_path + " (its key \"" + its_key +
-                        "\", not \"" + key + "\")");
+            throw Error(path + ": is a range of another render than " + first_path + " (its key " + quote(its_key) +
+                        ", not " + quote(key) + ")");
         }
         for (const SampleRange& r : meta_ranges(img, path)) {
             if (std::uint64_t(r.first) + r.count > spp_total)

@@ -144,7 +144,8 @@ void check_image_uri(const std::string& uri, const std::string& what)
         throw Error(what + ": the URI scheme '" + scheme + ":' is not read (only relative paths and data: URIs)");
     }
     if (!uri.empty() && (uri[0] == '/' || uri[0] == '\\' || std::filesystem::path(uri).is_absolute()))
-        throw Error(what + ": the image path '" + uri + "' is absolute (image URIs are relative to the glTF file)");
+        throw Error(what + ": the image path " + quote(uri) +
+                    " is absolute (image URIs are relative to the glTF file)");
 }
 
 bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,

@@ -354,7 +354,7 @@ struct Importer {
             stack.pop_back();
             const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(item.node)];
             glm::dmat4 world = item.parent * local_transform(node);
-            std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " '" + node.name + "'");
+            std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " " + quote(node.name));
             if (node.mesh >= 0) {
                 if (node.mesh >= static_cast<int>(model.meshes.size()))
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");

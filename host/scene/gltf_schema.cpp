@@ -75,7 +75,7 @@ private:
             fail("asset.version", "is " + version->dump() + ", not a string \"2.x\": only glTF 2.0 files are read");
         const std::string& v = version->get_ref<const std::string&>();
         if (v.rfind("2.", 0) != 0)
-            fail("asset.version", "is \"" + v + "\": only glTF 2.0 files are read");
+            fail("asset.version", "is " + quote(v) + ": only glTF 2.0 files are read");
     }
 
     [[noreturn]] void fail(const std::string& at, const std::string& problem) const

@@ -25,7 +25,7 @@ double number(const tinygltf::Value& obj, const char* key, double fallback, cons
         return fallback;
     const tinygltf::Value& v = obj.Get(key);
     if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
-        throw Error(where + ": \"" + key + "\" must be a finite number");
+        throw Error(where + ": " + quote(key) + " must be a finite number");
     return v.GetNumberAsDouble();
 }
 
@@ -42,7 +42,7 @@ void pair(const tinygltf::Value& obj, const char* key, double fallback, double& 
         b = v.Get(1).GetNumberAsDouble();
     }
     if (!ok || !std::isfinite(a) || !std::isfinite(b))
-        throw Error(where + ": \"" + key + "\" must be an array of two finite numbers");
+        throw Error(where + ": " + quote(key) + " must be an array of two finite numbers");
 }
 
 TextureWrap wrap_mode(int mode, const std::string& where)
@@ -144,7 +144,7 @@ int TextureImporter::image(int gltf_image, const std::string& where)
     const tinygltf::Image& im = model_.images[static_cast<std::size_t>(gltf_image)];
     std::string what = "image " + std::to_string(gltf_image);
     if (!im.uri.empty())
-        what += " '" + im.uri + "'";
+        what += " " + quote(im.uri);
     else if (!im.name.empty())
         what += " (" + im.name + ")";
     SceneImage decoded;
@@ -168,7 +168,7 @@ int TextureImporter::image(int gltf_image, const std::string& where)
                     if (r.rfind(im.uri + ":", 0) == 0)
                         throw Error(what + r.substr(im.uri.size()));
                 std::string file = (std::filesystem::path(base_dir_.empty() ? "." : base_dir_) / im.uri).string();
-                throw Error(what + (im.uri.empty() ? ": has no image data" : ": cannot read the file '" + file + "'"));
+                throw Error(what + (im.uri.empty() ? ": has no image data" : ": cannot read the file " + quote(file)));
             }
             // bits 0: the encoded bytes keep_encoded_image kept; else pixels a program set.
             decoded = im.bits == 0 ? decode_image(im.image.data(), im.image.size(), what) : image_from_pixels(im, what);
