@@ -171,7 +171,11 @@ struct Importer {
         scene.environment = import_environment(gltf_scene.extras, base_dir, source);
         bool have_camera = import_nodes(gltf_scene.nodes);
         import_drawings();
-        move_to_render_space(geometry, have_camera, scene);
+        try {
+            move_to_render_space(geometry, have_camera, scene);
+        } catch (const Error& e) {
+            throw Error(source + ": " + e.what());
+        }
         scene.images = textures.take_images();
         if (scene.materials.empty())
             scene.materials.push_back(SceneMaterial{});
