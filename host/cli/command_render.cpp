@@ -10,6 +10,7 @@
 #include "cli/options.h"
 #include "cli/progress_line.h"
 #include "common/error.h"
+#include "common/file_identity.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
 #include "render/checkpoint.h"
@@ -135,6 +136,33 @@ struct RenderRequest {
     bool copy_instances = false; // --copy-instances
 };
 
+// Every file the render reads: the scene's (its buffers and images), the environment map
+// and the checkpoint it resumes.
+std::vector<NamedFile> render_inputs(const RenderRequest& rq, const Scene& scene)
+{
+    std::vector<NamedFile> inputs;
+    for (const std::string& file : scene.input_files)
+        inputs.push_back({file, "scene file"});
+    if (scene.environment.present && !scene.environment.path.empty())
+        inputs.push_back({scene.environment.path, "environment map"});
+    if (!rq.resume.empty())
+        inputs.push_back({rq.resume, "--resume"});
+    return inputs;
+}
+
+// Every file it writes.
+std::vector<NamedFile> render_outputs(const RenderRequest& rq)
+{
+    std::vector<NamedFile> outputs;
+    for (const std::string& output : rq.outputs)
+        outputs.push_back({output, "-o"});
+    if (!rq.checkpoint.empty())
+        outputs.push_back({rq.checkpoint, "--checkpoint"});
+    if (!rq.ray_log.empty())
+        outputs.push_back({rq.ray_log, "--ray-log"});
+    return outputs;
+}
+
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
 std::string error_summary(const RenderStats& s)
 {
@@ -186,22 +214,14 @@ int run_render(RenderRequest rq)
         warn(rq.scene_path + ": has no light (no emissive material, punctual light or environment) and no unlit "
                              "material: the image is black (--background R,G,B or --env FILE adds light)");
     apply_camera_overrides(scene, rq.camera.overrides());
-    std::vector<std::string> inputs = scene.input_files;
-    if (scene.environment.present && !scene.environment.path.empty())
-        inputs.push_back(scene.environment.path);
-    for (const std::string& output : rq.outputs)
-        check_not_an_input(output, inputs);
-    if (!rq.ray_log.empty())
-        check_not_an_input(rq.ray_log, inputs);
     if (!rq.checkpoint.empty()) {
         check_output_location(rq.checkpoint);
-        check_not_an_input(rq.checkpoint, inputs);
-        for (const std::string& output : rq.outputs)
-            if (output == rq.checkpoint)
-                throw Error(rq.checkpoint + ": is both an output image and the checkpoint");
         if (!(rq.checkpoint_every > 0.0) || !std::isfinite(rq.checkpoint_every))
             throw Error("--checkpoint-every must be a positive number of seconds");
     }
+    check_distinct_files(render_inputs(rq, scene), render_outputs(rq), [](const NamedFile& out, const NamedFile& in) {
+        return out.role == "--checkpoint" && in.role == "--resume"; // a resumed render keeps its checkpoint
+    });
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
     if (!rq.sample_range.empty()) {
