@@ -251,7 +251,7 @@ int run_render(RenderRequest rq)
     if (!rq.resume.empty()) {
         if (!rq.ray_log.empty())
             throw Error("--ray-log cannot be combined with --resume (the logged rays are those of the first passes)");
-        resume = read_checkpoint(rq.resume);
+        resume = read_checkpoint(rq.resume, static_cast<std::size_t>(opt.width) * opt.height);
     }
     Renderer renderer(scene, opt);
     catch_interrupts();
@@ -281,7 +281,13 @@ int run_render(RenderRequest rq)
                 last_checkpoint = std::chrono::steady_clock::now();
             };
         }
-        r = renderer.render(run);
+        try {
+            r = renderer.render(run);
+        } catch (const ParameterError& e) {
+            if (e.parameter() != "resume")
+                throw;
+            throw Error(rq.resume + ": " + e.describe(flag_for)); // names the file as well as the flag
+        }
     }
     // Every output complete before any replaces what the user has.
     StagedFiles staged;

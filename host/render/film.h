@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "image/image.h"
@@ -96,6 +97,15 @@ public:
     // right for independent samples, an upper bound for stratified and quasi-Monte Carlo
     // ones (by as much as their gain over independent sampling). Needs one batch only.
     double per_sample_relmse_estimate() const;
+
+    // What is wrong with `state` as the film of `pixels` pixels after exactly `batches`
+    // whole batches of at most `max_samples` samples per pixel in all, or "" when nothing
+    // is: every array of that size, every count within those bounds (bad samples
+    // included), every sum a number (not poisoned; squares not negative), a pixel
+    // without samples without sums. A state read from a file (a checkpoint, a partial
+    // render) is checked so before it makes an image.
+    static std::string state_problem(const State& state, std::size_t pixels, std::uint32_t batches,
+                                     std::uint64_t max_samples);
 
 private:
     struct Moments {

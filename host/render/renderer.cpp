@@ -485,10 +485,8 @@ struct Renderer::Impl {
         if (run.resume) {
             const RenderCheckpoint& cp = *run.resume;
             if (cp.key != key)
-                throw ParameterError("resume", "the checkpoint is of another render (it has \"" + cp.key +
-                                                   "\", this render is \"" + key + "\")");
-            if (cp.device_films.size() != 1 || (opt.adaptive && cp.active.size() != pixels()))
-                throw ParameterError("resume", "the checkpoint does not match this render's image");
+                throw ParameterError("resume", "the checkpoint is of another render: " + key_difference(cp.key, key));
+            check_checkpoint(cp, plan, pixels(), opt.adaptive);
             acc.restore(cp.film);
             first_batch = cp.batch;
             first_pass = cp.pass;
