@@ -211,6 +211,18 @@ TEST(GltfInstancing, InstancesThatCannotFitInMemoryAreRefusedBeforeTheyAreRead)
         << e;
 }
 
+// 10^7 coincident instances from a few hundred bytes (a TRANSLATION accessor without a
+// bufferView: zeros) fit this machine's memory at 600 bytes each, but every ray that
+// reaches them would visit every one: refused by count, saying what it would need.
+// Broken variant seen to fail: admitted, then past 60 s at 4.8 GB and growing.
+TEST(GltfInstancing, MoreInstancesThanAnySceneMayHaveAreRefusedBeforeTheyAreRead)
+{
+    std::string e = error_of([&] { import(zeros_instanced(1, 10000000), "swarm.gltf"); });
+    EXPECT_TRUE(contains(e, "swarm.gltf: node 0: the scene would need 0 triangles and 10000000 instances, more than "
+                            "the 4194304 instances a scene may have"))
+        << e;
+}
+
 // A mesh drawn by two nodes, one translated by 2e38: finite, and so accepted by the
 // transform checks, but its instance's box reaches past what float arithmetic on render
 // space can hold (the BVH builder's box areas overflow and its bin indices were NaN). A

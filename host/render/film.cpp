@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 #include "common/parallel.h"
 
 namespace pathcl {
@@ -20,14 +21,12 @@ double host_film_bytes(std::size_t pixels, std::size_t devices)
 
 void check_host_memory(double needed, double available)
 {
-    if (available <= 0.0)
-        available = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
-    if (needed > available) {
-        char text[160];
-        std::snprintf(text, sizeof text, "the film needs %.2f GiB of host memory, more than this machine's %.2f GiB",
-                      needed / 1073741824.0, available / 1073741824.0);
-        throw Error(text);
+    if (available <= 0.0) {
+        check_memory_for(needed, "the film");
+        return;
     }
+    if (needed > available)
+        throw Error("the film needs " + gib(needed) + " of host memory, more than this machine's " + gib(available));
 }
 
 FilmSum::FilmSum(std::size_t pixels) : sum_(new double[pixels * 4]), sum_sq_(new double[pixels * 4])

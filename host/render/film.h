@@ -25,8 +25,9 @@ namespace pathcl {
 // back (68).
 double host_film_bytes(std::size_t pixels, std::size_t devices);
 // Throws pathcl::Error naming both figures when `needed` exceeds `available` bytes
-// (available 0: this machine's physical memory): a refusal before allocating instead of
-// std::bad_alloc or the out-of-memory killer halfway through a render.
+// (available 0: what the process may still take, common/memory_limits.h): a refusal
+// before allocating instead of std::bad_alloc or the out-of-memory killer halfway
+// through a render.
 void check_host_memory(double needed, double available = 0.0);
 
 // One batch: every device's film added.

@@ -131,9 +131,9 @@ struct Renderer::Impl {
         setup.bvh_build_seconds = compiled.bvh_build_seconds;
         setup.texel_bytes = compiled.texel_bytes();
         setup.kernel_from_cache = true;
+        check_host_memory(host_film_bytes(pixels(), opt.devices.size())); // before the devices' programs are built
         for (int index : opt.devices)
             devices.push_back(open(index));
-        check_host_memory(host_film_bytes(pixels(), devices.size()));
 
         frame = frame_params(compiled, opt, default_plan.batch_spp);
     }
