@@ -392,5 +392,32 @@ TEST_F(Cli, AFilmBeyondTheProcesssMemoryLimitIsRefusedNamingIt)
 #endif
 }
 
+// A study's ladder and targets are checked as given, and a study too large to run is
+// refused with what it would take, before the reference is rendered. Broken variants
+// seen to fail: "4,2,1" and "1,1" were sorted and deduplicated, "1,,2" read as 1,2,
+// "nan" passed as a target, and 2000 x 2000 values planned 4,000,000 settings and
+// started.
+TEST_F(Cli, ConvergeLaddersTargetsAndPlansAreChecked)
+{
+    const std::string converge = "converge " + quoted(kCornell) + " -o study --width 4 --height 4 ";
+    for (const char* ladder : {"4,2,1", "1,1", "1,,2", "0,1"}) {
+        RunResult r = run(converge + "--vary strategy=mis --spp-ladder " + ladder);
+        expect_clean_failure(r, "--spp-ladder");
+    }
+    RunResult r = run(converge + "--vary strategy=mis --spp-ladder 1,2 --targets 0.01,nan");
+    expect_clean_failure(r, "--targets: \"nan\"");
+    std::string many_a = "--vary max-bounces=0", many_b = " --vary stratified-bounces=0";
+    for (int i = 1; i < 2000; ++i) {
+        many_a += "," + std::to_string(i);
+        many_b += "," + std::to_string(i);
+    }
+    r = run(converge + many_a + many_b);
+    expect_clean_failure(r, "2000 max-bounces x 2000 stratified-bounces make 4000000 settings");
+    r = run(converge + "--vary max-bounces=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16 --spp-ladder 1,2,3,4,5,6,7,8,9,10 "
+                       "--seeds 1000");
+    expect_clean_failure(r, "make 160000 renders");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "the study directory was created";
+}
+
 } // namespace
 } // namespace pathcl

@@ -116,12 +116,28 @@ std::string Setting::value(const std::string& knob) const
     return "";
 }
 
+std::uint64_t settings_count(const std::vector<Knob>& knobs)
+{
+    std::uint64_t n = 1;
+    for (const Knob& k : knobs)
+        n = k.values.empty() || n <= UINT64_MAX / k.values.size() ? n * k.values.size() : UINT64_MAX;
+    return n;
+}
+
 std::vector<Setting> settings_product(const RenderOptions& base, const std::vector<Knob>& knobs)
 {
     for (std::size_t i = 0; i < knobs.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (knobs[i].name == knobs[j].name)
                 throw Error("--vary " + knobs[i].name + " is given twice");
+    if (const std::uint64_t n = settings_count(knobs); n > kMaxSettings) {
+        std::string product;
+        for (const Knob& k : knobs)
+            product += (product.empty() ? "" : " x ") + std::to_string(k.values.size()) + " " + k.name;
+        throw Error("--vary: " + product + " make " + std::to_string(n) + " settings, each its own kernel build and " +
+                    "renders: more than the " + std::to_string(kMaxSettings) +
+                    " a study may have; vary fewer values (or run several studies)");
+    }
     std::vector<Setting> out(1);
     out[0].options = base;
     for (const Knob& k : knobs) {
