@@ -419,5 +419,27 @@ TEST_F(Cli, ConvergeLaddersTargetsAndPlansAreChecked)
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "the study directory was created";
 }
 
+// A budget given as NaN is neither a budget nor none: refused as itself, not as a
+// --max-spp that "caps no budgeted render". Broken variant seen to fail: the errors named
+// --max-spp.
+TEST_F(Cli, NanBudgetsAreRefusedAsThemselves)
+{
+    RunResult r = run("render " + quoted(kCornell) + " -o out.exr --time nan --max-spp 4 --width 4 --height 4");
+    expect_clean_failure(r, "--time: must be a finite number");
+    r = run("render " + quoted(kCornell) + " -o out.exr --target-error nan --max-spp 4 --width 4 --height 4");
+    expect_clean_failure(r, "--target-error: must be a finite");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
+// Each of --background and --env-strength finite, their product not: refused, where it
+// rendered NaN and Inf samples and exited 0 (seen to fail before the product was checked).
+TEST_F(Cli, BackgroundTimesStrengthBeyondFloatIsRefused)
+{
+    RunResult r =
+        run("render " + quoted(kCornell) + " -o out.exr --background 1e38,1e38,1e38 --env-strength 1e10" + kTiny);
+    expect_clean_failure(r, "--background: the environment's radiance (colour 1e+38 x strength 1e+10)");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+}
+
 } // namespace
 } // namespace pathcl

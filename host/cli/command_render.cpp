@@ -1,5 +1,6 @@
 // `pathcl render`: loads a scene, applies the environment and camera flags, renders, and
 // writes every requested image (and the camera-ray log) or none of them.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -66,6 +67,18 @@ void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
             throw Error("--env-strength: must be finite and non-negative");
         env.strength = f.strength;
     }
+    // Each factor is finite; their product must be too, for every texel of an image.
+    const bool flags_scale = !f.background.empty() || f.strength_option->count();
+    const float brightest = env.path.empty()
+                                ? std::max({env.constant.x, env.constant.y, env.constant.z})
+                                : (env.rgb.empty() ? 0.0f : *std::max_element(env.rgb.begin(), env.rgb.end()));
+    if (flags_scale && !std::isfinite(brightest * env.strength)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the environment's radiance (%s %g x strength %g) is not finite as a float",
+                      env.path.empty() ? "colour" : "brightest texel", static_cast<double>(brightest),
+                      static_cast<double>(env.strength));
+        throw Error((f.background.empty() ? "--env-strength: " : "--background: ") + std::string(text));
+    }
     if (!std::isfinite(f.rotation_degrees))
         throw Error("--env-rotation: must be a finite number of degrees");
     env.rotation_degrees = f.rotation_degrees;
@@ -106,6 +119,11 @@ struct BudgetFlags {
     // (the cap).
     void apply(RenderOptions& opt) const
     {
+        // Before anything reads them as a budget: NaN is neither one nor none.
+        if (!std::isfinite(opt.time_budget) || opt.time_budget < 0.0)
+            throw Error("--time: must be a finite number of seconds above 0");
+        if (!std::isfinite(opt.target_error) || opt.target_error < 0.0)
+            throw Error("--target-error: must be a finite relative MSE above 0");
         const bool budget = opt.time_budget > 0.0 || opt.target_error > 0.0;
         if (budget && spp_option->count())
             throw Error("--spp fixes the sample count; with --time or --target-error cap it with --max-spp");
