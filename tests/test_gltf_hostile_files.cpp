@@ -359,5 +359,36 @@ TEST(GltfHostileFiles, AnImageWhoseDecodingExceedsTheProcesssLimitIsRefused)
 #endif
 }
 
+// Indices inside extensions, read by tinygltf into an int: 2^32 wrapped to 0 and named
+// the first variant (or accessor). Each is checked in the JSON as every other index is.
+// Broken variant seen to fail: the variant index 2^32 selected variant 0 and the file
+// loaded.
+TEST(GltfHostileFiles, ExtensionIndicesBeyondIntAreRefused)
+{
+    Dir d;
+    const std::string variants = R"(, "extensionsUsed": ["KHR_materials_variants"], "materials": [{}, {}],
+ "extensions": {"KHR_materials_variants": {"variants": [{"name": "a"}, {"name": "b"}]}})";
+    std::string text = gltf_text(uri("tri.bin"), R"([{"mesh": 0}])", "[0]", variants);
+    const std::string prim = R"({"attributes": {"POSITION": 0}})";
+    text.replace(text.find(prim), prim.size(),
+                 R"({"attributes": {"POSITION": 0}, "material": 0, "extensions": {"KHR_materials_variants":
+                     {"mappings": [{"material": 1, "variants": [4294967296]}]}}})");
+    write_file(d.scene() / "tri.bin", triangle_bytes());
+    write_file(d.scene() / "variant.gltf", text);
+    std::string msg = error_of([&] { load_gltf((d.scene() / "variant.gltf").string()); });
+    EXPECT_TRUE(contains(msg, "variant.gltf: meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0]."
+                              "variants[0] is 4294967296, which names none of the 2 KHR_materials_variants variants"))
+        << msg;
+
+    std::string instanced = gltf_text(uri("tri.bin"),
+                                      R"([{"mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes":
+                                          {"TRANSLATION": 4294967296}}}}])",
+                                      "[0]", R"(, "extensionsUsed": ["EXT_mesh_gpu_instancing"])");
+    write_file(d.scene() / "instances.gltf", instanced);
+    msg = error_of([&] { load_gltf((d.scene() / "instances.gltf").string()); });
+    EXPECT_TRUE(contains(msg, "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION is 4294967296"))
+        << msg;
+}
+
 } // namespace
 } // namespace pathcl
