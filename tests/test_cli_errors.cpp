@@ -441,5 +441,15 @@ TEST_F(Cli, BackgroundTimesStrengthBeyondFloatIsRefused)
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
 }
 
+// compare's images of two sizes: the error names both files. Broken variant seen to
+// fail: "images differ in size" named neither.
+TEST_F(Cli, CompareOfTwoSizesNamesBothFiles)
+{
+    ASSERT_EQ(run("render " + quoted(kCornell) + " -o a.exr" + kTiny).status, 0);
+    ASSERT_EQ(run("render " + quoted(kCornell) + " -o b.exr --width 8 --height 4 --spp 1").status, 0);
+    RunResult r = run("compare a.exr b.exr");
+    expect_clean_failure(r, "b.exr: is 8x4, a.exr 4x4");
+}
+
 } // namespace
 } // namespace pathcl
