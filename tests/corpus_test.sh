@@ -1,6 +1,7 @@
 #!/bin/bash
 # Runs pathcl on every case of the hostile-input corpus (tests/corpus/expected.tsv, written
-# by tests/corpus/make_corpus.py) and checks pathcl's contract for bad input:
+# by tests/corpus/make_corpus.py; `render` on a scene, or a whole command line such as a
+# merge or a converge) and checks pathcl's contract for bad input:
 #   error   exit 2; stderr exactly one line "pathcl: error: ..." that names the file (or
 #           the flag); no output written, no temporary file left, nothing beside the scene
 #           changed, an existing output left byte-identical;
@@ -138,6 +139,7 @@ while IFS=$'\t' read -r name file args expect setup names what; do
     CAP=$ROOT/capture-$n
     mkdir -p "$CWD" "$CAP"
     case $file in
+    -) scene= ;; # args is the whole command line
     /*) scene=$file ;;
     *) scene=$FILES/$file ;;
     esac
@@ -165,6 +167,28 @@ while IFS=$'\t' read -r name file args expect setup names what; do
             spec=${action#chain:}
             [ -f "$FILES/${spec#*:}" ] || make_chain "${spec%%:*}" "${spec#*:}"
             ;;
+        sparse:*)
+            spec=${action#sparse:}
+            mkdir -p "$(dirname "$FILES/${spec%%:*}")"
+            truncate -s "${spec#*:}" "$FILES/${spec%%:*}"
+            ;;
+        partial:*)
+            IFS=: read -r rel first count <<<"${action#partial:}"
+            mkdir -p "$(dirname "$FILES/$rel")"
+            "$BIN" render "$FILES/valid.gltf" -o "$FILES/$rel" --width 4 --height 4 --spp 32 --batch-spp 16 \
+                --sample-range "$first:$count" --quiet >/dev/null 2>&1 ||
+                echo "corpus: $name: the partial render $rel failed" >&2
+            ;;
+        replace:*)
+            IFS='|' read -r rel old new <<<"${action#replace:}"
+            python3 - "$FILES/$rel" "$old" "$new" <<'PY' || echo "corpus: $name: cannot edit $rel" >&2
+import codecs, sys
+path, old, new = sys.argv[1], *(codecs.decode(a, "unicode_escape").encode("latin-1") for a in sys.argv[2:])
+data = open(path, "rb").read()
+assert len(old) == len(new) and data.count(old) == 1, (old, new, data.count(old))
+open(path, "wb").write(data.replace(old, new))
+PY
+            ;;
         *) echo "corpus: $name: unknown set-up action '$action'" >&2 ;;
         esac
     done
@@ -185,20 +209,23 @@ while IFS=$'\t' read -r name file args expect setup names what; do
         --spp) have_spp=1 ;;
         esac
     done
-    if [ ${#outputs[@]} = 0 ]; then
-        outputs=("$CWD/out.png")
-        argv+=(-o "$CWD/out.png")
+    if [ -n "$scene" ]; then
+        if [ ${#outputs[@]} = 0 ]; then
+            outputs=("$CWD/out.png")
+            argv+=(-o "$CWD/out.png")
+        fi
+        [ $have_width = 1 ] || argv+=(--width 16)
+        [ $have_height = 1 ] || argv+=(--height 16)
+        [ $have_spp = 1 ] || argv+=(--spp 1)
+        argv=(render "$scene" "${argv[@]}")
     fi
-    [ $have_width = 1 ] || argv+=(--width 16)
-    [ $have_height = 1 ] || argv+=(--height 16)
-    [ $have_spp = 1 ] || argv+=(--spp 1)
 
     limit=$TIMEOUT
     [ "$expect" != error ] && limit=$RENDER_TIMEOUT
     before_cwd=$(snapshot "$CWD")
     before_files=$(snapshot "$FILES")
     start=$(date +%s.%N)
-    (cd "$CWD" && exec timeout -k 5 "$limit" "${LIMIT[@]}" "$BIN" render "$scene" "${argv[@]}" \
+    (cd "$CWD" && exec timeout -k 5 "$limit" "${LIMIT[@]}" "$BIN" "${argv[@]}" \
         >"$CAP/stdout" 2>"$CAP/stderr" </dev/null)
     rc=$?
     elapsed=$(seconds_since "$start")
@@ -248,7 +275,9 @@ while IFS=$'\t' read -r name file args expect setup names what; do
         for o in "${outputs[@]}"; do
             [ -s "$o" ] || problems+=("no output $(basename "$o")")
         done
-        grep -q ' 0 NaN/Inf samples' "$CAP/stdout" || problems+=("the summary does not say 0 NaN/Inf samples")
+        if [ "${argv[0]}" = render ]; then
+            grep -q ' 0 NaN/Inf samples' "$CAP/stdout" || problems+=("the summary does not say 0 NaN/Inf samples")
+        fi
         if grep -v '^pathcl: warning: ' "$CAP/stderr" | grep -q .; then
             problems+=("stderr holds more than warnings")
         fi

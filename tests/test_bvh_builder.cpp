@@ -282,5 +282,44 @@ TEST(BvhBuilder, IdenticalTrianglesStillSplitIntoSmallLeaves)
     EXPECT_LE(bvh.max_leaf_size, kBvhMaxLeafSize);
 }
 
+// Boxes whose centres overflow float (a box at 3e38: the sum of its corners is infinite)
+// make an infinite centroid extent, a zero bin scale and NaN bin positions. Guards the
+// builder's float-to-int conversions: NaN became INT_MIN, an index far outside the bin
+// array (SIGSEGV in release, a UBSan report in the sanitizer build). Every triangle still
+// lands in exactly one leaf.
+TEST(BvhBuilder, BoxesBeyondFloatRangeNeverIndexOutsideTheBins)
+{
+    BvhBuildInput in;
+    for (int i = 0; i < 20; ++i) {
+        in.box_min.push_back(glm::vec3(static_cast<float>(i), 0.0f, 0.0f));
+        in.box_max.push_back(glm::vec3(static_cast<float>(i) + 1.0f, 1.0f, 1.0f));
+    }
+    for (float big : {3e38f, 3.4e38f, INFINITY}) {
+        in.box_min.push_back(glm::vec3(big, 0.0f, big));
+        in.box_max.push_back(glm::vec3(big, 1.0f, big));
+    }
+    in.box_min.push_back(glm::vec3(-3.4e38f));
+    in.box_max.push_back(glm::vec3(3.4e38f));
+    Bvh bvh = build_bvh(in);
+    std::vector<int> seen(in.box_min.size(), 0);
+    std::function<void(int)> visit = [&](int node) {
+        for (int j = 0; j < kBvhWidth; ++j) {
+            const Slot c = slot(bvh.nodes[static_cast<std::size_t>(node)], j);
+            if (c.ref.index < 0)
+                continue;
+            if (c.ref.count == 0) {
+                ASSERT_LT(static_cast<std::size_t>(c.ref.index), bvh.nodes.size());
+                visit(c.ref.index);
+                continue;
+            }
+            for (int i = c.ref.index; i < c.ref.index + c.ref.count; ++i)
+                seen[bvh.triangle_order[static_cast<std::size_t>(i)]] += 1;
+        }
+    };
+    visit(0);
+    for (std::size_t t = 0; t < seen.size(); ++t)
+        EXPECT_EQ(seen[t], 1) << "triangle " << t;
+}
+
 } // namespace
 } // namespace pathcl

@@ -4,9 +4,11 @@
 // variance included); a checkpoint of another render, or a damaged one, is a one-line
 // error.
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -17,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "render/checkpoint.h"
 #include "support/same_image.h"
 #include "support/tool_run.h"
 
@@ -98,7 +101,11 @@ TEST_F(ToolRun, CheckpointOfAnotherRenderOrDamagedIsAOneLineError)
         << text("stderr.txt");
     EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --seed 7 --resume cp.bin" + options), 2);
     std::string err = text("stderr.txt");
-    EXPECT_EQ(err.rfind("pathcl: error: --resume: the checkpoint is of another render", 0), 0u) << err;
+    EXPECT_EQ(err.rfind("pathcl: error: cp.bin: --resume: the checkpoint is of another render: its \"seed 0\", this "
+                        "render's \"seed 7\"",
+                        0),
+              0u)
+        << err;
     EXPECT_EQ(err.find('\n'), err.size() - 1) << err;
 
     std::filesystem::resize_file(dir_ / "cp.bin", std::filesystem::file_size(dir_ / "cp.bin") / 2);
@@ -106,6 +113,63 @@ TEST_F(ToolRun, CheckpointOfAnotherRenderOrDamagedIsAOneLineError)
     err = text("stderr.txt");
     EXPECT_NE(err.find("cp.bin: checkpoint is truncated or corrupt"), std::string::npos) << err;
     EXPECT_FALSE(std::filesystem::exists(dir_ / "x.exr"));
+}
+
+// A checkpoint rewritten by hand (the writer recomputes its checksum): counters past the
+// render, counters that wrap, a film of another size or holding NaN, a key of 500,000
+// line breaks, a file of 3 GB. Each is one short error line naming the file and --resume,
+// and nothing is written. Broken variant seen to fail: the batch past the end resumed
+// into an image of the samples done so far labelled complete (exit 0), the wrapped counter
+// too, the NaN film into NaN pixels, the key into a 500,001-line error, and the 3 GB
+// file was read whole before it was refused.
+TEST_F(ToolRun, AHandMadeCheckpointIsAOneLineErrorNamingIt)
+{
+    const std::string options = " --max-spp 256 --batch-spp 16" + kSmall;
+    ASSERT_EQ(run("render '" + kScene + "' -o part.exr --time 0.05 --checkpoint cp.bin" + options), 0)
+        << text("stderr.txt");
+    const RenderCheckpoint good = read_checkpoint((dir_ / "cp.bin").string(), 32 * 32);
+    struct Case {
+        const char* what;
+        void (*spoil)(RenderCheckpoint&);
+        const char* says;
+    };
+    const Case cases[] = {
+        {"batch past the end",
+         [](RenderCheckpoint& c) {
+             c.batch = 16;
+             c.pass = 0;
+         },
+         "the checkpoint is at pass 0 of batch 16, which this render does not have"},
+        {"spp counter wrapped", [](RenderCheckpoint& c) { c.spp_done += 0xfffffff0u; }, "samples per pixel done"},
+        {"film of another size", [](RenderCheckpoint& c) { c.device_films[0].resize(10); },
+         "does not hold one film of this render's 1024 pixels"},
+        {"NaN in the film", [](RenderCheckpoint& c) { c.film.samples[5] = NAN; }, "pixel 5 of its film"},
+        {"a key of line breaks", [](RenderCheckpoint& c) { c.key = std::string(50000, '\n'); },
+         "the checkpoint is of another render"},
+    };
+    for (const Case& c : cases) {
+        RenderCheckpoint cp = good;
+        c.spoil(cp);
+        write_checkpoint((dir_ / "hand.bin").string(), cp);
+        EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --resume hand.bin" + options), 2) << c.what;
+        const std::string err = text("stderr.txt");
+        EXPECT_EQ(err.rfind("pathcl: error: hand.bin: --resume: ", 0), 0u) << c.what << ": " << err.substr(0, 300);
+        EXPECT_NE(err.find(c.says), std::string::npos) << c.what << ": " << err.substr(0, 300);
+        EXPECT_EQ(err.find('\n'), err.size() - 1) << c.what << ": not one line";
+        EXPECT_LT(err.size(), 600u) << c.what;
+        EXPECT_FALSE(std::filesystem::exists(dir_ / "x.exr")) << c.what;
+    }
+    // A key longer than any render's (500,000 line breaks) is refused from the file's size.
+    RenderCheckpoint cp = good;
+    cp.key = std::string(500000, '\n');
+    write_checkpoint((dir_ / "hand.bin").string(), cp);
+    EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --resume hand.bin" + options), 2);
+    EXPECT_EQ(text("stderr.txt").rfind("pathcl: error: hand.bin: is ", 0), 0u) << text("stderr.txt").substr(0, 300);
+    std::ofstream(dir_ / "huge.bin").close();
+    std::filesystem::resize_file(dir_ / "huge.bin", std::uintmax_t(3) << 30); // sparse
+    EXPECT_EQ(run("render '" + kScene + "' -o x.exr --time 600 --resume huge.bin" + options), 2);
+    const std::string err = text("stderr.txt");
+    EXPECT_NE(err.find("huge.bin: is 3221225472 bytes, more than the limit of "), std::string::npos) << err;
 }
 
 } // namespace

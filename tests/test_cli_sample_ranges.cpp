@@ -91,7 +91,7 @@ TEST_F(ToolRun, WhatCannotBeMergedExactlyIsAOneLineError)
         {"merge a.exr -o m.png", "m.png"},
         {render_args("x.exr", " --sample-range 8:16"), "--sample-range: is made of whole batches"},
         {render_args("x.exr", " --sample-range 48:16"), "--sample-range: ends at sample 64, past"},
-        {render_args("x.exr", " --sample-range 0:0"), "--sample-range: '0:0' is not FIRST:COUNT"},
+        {render_args("x.exr", " --sample-range 0:0"), "--sample-range: \"0:0\" is not FIRST:COUNT"},
         {render_args("x.png", " --sample-range 0:16"), "x.png: a sample range's film state is kept in EXR only"},
         {"render '" + kScene + "' -o x.exr --width 8 --height 8 --batch-spp 16 --time 5 --sample-range 0:16",
          "--sample-range: is a fixed set"},

@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -306,6 +308,86 @@ TEST(GltfHostileFiles, OnlyUsedImagesAreDecodedAndHugeOnesAreRefusedFromTheHeade
     write_file(file, used);
     std::string msg = error_of([&] { load_gltf(file.string()); });
     EXPECT_TRUE(contains(msg, "unsupported image size 100000x100000")) << msg;
+}
+
+// The memory an image's decoding takes (the decoder's copy and the RGBA image) is
+// admitted against what the process may still take, its address-space limit included,
+// before it is allocated: a one-line error naming the image and the limit. Run in a
+// child process under RLIMIT_AS (`ulimit -v`) 256 MiB above what it has mapped, with an
+// 8192 x 8192 RGBA8 image (256 MiB decoded, as much again for the decoder's copy).
+// Broken variant seen to fail: the admission counted the machine's memory only, and the
+// decode ended in std::bad_alloc, which names nothing.
+TEST(GltfHostileFiles, AnImageWhoseDecodingExceedsTheProcesssLimitIsRefused)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS under it";
+#else
+    Dir d;
+    write_file(d.scene() / "tri.bin", triangle_bytes());
+    write_file(d.scene() / "big.png", png_claiming(8192, 8192));
+    std::string used = gltf_text(uri("tri.bin"), R"([{"mesh": 0}])", "[0]",
+                                 R"(, "images": [{"uri": "big.png"}], "textures": [{"source": 0}],
+                                  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
+    used.replace(used.find(R"("attributes")"), 0, R"("material": 0, )");
+    const fs::path file = d.scene() / "big.gltf";
+    write_file(file, used);
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        double mapped = 0.0;
+        std::ifstream("/proc/self/statm") >> mapped;
+        struct rlimit limit {};
+        limit.rlim_cur = limit.rlim_max =
+            static_cast<rlim_t>(mapped * static_cast<double>(::sysconf(_SC_PAGE_SIZE))) + (rlim_t(256) << 20);
+        if (::setrlimit(RLIMIT_AS, &limit) != 0)
+            ::_exit(4);
+        try {
+            load_gltf(file.string());
+            ::_exit(3);
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            ::_exit(contains(m, "big.gltf: ") && contains(m, "big.png") && contains(m, "address-space limit") ? 0 : 1);
+        } catch (...) {
+            ::_exit(2);
+        }
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: an error that does not name the image and the limit; 2: not a "
+                                         "pathcl::Error (std::bad_alloc); 3: loaded; 4: setrlimit failed";
+#endif
+}
+
+// Indices inside extensions, read by tinygltf into an int: 2^32 wrapped to 0 and named
+// the first variant (or accessor). Each is checked in the JSON as every other index is.
+// Broken variant seen to fail: the variant index 2^32 selected variant 0 and the file
+// loaded.
+TEST(GltfHostileFiles, ExtensionIndicesBeyondIntAreRefused)
+{
+    Dir d;
+    const std::string variants = R"(, "extensionsUsed": ["KHR_materials_variants"], "materials": [{}, {}],
+ "extensions": {"KHR_materials_variants": {"variants": [{"name": "a"}, {"name": "b"}]}})";
+    std::string text = gltf_text(uri("tri.bin"), R"([{"mesh": 0}])", "[0]", variants);
+    const std::string prim = R"({"attributes": {"POSITION": 0}})";
+    text.replace(text.find(prim), prim.size(),
+                 R"({"attributes": {"POSITION": 0}, "material": 0, "extensions": {"KHR_materials_variants":
+                     {"mappings": [{"material": 1, "variants": [4294967296]}]}}})");
+    write_file(d.scene() / "tri.bin", triangle_bytes());
+    write_file(d.scene() / "variant.gltf", text);
+    std::string msg = error_of([&] { load_gltf((d.scene() / "variant.gltf").string()); });
+    EXPECT_TRUE(contains(msg, "variant.gltf: meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0]."
+                              "variants[0] is 4294967296, which names none of the 2 KHR_materials_variants variants"))
+        << msg;
+
+    std::string instanced = gltf_text(uri("tri.bin"),
+                                      R"([{"mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes":
+                                          {"TRANSLATION": 4294967296}}}}])",
+                                      "[0]", R"(, "extensionsUsed": ["EXT_mesh_gpu_instancing"])");
+    write_file(d.scene() / "instances.gltf", instanced);
+    msg = error_of([&] { load_gltf((d.scene() / "instances.gltf").string()); });
+    EXPECT_TRUE(contains(msg, "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION is 4294967296"))
+        << msg;
 }
 
 } // namespace

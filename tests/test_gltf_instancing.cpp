@@ -211,5 +211,40 @@ TEST(GltfInstancing, InstancesThatCannotFitInMemoryAreRefusedBeforeTheyAreRead)
         << e;
 }
 
+// 10^7 coincident instances from a few hundred bytes (a TRANSLATION accessor without a
+// bufferView: zeros) fit this machine's memory at 600 bytes each, but every ray that
+// reaches them would visit every one: refused by count, saying what it would need.
+// Broken variant seen to fail: admitted, then past 60 s at 4.8 GB and growing.
+TEST(GltfInstancing, MoreInstancesThanAnySceneMayHaveAreRefusedBeforeTheyAreRead)
+{
+    std::string e = error_of([&] { import(zeros_instanced(1, 10000000), "swarm.gltf"); });
+    EXPECT_TRUE(contains(e, "swarm.gltf: node 0: the scene would need 0 triangles and 10000000 instances, more than "
+                            "the 4194304 instances a scene may have"))
+        << e;
+}
+
+// A mesh drawn by two nodes, one translated by 2e38: finite, and so accepted by the
+// transform checks, but its instance's box reaches past what float arithmetic on render
+// space can hold (the BVH builder's box areas overflow and its bin indices were NaN). A
+// one-line error naming the file. Broken variant seen to fail: the import accepted it
+// and `pathcl render` crashed in the BVH build (SIGSEGV).
+TEST(GltfInstancing, ASceneReachingBeyondFloatRangeIsRefused)
+{
+    GltfBuilder b;
+    int mat = b.add_material(glm::vec3(0.5f));
+    int mesh = b.add_mesh(b.add_positions(kTilted), -1, mat);
+    b.add_root(b.add_node(mesh));
+    b.add_root(b.add_node(mesh, {}, {2e38, 0.0, 0.0}));
+    const std::string e = error_of([&] { import(b, "far.gltf"); });
+    EXPECT_TRUE(contains(e, "far.gltf: the scene reaches 1e+38 from its centre")) << e;
+    // 1e15 from its centre is still a scene.
+    GltfBuilder near;
+    mat = near.add_material(glm::vec3(0.5f));
+    mesh = near.add_mesh(near.add_positions(kTilted), -1, mat);
+    near.add_root(near.add_node(mesh));
+    near.add_root(near.add_node(mesh, {}, {2e15, 0.0, 0.0}));
+    EXPECT_EQ(import(near, "near.gltf").instances.size(), 2u);
+}
+
 } // namespace
 } // namespace pathcl

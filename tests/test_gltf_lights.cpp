@@ -84,7 +84,7 @@ TEST(GltfLights, BadLightDataIsAnErrorNamingTheFile)
     {
         test::GltfBuilder b;
         b.add_light_node(b.add_light("laser", glm::vec3(1.0f), 1.0), {0, 0, 0});
-        EXPECT_NE(error_of(b).find("unknown light type 'laser'"), std::string::npos) << error_of(b);
+        EXPECT_NE(error_of(b).find("unknown light type \"laser\""), std::string::npos) << error_of(b);
     }
     {
         test::GltfBuilder b;

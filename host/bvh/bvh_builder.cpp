@@ -28,6 +28,19 @@ float widen_up(float x)
                     x + 2.0f * std::numeric_limits<float>::min());
 }
 
+// The bin of a centroid `offset` past the centroid bounds' low side, `scale` bins a unit:
+// clamped before the conversion to int, which is undefined for NaN and values beyond
+// int (bounds that overflow float make an infinite extent, a zero scale and NaN here).
+int bin_index(float offset, float scale)
+{
+    const float x = offset * scale;
+    if (!(x > 0.0f))
+        return 0;
+    if (!(x < static_cast<float>(kBins - 1)))
+        return kBins - 1;
+    return static_cast<int>(x);
+}
+
 struct Box {
     glm::vec3 lo{std::numeric_limits<float>::infinity()};
     glm::vec3 hi{-std::numeric_limits<float>::infinity()};
@@ -88,7 +101,7 @@ struct Builder {
             float scale = kBins / extent[axis];
             for (std::size_t i = begin; i < end; ++i) {
                 std::uint32_t t = order[i];
-                int b = std::min(kBins - 1, static_cast<int>((centroid[t][axis] - cbounds.lo[axis]) * scale));
+                int b = bin_index(centroid[t][axis] - cbounds.lo[axis], scale);
                 bin_box[static_cast<std::size_t>(b)].grow(in.box_min[t], in.box_max[t]);
                 bin_count[static_cast<std::size_t>(b)] += 1;
             }
@@ -129,13 +142,11 @@ struct Builder {
         std::size_t mid;
         if (best_axis >= 0) {
             float scale = kBins / extent[best_axis];
-            auto it = std::partition(
-                order.begin() + static_cast<std::ptrdiff_t>(begin), order.begin() + static_cast<std::ptrdiff_t>(end),
-                [&](std::uint32_t t) {
-                    int b =
-                        std::min(kBins - 1, static_cast<int>((centroid[t][best_axis] - cbounds.lo[best_axis]) * scale));
-                    return b < best_split;
-                });
+            auto it =
+                std::partition(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                               order.begin() + static_cast<std::ptrdiff_t>(end), [&](std::uint32_t t) {
+                                   return bin_index(centroid[t][best_axis] - cbounds.lo[best_axis], scale) < best_split;
+                               });
             mid = static_cast<std::size_t>(it - order.begin());
         } else {
             // All centroids coincide: SAH cannot separate them; split the list in half.

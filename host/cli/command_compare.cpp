@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "common/error.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 
@@ -16,14 +17,18 @@ struct CompareRequest {
 
 int run_compare(const CompareRequest& rq)
 {
+    const Image a = read_image(rq.a), b = read_image(rq.b);
+    if (a.width != b.width || a.height != b.height)
+        throw Error(rq.b + ": is " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", " + rq.a + " " +
+                    std::to_string(a.width) + "x" + std::to_string(a.height) + ": compare needs images of one size");
     if (rq.bitwise) {
-        BitwiseReport r = compare_bitwise(read_image(rq.a), read_image(rq.b));
+        BitwiseReport r = compare_bitwise(a, b);
         std::cout << r.summary();
         return r.identical() ? 0 : 1;
     }
     CompareOptions options = rq.options;
     options.pooled_variance = !rq.welch;
-    CompareReport r = compare_images(read_image(rq.a), read_image(rq.b), options);
+    CompareReport r = compare_images(a, b, options);
     std::cout << r.summary();
     return r.passed ? 0 : 1;
 }

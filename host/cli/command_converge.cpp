@@ -4,7 +4,9 @@
 // DIR/convergence.csv (row by row: an interrupted study keeps its rows),
 // DIR/error_vs_time.png, DIR/error_vs_spp.png and DIR/summary.md.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -15,6 +17,7 @@
 #include "cli/progress_line.h"
 #include "common/error.h"
 #include "common/staged_files.h"
+#include "common/text_fields.h"
 #include "converge/convergence.h"
 #include "converge/convergence_csv.h"
 #include "converge/convergence_plots.h"
@@ -33,10 +36,12 @@ struct ConvergeRequest {
     std::string variant;         // --variant NAME
     bool copy_instances = false; // --copy-instances
     std::vector<std::string> vary;
-    std::vector<std::uint32_t> ladder{1, 2, 4, 8, 16, 32, 64, 128, 256};
+    std::string ladder_text = "1,2,4,8,16,32,64,128,256"; // --spp-ladder
+    std::vector<std::uint32_t> ladder;
     std::uint32_t seeds = 3;
     std::string reference_file;
     std::uint32_t reference_spp = 4096;
+    std::string targets_text; // --targets
     std::vector<double> targets;
     RenderOptions options;
     std::string device = "0"; // --device: an index, a list or all
@@ -92,12 +97,48 @@ std::optional<Image> obtain_reference(const ConvergeRequest& rq, const Scene& sc
     return r.image;
 }
 
+// A study renders at most this many images (settings x ladder steps x seeds).
+constexpr std::uint64_t kMaxStudyRenders = 100000;
+
+// --spp-ladder: whole numbers from 1 to 2^20, each larger than the one before.
+std::vector<std::uint32_t> parse_ladder(const std::string& text)
+{
+    std::vector<std::uint32_t> ladder;
+    for (const std::string& item : split_commas(text)) {
+        auto v = parse_whole_number(item, 1u << 20);
+        if (!v || *v == 0)
+            throw Error("--spp-ladder: " + quote(item) + " in " + quote(text) +
+                        " is not a number of samples from 1 to 1048576");
+        if (!ladder.empty() && *v <= ladder.back())
+            throw Error("--spp-ladder: " + quote(text) +
+                        " does not rise: each step takes more samples than the one "
+                        "before");
+        ladder.push_back(static_cast<std::uint32_t>(*v));
+    }
+    return ladder;
+}
+
+// --targets: relative MSEs, finite and positive.
+std::vector<double> parse_targets(const std::string& text)
+{
+    std::vector<double> targets;
+    for (const std::string& item : split_commas(text)) {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v) || !(v > 0.0))
+            throw Error("--targets: " + quote(item) + " is not a finite relative MSE above 0");
+        targets.push_back(v);
+    }
+    return targets;
+}
+
 int run_converge(ConvergeRequest rq)
 {
     if (rq.vary.empty())
         throw Error("--vary: give at least one knob to vary (KNOB=V1,V2,...)");
-    std::sort(rq.ladder.begin(), rq.ladder.end());
-    rq.ladder.erase(std::unique(rq.ladder.begin(), rq.ladder.end()), rq.ladder.end());
+    rq.ladder = parse_ladder(rq.ladder_text);
+    if (!rq.targets_text.empty())
+        rq.targets = parse_targets(rq.targets_text);
     if (fs::exists(rq.out_dir) && !fs::is_directory(rq.out_dir))
         throw Error(rq.out_dir + ": exists and is not a directory");
     std::vector<Knob> knobs;
@@ -109,6 +150,12 @@ int run_converge(ConvergeRequest rq)
     study.settings = settings_product(study.base, knobs);
     study.ladder = rq.ladder;
     study.seeds = rq.seeds;
+    const std::uint64_t renders = std::uint64_t(study.settings.size()) * study.ladder.size() * study.seeds;
+    if (renders > kMaxStudyRenders)
+        throw Error("converge: " + std::to_string(study.settings.size()) + " settings x " +
+                    std::to_string(study.ladder.size()) + " ladder steps (--spp-ladder) x " +
+                    std::to_string(study.seeds) + " seeds (--seeds) make " + std::to_string(renders) +
+                    " renders, more than the " + std::to_string(kMaxStudyRenders) + " a study may have");
     for (const Setting& s : study.settings) { // fail on a bad combination before any render
         RenderOptions o = s.options;
         if (o.adaptive)
@@ -194,10 +241,8 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
                   "KNOB=V1,V2,... (repeatable: the product); knobs: sampler, strategy, max-bounces, "
                   "stratified-bounces, batch-spp, fast-math, specialization, adaptive, light-sampler, integrator")
         ->required();
-    c->add_option("--spp-ladder", rq->ladder, "samples per pixel to render each setting at")
-        ->delimiter(',')
-        ->capture_default_str()
-        ->check(CLI::Range(1u, 1u << 20));
+    c->add_option("--spp-ladder", rq->ladder_text, "samples per pixel to render each setting at, rising (S1,S2,...)")
+        ->capture_default_str();
     c->add_option("--seeds", rq->seeds, "renders per setting and spp (seeds --seed, --seed + 1, ...)")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1000u));
@@ -211,11 +256,9 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
         ->capture_default_str()
         ->check(CLI::Range(1u, 1u << 24))
         ->excludes(file);
-    c->add_option("--targets", rq->targets,
-                  "relMSE targets for the time-to-target columns (default: three "
-                  "spread over the first setting's range)")
-        ->delimiter(',')
-        ->check(CLI::PositiveNumber);
+    c->add_option("--targets", rq->targets_text,
+                  "relMSE targets for the time-to-target columns, E1,E2,... (default: three "
+                  "spread over the first setting's range)");
     add_render_options(c, rq->options, rq->device, /*with_spp=*/false);
     c->add_option("--seed", rq->options.seed, "first seed")->capture_default_str();
     add_program_options(c, rq->options);

@@ -6,6 +6,7 @@
 #include "cl/cl_runtime.h"
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "common/error.h"
 #include "render/kernel_features.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
@@ -50,11 +51,11 @@ int run_info(const InfoRequest& rq)
                 s.vertex_colors ? "; vertex colours" : "");
     std::printf("environment  %s\n", s.environment.c_str());
     if (!scene.material_variants.empty()) {
-        std::vector<std::string> quoted;
+        std::vector<std::string> names;
         for (const std::string& v : scene.material_variants)
-            quoted.push_back("\"" + v + "\"");
-        std::printf("variants     %s; materials of %s\n", join(quoted).c_str(),
-                    scene.variant.empty() ? "the default" : ("\"" + scene.variant + "\"").c_str());
+            names.push_back(quote(v));
+        std::printf("variants     %s; materials of %s\n", join(names).c_str(),
+                    scene.variant.empty() ? "the default" : (quote(scene.variant)).c_str());
     }
     std::printf("camera       %s\n", s.camera.c_str());
 

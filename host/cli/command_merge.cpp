@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "common/file_identity.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
 #include "render/partial_renders.h"
@@ -21,7 +22,10 @@ int run_merge(const MergeRequest& rq)
     check_output_path(rq.output);
     if (lowercase_extension(rq.output) != ".exr")
         throw Error(rq.output + ": a merge is written as EXR (it may be a partial render itself)");
-    check_not_an_input(rq.output, rq.inputs);
+    std::vector<NamedFile> inputs;
+    for (const std::string& input : rq.inputs)
+        inputs.push_back({input, "partial render"});
+    check_distinct_files(inputs, {{rq.output, "-o"}});
     Image merged = merge_partial_renders(rq.inputs);
     write_image(rq.output, merged);
     auto ranges = merged.metadata.find("sample_ranges");

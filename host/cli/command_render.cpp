@@ -1,5 +1,6 @@
 // `pathcl render`: loads a scene, applies the environment and camera flags, renders, and
 // writes every requested image (and the camera-ray log) or none of them.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include "cli/options.h"
 #include "cli/progress_line.h"
 #include "common/error.h"
+#include "common/file_identity.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
 #include "render/checkpoint.h"
@@ -65,6 +67,18 @@ void apply_environment_flags(Scene& scene, const EnvironmentFlags& f)
             throw Error("--env-strength: must be finite and non-negative");
         env.strength = f.strength;
     }
+    // Each factor is finite; their product must be too, for every texel of an image.
+    const bool flags_scale = !f.background.empty() || f.strength_option->count();
+    const float brightest = env.path.empty()
+                                ? std::max({env.constant.x, env.constant.y, env.constant.z})
+                                : (env.rgb.empty() ? 0.0f : *std::max_element(env.rgb.begin(), env.rgb.end()));
+    if (flags_scale && !std::isfinite(brightest * env.strength)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the environment's radiance (%s %g x strength %g) is not finite as a float",
+                      env.path.empty() ? "colour" : "brightest texel", static_cast<double>(brightest),
+                      static_cast<double>(env.strength));
+        throw Error((f.background.empty() ? "--env-strength: " : "--background: ") + std::string(text));
+    }
     if (!std::isfinite(f.rotation_degrees))
         throw Error("--env-rotation: must be a finite number of degrees");
     env.rotation_degrees = f.rotation_degrees;
@@ -105,6 +119,11 @@ struct BudgetFlags {
     // (the cap).
     void apply(RenderOptions& opt) const
     {
+        // Before anything reads them as a budget: NaN is neither one nor none.
+        if (!std::isfinite(opt.time_budget) || opt.time_budget < 0.0)
+            throw Error("--time: must be a finite number of seconds above 0");
+        if (!std::isfinite(opt.target_error) || opt.target_error < 0.0)
+            throw Error("--target-error: must be a finite relative MSE above 0");
         const bool budget = opt.time_budget > 0.0 || opt.target_error > 0.0;
         if (budget && spp_option->count())
             throw Error("--spp fixes the sample count; with --time or --target-error cap it with --max-spp");
@@ -134,6 +153,33 @@ struct RenderRequest {
     std::string variant;         // --variant NAME
     bool copy_instances = false; // --copy-instances
 };
+
+// Every file the render reads: the scene's (its buffers and images), the environment map
+// and the checkpoint it resumes.
+std::vector<NamedFile> render_inputs(const RenderRequest& rq, const Scene& scene)
+{
+    std::vector<NamedFile> inputs;
+    for (const std::string& file : scene.input_files)
+        inputs.push_back({file, "scene file"});
+    if (scene.environment.present && !scene.environment.path.empty())
+        inputs.push_back({scene.environment.path, "environment map"});
+    if (!rq.resume.empty())
+        inputs.push_back({rq.resume, "--resume"});
+    return inputs;
+}
+
+// Every file it writes.
+std::vector<NamedFile> render_outputs(const RenderRequest& rq)
+{
+    std::vector<NamedFile> outputs;
+    for (const std::string& output : rq.outputs)
+        outputs.push_back({output, "-o"});
+    if (!rq.checkpoint.empty())
+        outputs.push_back({rq.checkpoint, "--checkpoint"});
+    if (!rq.ray_log.empty())
+        outputs.push_back({rq.ray_log, "--ray-log"});
+    return outputs;
+}
 
 // "relMSE est. 1.2e-03 (batch means)", or the per-sample bound.
 std::string error_summary(const RenderStats& s)
@@ -186,22 +232,14 @@ int run_render(RenderRequest rq)
         warn(rq.scene_path + ": has no light (no emissive material, punctual light or environment) and no unlit "
                              "material: the image is black (--background R,G,B or --env FILE adds light)");
     apply_camera_overrides(scene, rq.camera.overrides());
-    std::vector<std::string> inputs = scene.input_files;
-    if (scene.environment.present && !scene.environment.path.empty())
-        inputs.push_back(scene.environment.path);
-    for (const std::string& output : rq.outputs)
-        check_not_an_input(output, inputs);
-    if (!rq.ray_log.empty())
-        check_not_an_input(rq.ray_log, inputs);
     if (!rq.checkpoint.empty()) {
         check_output_location(rq.checkpoint);
-        check_not_an_input(rq.checkpoint, inputs);
-        for (const std::string& output : rq.outputs)
-            if (output == rq.checkpoint)
-                throw Error(rq.checkpoint + ": is both an output image and the checkpoint");
         if (!(rq.checkpoint_every > 0.0) || !std::isfinite(rq.checkpoint_every))
             throw Error("--checkpoint-every must be a positive number of seconds");
     }
+    check_distinct_files(render_inputs(rq, scene), render_outputs(rq), [](const NamedFile& out, const NamedFile& in) {
+        return out.role == "--checkpoint" && in.role == "--resume"; // a resumed render keeps its checkpoint
+    });
     RenderOptions& opt = rq.options;
     rq.budget.apply(opt);
     if (!rq.sample_range.empty()) {
@@ -231,7 +269,7 @@ int run_render(RenderRequest rq)
     if (!rq.resume.empty()) {
         if (!rq.ray_log.empty())
             throw Error("--ray-log cannot be combined with --resume (the logged rays are those of the first passes)");
-        resume = read_checkpoint(rq.resume);
+        resume = read_checkpoint(rq.resume, static_cast<std::size_t>(opt.width) * opt.height);
     }
     Renderer renderer(scene, opt);
     catch_interrupts();
@@ -261,7 +299,13 @@ int run_render(RenderRequest rq)
                 last_checkpoint = std::chrono::steady_clock::now();
             };
         }
-        r = renderer.render(run);
+        try {
+            r = renderer.render(run);
+        } catch (const ParameterError& e) {
+            if (e.parameter() != "resume")
+                throw;
+            throw Error(rq.resume + ": " + e.describe(flag_for)); // names the file as well as the flag
+        }
     }
     // Every output complete before any replaces what the user has.
     StagedFiles staged;

@@ -2,8 +2,8 @@
 // host/cli/command_*.cpp). Every error is one line on stderr ("pathcl: error: ...") and
 // exit code 2; nothing is written unless the command succeeded. The library names
 // parameters in its errors; here they are named by their flags.
-#include <algorithm>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -20,9 +20,7 @@ int main(int argc, char** argv)
     // Usage errors follow the same contract as every other error: one line, exit code 2.
     // (Set before the subcommands are added: they inherit it.)
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
-        std::string what = e.what();
-        std::replace(what.begin(), what.end(), '\n', ' ');
-        return "pathcl: error: " + what + "\n";
+        return "pathcl: error: " + pathcl::printable_line(pathcl::one_line(e.what())) + "\n";
     });
     std::vector<pathcl::cli::Command> commands = {
         pathcl::cli::add_render_command(app),  pathcl::cli::add_devices_command(app),
@@ -41,9 +39,12 @@ int main(int argc, char** argv)
                 return c.run();
         return 2;
     } catch (const pathcl::ParameterError& e) {
-        std::cerr << "pathcl: error: " << e.describe(pathcl::cli::flag_for) << '\n';
+        std::cerr << "pathcl: error: " << pathcl::printable_line(e.describe(pathcl::cli::flag_for)) << '\n';
+    } catch (const std::bad_alloc&) {
+        // Admission checks count what a command will hold; this is what they missed.
+        std::cerr << "pathcl: error: out of host memory (a limit of the process or the machine was reached)\n";
     } catch (const std::exception& e) {
-        std::cerr << "pathcl: error: " << e.what() << '\n';
+        std::cerr << "pathcl: error: " << pathcl::printable_line(e.what()) << '\n';
     }
     return 2;
 }

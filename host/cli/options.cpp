@@ -25,8 +25,8 @@ CLI::Validator sampler_validator()
         [](std::string& value) {
             auto it = sampler_names().find(lowercase(value));
             if (it == sampler_names().end())
-                return "unknown sampler '" + value +
-                       "' (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
+                return "unknown sampler " + quote(value) +
+                       " (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
             value = std::to_string(static_cast<std::uint32_t>(it->second));
             return std::string();
         },
@@ -61,7 +61,7 @@ std::vector<int> parse_devices(const std::string& text)
         const bool digits = !item.empty() && item.size() <= 6 &&
                             std::all_of(item.begin(), item.end(), [](unsigned char c) { return std::isdigit(c); });
         if (!digits)
-            throw Error("--device: '" + text + "' is not a device index, a comma-separated list of them or all");
+            throw Error("--device: " + quote(text) + " is not a device index, a comma-separated list of them or all");
         const int index = std::stoi(item);
         if (std::find(out.begin(), out.end(), index) != out.end())
             throw Error("--device: device " + item + " is listed twice");

@@ -1,5 +1,6 @@
 #include "common/error.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace pathcl {
@@ -27,6 +28,39 @@ std::string as_is(const std::string& parameter)
     return parameter;
 }
 
+// c escaped when it is a control character (or, with quotes, a quote or a backslash).
+void append_escaped(std::string& out, char c, bool quotes)
+{
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u != 0x7f && !(quotes && (c == '"' || c == '\\'))) {
+        out += c;
+        return;
+    }
+    switch (c) {
+    case '\n':
+        out += "\\n";
+        return;
+    case '\r':
+        out += "\\r";
+        return;
+    case '\t':
+        out += "\\t";
+        return;
+    case '"':
+        out += "\\\"";
+        return;
+    case '\\':
+        out += "\\\\";
+        return;
+    default:
+        break;
+    }
+    static const char hex[] = "0123456789abcdef";
+    out += "\\x";
+    out += hex[u >> 4];
+    out += hex[u & 15];
+}
+
 } // namespace
 
 std::string one_line(std::string text)
@@ -37,6 +71,31 @@ std::string one_line(std::string text)
     while (!text.empty() && text.back() == ' ')
         text.pop_back();
     return text;
+}
+
+std::string quote(const std::string& text)
+{
+    std::string out = "\"";
+    std::size_t kept = std::min(text.size(), kMaxQuotedBytes);
+    while (kept < text.size() && kept > 0 && (static_cast<unsigned char>(text[kept]) & 0xc0) == 0x80)
+        --kept; // not inside a UTF-8 character
+    for (std::size_t i = 0; i < kept; ++i)
+        append_escaped(out, text[i], true);
+    out += '"';
+    if (kept < text.size())
+        out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
+}
+
+std::string printable_line(const std::string& message)
+{
+    std::string out;
+    const std::size_t kept = std::min(message.size(), kMaxMessageBytes);
+    for (std::size_t i = 0; i < kept; ++i)
+        append_escaped(out, message[i], false);
+    if (kept < message.size())
+        out += "... (" + std::to_string(message.size() - kept) + " more bytes)";
+    return out;
 }
 
 Error::Error(const std::string& message) : std::runtime_error(message)
@@ -53,7 +112,7 @@ std::string ParameterError::describe(const std::function<std::string(const std::
 
 void warn(const std::string& message)
 {
-    std::cerr << "pathcl: warning: " << message << '\n';
+    std::cerr << "pathcl: warning: " << printable_line(message) << '\n';
 }
 
 } // namespace pathcl

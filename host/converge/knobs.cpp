@@ -15,7 +15,7 @@ std::uint32_t parse_count(const std::string& knob, const std::string& v)
 {
     auto n = parse_whole_number(v, 1u << 16);
     if (!n)
-        throw Error("--vary " + knob + ": '" + v + "' is not a whole number from 0 to 65536");
+        throw Error("--vary " + knob + ": " + quote(v) + " is not a whole number from 0 to 65536");
     return static_cast<std::uint32_t>(*n);
 }
 
@@ -25,7 +25,7 @@ bool parse_switch(const std::string& knob, const std::string& v)
         return true;
     if (v == "off")
         return false;
-    throw Error("--vary " + knob + ": '" + v + "' is neither off nor on");
+    throw Error("--vary " + knob + ": " + quote(v) + " is neither off nor on");
 }
 
 using Apply = std::function<void(RenderOptions&, const std::string&)>;
@@ -37,7 +37,7 @@ const std::map<std::string, Apply>& appliers()
          [](RenderOptions& o, const std::string& v) {
              auto it = sampler_names().find(v);
              if (it == sampler_names().end())
-                 throw Error("--vary sampler: unknown sampler '" + v + "'");
+                 throw Error("--vary sampler: unknown sampler " + quote(v));
              o.sampler = it->second;
          }},
         {"strategy",
@@ -47,7 +47,7 @@ const std::map<std::string, Apply>& appliers()
                      o.strategy = s;
                      return;
                  }
-             throw Error("--vary strategy: unknown strategy '" + v + "' (bsdf, nee, one-sample, mis)");
+             throw Error("--vary strategy: unknown strategy " + quote(v) + " (bsdf, nee, one-sample, mis)");
          }},
         {"max-bounces", [](RenderOptions& o, const std::string& v) { o.max_bounces = parse_count("max-bounces", v); }},
         {"stratified-bounces",
@@ -57,7 +57,7 @@ const std::map<std::string, Apply>& appliers()
         {"specialization",
          [](RenderOptions& o, const std::string& v) {
              if (v != "scene" && v != "all")
-                 throw Error("--vary specialization: '" + v + "' is neither scene nor all");
+                 throw Error("--vary specialization: " + quote(v) + " is neither scene nor all");
              o.specialization = v == "all" ? Specialization::All : Specialization::Scene;
          }},
         {"adaptive", [](RenderOptions& o, const std::string& v) { o.adaptive = parse_switch("adaptive", v); }},
@@ -94,7 +94,7 @@ Knob parse_knob(const std::string& spec)
 {
     std::size_t eq = spec.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
-        throw Error("--vary: '" + spec + "' is not KNOB=V1,V2,...");
+        throw Error("--vary: " + quote(spec) + " is not KNOB=V1,V2,...");
     Knob k;
     k.name = spec.substr(0, eq);
     auto it = appliers().find(k.name);
@@ -102,13 +102,13 @@ Knob parse_knob(const std::string& spec)
         std::string all;
         for (const std::string& n : knob_names())
             all += (all.empty() ? "" : ", ") + n;
-        throw Error("--vary: unknown knob '" + k.name + "' (" + all + ")");
+        throw Error("--vary: unknown knob " + quote(k.name) + " (" + all + ")");
     }
     for (const std::string& v : split_commas(spec.substr(eq + 1))) {
         if (v.empty())
             throw Error("--vary " + k.name + ": an empty value");
         if (std::find(k.values.begin(), k.values.end(), v) != k.values.end())
-            throw Error("--vary " + k.name + ": '" + v + "' is given twice");
+            throw Error("--vary " + k.name + ": " + quote(v) + " is given twice");
         RenderOptions probe;
         it->second(probe, v); // checks the value now, not after the reference render
         k.values.push_back(v);
@@ -132,12 +132,28 @@ std::string Setting::value(const std::string& knob) const
     return "";
 }
 
+std::uint64_t settings_count(const std::vector<Knob>& knobs)
+{
+    std::uint64_t n = 1;
+    for (const Knob& k : knobs)
+        n = k.values.empty() || n <= UINT64_MAX / k.values.size() ? n * k.values.size() : UINT64_MAX;
+    return n;
+}
+
 std::vector<Setting> settings_product(const RenderOptions& base, const std::vector<Knob>& knobs)
 {
     for (std::size_t i = 0; i < knobs.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (knobs[i].name == knobs[j].name)
                 throw Error("--vary " + knobs[i].name + " is given twice");
+    if (const std::uint64_t n = settings_count(knobs); n > kMaxSettings) {
+        std::string product;
+        for (const Knob& k : knobs)
+            product += (product.empty() ? "" : " x ") + std::to_string(k.values.size()) + " " + k.name;
+        throw Error("--vary: " + product + " make " + std::to_string(n) + " settings, each its own kernel build and " +
+                    "renders: more than the " + std::to_string(kMaxSettings) +
+                    " a study may have; vary fewer values (or run several studies)");
+    }
     std::vector<Setting> out(1);
     out[0].options = base;
     for (const Knob& k : knobs) {

@@ -12,6 +12,7 @@
 //   adaptive            off, on (per-pixel adaptive sampling; see converge/convergence.h)
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,8 +42,14 @@ struct Setting {
     std::string value(const std::string& knob) const;
 };
 
+// A study renders every setting with its own kernel build: at most this many settings.
+constexpr std::uint64_t kMaxSettings = 1024;
+
+// The number of settings the knobs make (the product of their value counts, saturated).
+std::uint64_t settings_count(const std::vector<Knob>& knobs);
+
 // The product of the knobs' values, the first knob varying slowest; throws for a knob
-// given twice.
+// given twice or a product of more than kMaxSettings settings (counted before any is made).
 std::vector<Setting> settings_product(const RenderOptions& base, const std::vector<Knob>& knobs);
 
 } // namespace pathcl

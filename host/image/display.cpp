@@ -23,7 +23,7 @@ ToneCurve tone_curve_from_name(const std::string& name)
         return ToneCurve::Clip;
     if (name == "filmic")
         return ToneCurve::Filmic;
-    throw Error("--tone: '" + name + "' is not clip or filmic");
+    throw Error("--tone: " + quote(name) + " is not clip or filmic");
 }
 
 } // namespace pathcl

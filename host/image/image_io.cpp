@@ -260,14 +260,33 @@ void read_film_part(const std::string& path, Image& img)
     if (channels > kMaxFilmChannels || pixels > kMaxFilmBytes / 4 / channels)
         throw Error(path + ": its film part is too large (" + std::to_string(channels) + " channels of " +
                     std::to_string(pixels) + " pixels; at most " + std::to_string(kMaxFilmBytes) + " bytes)");
+    // Written by pathcl: scanlines whose data window starts at the origin. A tool that
+    // re-saves the file may have tiled it (oiiotool --tile): tiles are read as well.
+    if (spec.deep || spec.depth != 1 || spec.x != 0 || spec.y != 0 || spec.z != 0)
+        throw Error(path + ": its film part is not a flat image whose data window starts at 0,0 (" +
+                    (spec.deep ? std::string("deep data")
+                               : "origin " + std::to_string(spec.x) + "," + std::to_string(spec.y) + "," +
+                                     std::to_string(spec.z) + ", depth " + std::to_string(spec.depth)) +
+                    ")");
+    const bool tiled = spec.tile_width > 0;
+    if (tiled && (spec.tile_height <= 0 || spec.tile_depth > 1 ||
+                  static_cast<std::size_t>(spec.tile_height) * img.width * channels * 4 > kMaxFilmBandBytes))
+        throw Error(path + ": its film part has tiles of " + std::to_string(spec.tile_width) + "x" +
+                    std::to_string(spec.tile_height) + "x" + std::to_string(spec.tile_depth) +
+                    " pixels, too large a row of them to read (at most " + std::to_string(kMaxFilmBandBytes) +
+                    " bytes)");
     img.film_channels = spec.channelnames;
     img.film.assign(pixels * channels, 0u);
-    // A few rows at a time: what OpenImageIO buffers stays small whatever the width.
-    constexpr int kRows = 16;
-    for (int y = 0; y < spec.height; y += kRows) {
-        const int y1 = std::min(spec.height, y + kRows);
-        if (!in->read_scanlines(1, 0, y, y1, 0, 0, spec.nchannels, TypeDesc::UINT,
-                                img.film.data() + static_cast<std::size_t>(y) * img.width * channels))
+    // A band of rows at a time (a row of tiles): what OpenImageIO buffers stays small
+    // whatever the width.
+    const int rows = tiled ? spec.tile_height : 16;
+    for (int y = 0; y < spec.height; y += rows) {
+        const int y1 = std::min(spec.height, y + rows);
+        std::uint32_t* band = img.film.data() + static_cast<std::size_t>(y) * img.width * channels;
+        const bool ok = tiled
+                            ? in->read_tiles(1, 0, 0, spec.width, y, y1, 0, 1, 0, spec.nchannels, TypeDesc::UINT, band)
+                            : in->read_scanlines(1, 0, y, y1, 0, 0, spec.nchannels, TypeDesc::UINT, band);
+        if (!ok)
             throw Error(path + ": cannot read its film part: " + one_line(in->geterror()));
     }
 }

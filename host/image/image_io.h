@@ -43,10 +43,12 @@ Image read_image(const std::string& path);
 // render's is 2.5 GB).
 constexpr std::size_t kMaxFilmChannels = 256;
 constexpr std::size_t kMaxFilmBytes = std::size_t(1) << 33;
+// It is read a band of rows at a time (a row of tiles, when tiled) of at most this many bytes.
+constexpr std::size_t kMaxFilmBandBytes = std::size_t(1) << 28;
 
 // Reads an EXR's "film" part (Image::film_channels, Image::film) into `image`, which
-// read_image returned for the same path; throws pathcl::Error naming the path when the
-// file has none or it does not match the image.
+// read_image returned for the same path, stored as scanlines or as tiles; throws
+// pathcl::Error naming the path when the file has none or it does not match the image.
 void read_film_part(const std::string& path, Image& image);
 
 } // namespace pathcl

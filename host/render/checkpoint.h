@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "render/batches.h"
 #include "render/film.h"
 #include "types.h"
 
@@ -34,8 +35,28 @@ struct RenderCheckpoint {
 // the path on failure, leaving no temporary file.
 void write_checkpoint(const std::string& path, const RenderCheckpoint& cp);
 
-// Reads a checkpoint; throws pathcl::Error naming the path when it is not one, is
-// truncated or its checksum fails.
-RenderCheckpoint read_checkpoint(const std::string& path);
+// The key of a checkpoint is at most this long (a render's is a few hundred bytes).
+constexpr std::size_t kMaxCheckpointKeyBytes = 1 << 16;
+
+// The most bytes a checkpoint of a render of `pixels` pixels can have: more is not one
+// of its checkpoints.
+std::uint64_t max_checkpoint_bytes(std::size_t pixels);
+
+// Reads the checkpoint of a render of `pixels` pixels (a file larger than such a
+// checkpoint can be is refused from its size, before it is read); throws pathcl::Error
+// naming the path when it is not one, is truncated or its checksum fails.
+RenderCheckpoint read_checkpoint(const std::string& path, std::size_t pixels);
+
+// The first "; "-separated field in which two render keys differ, as an error says it:
+// its "seed 0", this render's "seed 7".
+std::string key_difference(const std::string& checkpoint_key, const std::string& render_key);
+
+// Checks that `cp` is a state of the render laid out by `plan` over `pixels` pixels
+// (adaptive: with a mask of active pixels) before anything of it is used: the batch and
+// pass within the plan's, the counters as those make them, the films of the image's size
+// with finite values and counts within the samples taken. A checkpoint is a file anyone
+// may have written (its checksum guards against damage, not against intent). Throws
+// ParameterError("resume", ...) saying what does not fit.
+void check_checkpoint(const RenderCheckpoint& cp, const BatchPlan& plan, std::size_t pixels, bool adaptive);
 
 } // namespace pathcl

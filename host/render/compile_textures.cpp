@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 #include "render/compile_scene.h"
 #include "render/texture_lookup.h"
 #include "scene/texture_slots.h"
@@ -24,6 +25,12 @@ bool same_view(const TextureView& a, const TextureView& b)
 
 void pack_images(const Scene& scene, SceneArrays& a)
 {
+    // Allocated once: grown image by image, the buffer would be copied at each doubling.
+    std::size_t total = 0;
+    for (const SceneImage& img : scene.images)
+        total += static_cast<std::size_t>(img.width) * img.height * (img.bits == 16 ? 2 : 1);
+    check_memory_for(static_cast<double>(total) * sizeof(pcl_uint), "packing the scene's textures");
+    a.texels.reserve(a.texels.size() + total);
     for (const SceneImage& img : scene.images) {
         TextureImage ti{};
         ti.offset = static_cast<pcl_uint>(a.texels.size());

@@ -60,6 +60,8 @@ EnvironmentMap build_environment_map(const SceneEnvironment& env)
     if (env.path.empty()) {
         map.width = map.height = 1;
         glm::vec3 c = env.constant * env.strength;
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+            throw Error("the environment's radiance (its colour x strength) is negative, NaN or infinite");
         map.texels = {{c.x, c.y, c.z, 0.0f}};
     } else {
         map.width = env.width;

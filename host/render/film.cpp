@@ -1,10 +1,12 @@
 #include "render/film.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 #include "common/parallel.h"
 
 namespace pathcl {
@@ -19,14 +21,12 @@ double host_film_bytes(std::size_t pixels, std::size_t devices)
 
 void check_host_memory(double needed, double available)
 {
-    if (available <= 0.0)
-        available = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
-    if (needed > available) {
-        char text[160];
-        std::snprintf(text, sizeof text, "the film needs %.2f GiB of host memory, more than this machine's %.2f GiB",
-                      needed / 1073741824.0, available / 1073741824.0);
-        throw Error(text);
+    if (available <= 0.0) {
+        check_memory_for(needed, "the film");
+        return;
     }
+    if (needed > available)
+        throw Error("the film needs " + gib(needed) + " of host memory, more than this machine's " + gib(available));
 }
 
 FilmSum::FilmSum(std::size_t pixels) : sum_(new double[pixels * 4]), sum_sq_(new double[pixels * 4])
@@ -142,6 +142,40 @@ void FilmAccumulator::check_sizes(const State& s) const
     if (s.sum.size() != pixels * 3 || s.sum_sq.size() != pixels * 3 || s.batch_mean_sum.size() != pixels * 3 ||
         s.batch_mean_sq.size() != pixels * 3 || s.samples.size() != pixels || s.pixel_batches.size() != pixels)
         throw Error("the film state does not match the image size");
+}
+
+std::string FilmAccumulator::state_problem(const State& s, std::size_t pixels, std::uint32_t batches,
+                                           std::uint64_t max_samples)
+{
+    if (s.sum.size() != pixels * 3 || s.sum_sq.size() != pixels * 3 || s.batch_mean_sum.size() != pixels * 3 ||
+        s.batch_mean_sq.size() != pixels * 3 || s.samples.size() != pixels || s.pixel_batches.size() != pixels)
+        return "its film does not have the image's " + std::to_string(pixels) + " pixels";
+    if (s.batches != batches)
+        return "its film holds " + std::to_string(s.batches) + " whole batches, not the " + std::to_string(batches) +
+               " its sample counts make";
+    if (s.bad > max_samples * pixels)
+        return "its film counts " + std::to_string(s.bad) + " bad samples, more than it has samples";
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const double n = s.samples[i];
+        const std::string pixel = "pixel " + std::to_string(i) + " of its film ";
+        if (!(n >= 0.0 && n <= static_cast<double>(max_samples) && n == std::floor(n)))
+            return pixel + "has a sample count that is not a whole number from 0 to " + std::to_string(max_samples);
+        if (s.pixel_batches[i] > batches)
+            return pixel + "has samples in more batches than the film holds";
+        for (std::size_t k = i * 3; k < i * 3 + 3; ++k) {
+            const ExactSum* sums[4] = {&s.sum[k], &s.sum_sq[k], &s.batch_mean_sum[k], &s.batch_mean_sq[k]};
+            for (const ExactSum* e : sums) {
+                // A render's sums stay within +-2^126 (exact_sum.h): the top limb within +-2^62.
+                const auto top = static_cast<std::int64_t>(e->limb[2]);
+                if (e->poisoned() || top > (std::int64_t(1) << 62) || top < -(std::int64_t(1) << 62) ||
+                    (n == 0.0 && !(*e == ExactSum{})))
+                    return pixel + "holds a sum that is not a number, out of range, or without samples";
+            }
+            if (s.sum_sq[k].value() < 0.0 || s.batch_mean_sq[k].value() < 0.0)
+                return pixel + "holds a negative sum of squares";
+        }
+    }
+    return "";
 }
 
 void FilmAccumulator::restore(State s)

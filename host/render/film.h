@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "image/image.h"
@@ -24,8 +25,9 @@ namespace pathcl {
 // back (68).
 double host_film_bytes(std::size_t pixels, std::size_t devices);
 // Throws pathcl::Error naming both figures when `needed` exceeds `available` bytes
-// (available 0: this machine's physical memory): a refusal before allocating instead of
-// std::bad_alloc or the out-of-memory killer halfway through a render.
+// (available 0: what the process may still take, common/memory_limits.h): a refusal
+// before allocating instead of std::bad_alloc or the out-of-memory killer halfway
+// through a render.
 void check_host_memory(double needed, double available = 0.0);
 
 // One batch: every device's film added.
@@ -96,6 +98,15 @@ public:
     // right for independent samples, an upper bound for stratified and quasi-Monte Carlo
     // ones (by as much as their gain over independent sampling). Needs one batch only.
     double per_sample_relmse_estimate() const;
+
+    // What is wrong with `state` as the film of `pixels` pixels after exactly `batches`
+    // whole batches of at most `max_samples` samples per pixel in all, or "" when nothing
+    // is: every array of that size, every count within those bounds (bad samples
+    // included), every sum a number (not poisoned; squares not negative), a pixel
+    // without samples without sums. A state read from a file (a checkpoint, a partial
+    // render) is checked so before it makes an image.
+    static std::string state_problem(const State& state, std::size_t pixels, std::uint32_t batches,
+                                     std::uint64_t max_samples);
 
 private:
     struct Moments {

@@ -56,10 +56,54 @@ std::vector<SampleRange> meta_ranges(const Image& img, const std::string& path)
     for (const std::string& item : split_commas(text)) {
         auto r = parse_range(item);
         if (!r)
-            throw Error(path + ": pathcl:sample_ranges '" + text + "' is not a list of FIRST:COUNT");
+            throw Error(path + ": pathcl:sample_ranges " + quote(text) + " is not a list of FIRST:COUNT");
         out.push_back(*r);
     }
     return out;
+}
+
+// The value of `field` in a render key ("...; batch spp 16; spp 64; ..."), or "".
+std::string key_field(const std::string& key, const std::string& field)
+{
+    const std::string tag = "; " + field + " ";
+    const std::size_t at = key.find(tag);
+    if (at == std::string::npos)
+        return "";
+    const std::size_t begin = at + tag.size(), end = key.find(';', begin);
+    return key.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+}
+
+// What a partial render says of the render it belongs to, checked against its own key
+// (which names the render): numbers a hand may have edited must still describe it.
+struct RenderLayout {
+    std::uint32_t spp_total = 0, batch_spp = 0, seed = 0;
+    SamplerType sampler = SamplerType::Sobol;
+};
+
+RenderLayout render_layout(const Image& img, const std::string& key, const std::string& path)
+{
+    RenderLayout l;
+    l.spp_total = meta_u32(img, "spp_total", path);
+    l.batch_spp = meta_u32(img, "batch_spp", path);
+    l.seed = meta_u32(img, "seed", path);
+    auto s = sampler_names().find(meta(img, "sampler", path));
+    if (s == sampler_names().end())
+        throw Error(path + ": pathcl:sampler names no sampler");
+    l.sampler = s->second;
+    auto agrees = [&](const char* name, const std::string& field, const std::string& value) {
+        if (key_field(key, field) != value)
+            throw Error(path + ": pathcl:" + name + " " + quote(value) + " is not what its pathcl:render_key says (" +
+                        field + " " + quote(key_field(key, field)) + ")");
+    };
+    agrees("spp_total", "spp", std::to_string(l.spp_total));
+    agrees("batch_spp", "batch spp", std::to_string(l.batch_spp));
+    agrees("seed", "seed", std::to_string(l.seed));
+    agrees("sampler", "sampler", sampler_name(l.sampler));
+    agrees("size", "size", std::to_string(img.width) + "x" + std::to_string(img.height));
+    if (l.spp_total == 0 || l.batch_spp == 0 || l.batch_spp > (1u << 31))
+        throw Error(path + ": pathcl:spp_total " + std::to_string(l.spp_total) + " and pathcl:batch_spp " +
+                    std::to_string(l.batch_spp) + " describe no render");
+    return l;
 }
 
 } // namespace
@@ -68,7 +112,7 @@ SampleRange parse_sample_range(const std::string& text)
 {
     auto r = parse_range(text);
     if (!r)
-        throw Error("--sample-range: '" + text + "' is not FIRST:COUNT (sample indices, COUNT at least 1)");
+        throw Error("--sample-range: " + quote(text) + " is not FIRST:COUNT (sample indices, COUNT at least 1)");
     return *r;
 }
 
@@ -95,8 +139,8 @@ Image merge_partial_renders(const std::vector<std::string>& paths)
         throw Error("merge: no partial renders given");
     std::optional<FilmAccumulator> film;
     std::string key, first_path;
-    std::uint32_t width = 0, height = 0, spp_total = 0, batch_spp = 0, seed = 0, spp = 0;
-    SamplerType sampler = SamplerType::Sobol;
+    std::uint32_t width = 0, height = 0, spp = 0;
+    RenderLayout layout;
     struct Owned {
         SampleRange range;
         const std::string* path;
@@ -108,27 +152,30 @@ Image merge_partial_renders(const std::vector<std::string>& paths)
         const std::string& stop = meta(img, "stop", path);
         if (stop != "spp")
             throw Error(path + ": stopped early (" + stop + "): finish its range first (--resume its checkpoint)");
+        const RenderLayout its_layout = render_layout(img, its_key, path);
         if (!film) {
             key = its_key;
             first_path = path;
             width = img.width;
             height = img.height;
-            spp_total = meta_u32(img, "spp_total", path);
-            batch_spp = meta_u32(img, "batch_spp", path);
-            seed = meta_u32(img, "seed", path);
-            auto s = sampler_names().find(meta(img, "sampler", path));
-            if (s == sampler_names().end())
-                throw Error(path + ": pathcl:sampler names no sampler");
-            sampler = s->second;
-            film.emplace(static_cast<std::size_t>(width) * height, batch_spp);
+            layout = its_layout;
+            film.emplace(static_cast<std::size_t>(width) * height, layout.batch_spp);
         } else if (its_key != key || img.width != width || img.height != height) {
-            throw Error(path + ": is a range of another render than " + first_path + " (its key \"" + its_key +
-                        "\", not \"" + key + "\")");
+            throw Error(path + ": is a range of another render than " + first_path + " (its key " + quote(its_key) +
+                        ", not " + quote(key) + ")");
         }
+        const std::uint32_t spp_total = layout.spp_total, batch_spp = layout.batch_spp;
+        std::uint64_t its_samples = 0, its_batches = 0;
         for (const SampleRange& r : meta_ranges(img, path)) {
-            if (std::uint64_t(r.first) + r.count > spp_total)
+            const std::uint64_t end = std::uint64_t(r.first) + r.count;
+            if (end > spp_total)
                 throw Error(path + ": its sample range ends past the render's " + std::to_string(spp_total) +
                             " samples");
+            if (r.first % batch_spp != 0 || (end % batch_spp != 0 && end != spp_total))
+                throw Error(path + ": its sample range " + format_sample_ranges({r}) +
+                            " is not made of whole batches of " + std::to_string(batch_spp));
+            its_samples += r.count;
+            its_batches += (r.count + batch_spp - 1) / batch_spp; // only the render's last batch may be short
             for (const Owned& o : owned)
                 if (r.first < o.range.first + o.range.count && o.range.first < r.first + r.count)
                     throw Error(path + ": its samples " + format_sample_ranges({r}) + " overlap " + *o.path + "'s " +
@@ -137,14 +184,21 @@ Image merge_partial_renders(const std::vector<std::string>& paths)
             spp += r.count;
         }
         read_film_part(path, img);
-        film->merge(load_film_state(img, path));
+        const FilmAccumulator::State state = load_film_state(img, path);
+        const std::string problem = FilmAccumulator::state_problem(
+            state, static_cast<std::size_t>(width) * height, static_cast<std::uint32_t>(its_batches), its_samples);
+        if (!problem.empty())
+            throw Error(path + ": " + problem);
+        film->merge(state);
     }
     std::vector<SampleRange> ranges;
     for (const Owned& o : owned)
         ranges.push_back(o.range);
     const std::string union_text = format_sample_ranges(ranges);
+    const std::uint32_t spp_total = layout.spp_total;
     Image out = film->image(width, height, spp);
-    describe_render({StopReason::Spp, seed, sampler, batch_spp}, *film, estimate_error(*film, sampler), out);
+    describe_render({StopReason::Spp, layout.seed, layout.sampler, layout.batch_spp}, *film,
+                    estimate_error(*film, layout.sampler), out);
     if (union_text != format_sample_ranges({{0, spp_total}})) { // still partial
         store_film_state(film->state(), out);
         out.metadata["render_key"] = key;

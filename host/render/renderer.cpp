@@ -138,9 +138,9 @@ struct Renderer::Impl {
                                  compiled.arrays.light_tree_trail.size() * sizeof(pcl_ulong);
         setup.texel_bytes = compiled.texel_bytes();
         setup.kernel_from_cache = true;
+        check_host_memory(host_film_bytes(pixels(), opt.devices.size())); // before the devices' programs are built
         for (int index : opt.devices)
             devices.push_back(open(index));
-        check_host_memory(host_film_bytes(pixels(), devices.size()));
 
         frame = frame_params(compiled, opt, default_plan.batch_spp);
     }
@@ -515,10 +515,8 @@ struct Renderer::Impl {
         if (run.resume) {
             const RenderCheckpoint& cp = *run.resume;
             if (cp.key != key)
-                throw ParameterError("resume", "the checkpoint is of another render (it has \"" + cp.key +
-                                                   "\", this render is \"" + key + "\")");
-            if (cp.device_films.size() != 1 || (opt.adaptive && cp.active.size() != pixels()))
-                throw ParameterError("resume", "the checkpoint does not match this render's image");
+                throw ParameterError("resume", "the checkpoint is of another render: " + key_difference(cp.key, key));
+            check_checkpoint(cp, plan, pixels(), opt.adaptive);
             acc.restore(cp.film);
             first_batch = cp.batch;
             first_pass = cp.pass;

@@ -28,7 +28,7 @@ SceneCamera import_camera(const tinygltf::Camera& cam, const tinygltf::Value& ex
         c.ymag = ymag;
         c.orthographic = true;
     } else {
-        throw Error(source + ": " + what + ": unknown camera type '" + cam.type + "'");
+        throw Error(source + ": " + what + ": unknown camera type " + quote(cam.type));
     }
     glm::dmat3 m3(world);
     glm::dvec3 forward = m3 * glm::dvec3(0.0, 0.0, -1.0);

@@ -23,7 +23,7 @@ SceneEnvironment import_environment(const tinygltf::Value& extras, const std::st
     if (!env.IsObject() || !env.Has("uri") || !env.Get("uri").IsString())
         throw Error(source + ": scene extras.environment needs a string \"uri\"");
     std::string uri = env.Get("uri").Get<std::string>();
-    read_environment_image(environment, confined_path(base_dir, uri, source + ": environment uri '" + uri + "'"));
+    read_environment_image(environment, confined_path(base_dir, uri, source + ": environment uri " + quote(uri)));
     environment.strength = static_cast<float>(number_or(env, "strength", 1.0));
     if (!(environment.strength >= 0.0f) || !std::isfinite(environment.strength))
         throw Error(source + ": environment strength must be finite and non-negative");

@@ -60,7 +60,8 @@ std::vector<T> expand_to_rgba(const T* src, std::size_t texels, int channels, T 
 
 } // namespace
 
-SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what)
+SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what,
+                        const AdmitImageBytes& admit)
 {
     const char* format = image_format(bytes, size);
     if (!format)
@@ -86,6 +87,8 @@ SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std:
     img.height = static_cast<std::uint32_t>(h);
     img.bits = spec.format.size() > 1 ? 16 : 8;
     std::size_t values = w * h * static_cast<std::size_t>(channels);
+    if (admit)
+        admit((values + w * h * 4) * static_cast<std::size_t>(img.bits / 8));
     bool ok;
     if (img.bits == 16) {
         std::vector<std::uint16_t> raw(values);
@@ -101,7 +104,7 @@ SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std:
     return img;
 }
 
-SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what)
+SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what, const AdmitImageBytes& admit)
 {
     int channels = image.component;
     if (channels < 1 || channels > 4 || (image.bits != 8 && image.bits != 16))
@@ -113,6 +116,8 @@ SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& wh
     if (image.image.size() != values * static_cast<std::size_t>(image.bits / 8))
         throw Error(what + ": holds " + std::to_string(image.image.size()) + " bytes of pixels, not " +
                     std::to_string(values * static_cast<std::size_t>(image.bits / 8)));
+    if (admit)
+        admit((values + w * h * 4) * static_cast<std::size_t>(image.bits / 8));
     SceneImage img;
     img.name = what;
     img.width = static_cast<std::uint32_t>(w);
@@ -144,7 +149,8 @@ void check_image_uri(const std::string& uri, const std::string& what)
         throw Error(what + ": the URI scheme '" + scheme + ":' is not read (only relative paths and data: URIs)");
     }
     if (!uri.empty() && (uri[0] == '/' || uri[0] == '\\' || std::filesystem::path(uri).is_absolute()))
-        throw Error(what + ": the image path '" + uri + "' is absolute (image URIs are relative to the glTF file)");
+        throw Error(what + ": the image path " + quote(uri) +
+                    " is absolute (image URIs are relative to the glTF file)");
 }
 
 bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,

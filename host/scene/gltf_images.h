@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "scene/scene.h"
@@ -15,14 +16,19 @@ struct Image;
 
 namespace pathcl {
 
+// Called with the bytes an image's decoding will hold at its peak (the decoder's copy
+// and the RGBA image) before they are allocated; throws to refuse them.
+using AdmitImageBytes = std::function<void(std::size_t)>;
+
 // Decodes a PNG or JPEG image held in memory to RGBA with 8 or 16 bits per channel (16
 // for 16-bit PNGs), alpha kept unassociated (colours are not premultiplied). Throws
 // pathcl::Error("what: ...") for any other format or for undecodable bytes.
-SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what);
+SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std::string& what,
+                        const AdmitImageBytes& admit = {});
 
 // The pixels tinygltf holds for an image (as a program filled them in): width x height x component (1 to 4) channels of
 // `bits` (8 or 16), expanded to RGBA. Throws pathcl::Error("what: ...") when they are inconsistent.
-SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what);
+SceneImage image_from_pixels(const tinygltf::Image& image, const std::string& what, const AdmitImageBytes& admit = {});
 
 // Image URIs are relative paths (resolved against the glTF file's directory) or data:
 // URIs. Throws pathcl::Error("what: ...") for an absolute path or any other scheme.

@@ -81,7 +81,7 @@ SceneLight import_light(const tinygltf::Model& model, const tinygltf::Value& ind
     } else if (l.type == "directional") {
         out.type = SceneLight::Type::Directional;
     } else {
-        throw Error(source + ": " + name + ": unknown light type '" + l.type + "'");
+        throw Error(source + ": " + name + ": unknown light type " + quote(l.type));
     }
     return out;
 }

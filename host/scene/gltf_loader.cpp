@@ -22,6 +22,7 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 #include "scene/confined_files.h"
 #include "scene/gltf_camera.h"
 #include "scene/gltf_container.h"
@@ -54,20 +55,8 @@ constexpr std::uint64_t kBytesPerTriangle = 300;
 // What an instance of a stored mesh costs: its transform as imported (twice: pending and
 // scene), its device record, its top-level BVH share.
 constexpr std::uint64_t kBytesPerInstance = 600;
-
-std::string whole_number(double x)
-{
-    char text[64];
-    std::snprintf(text, sizeof text, "%.0f", x);
-    return text;
-}
-
-std::uint64_t physical_memory_bytes()
-{
-    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page)
-                                 : std::uint64_t(1) << 40; // unknown: no limit in practice
-}
+// Instances (drawings of stored meshes) a scene may have.
+constexpr std::uint64_t kMaxInstances = std::uint64_t(1) << 22;
 
 glm::dmat4 local_transform(const tinygltf::Node& node)
 {
@@ -171,7 +160,11 @@ struct Importer {
         scene.environment = import_environment(gltf_scene.extras, base_dir, source);
         bool have_camera = import_nodes(gltf_scene.nodes);
         import_drawings();
-        move_to_render_space(geometry, have_camera, scene);
+        try {
+            move_to_render_space(geometry, have_camera, scene);
+        } catch (const Error& e) {
+            throw Error(source + ": " + e.what());
+        }
         scene.images = textures.take_images();
         if (scene.materials.empty())
             scene.materials.push_back(SceneMaterial{});
@@ -239,16 +232,19 @@ struct Importer {
     {
         planned_triangles += triangles;
         planned_instances += instances;
-        const std::uint64_t memory = physical_memory_bytes();
+        const std::string needs = source + ": " + what + ": the scene would need " + std::to_string(planned_triangles) +
+                                  " triangles and " + std::to_string(planned_instances) + " instances";
+        if (planned_instances > kMaxInstances)
+            throw Error(needs + ", more than the " + std::to_string(kMaxInstances) +
+                        " instances a scene may have (a ray may have to visit every instance whose box it "
+                        "crosses: coincident instances cost time without bound)");
+        const MemoryLimit memory = memory_limit();
         // In double: the counts may be far beyond what 64-bit byte counts hold.
         const double bytes = static_cast<double>(planned_triangles) * kBytesPerTriangle +
                              static_cast<double>(planned_instances) * kBytesPerInstance;
-        if (bytes > static_cast<double>(memory))
-            throw Error(source + ": " + what + ": the scene would need " + std::to_string(planned_triangles) +
-                        " triangles and " + std::to_string(planned_instances) + " instances, about " +
-                        whole_number(std::floor(bytes / 1073741824.0)) + " GiB at " +
-                        std::to_string(kBytesPerTriangle) + " and " + std::to_string(kBytesPerInstance) +
-                        " bytes each, more than this machine's " + std::to_string(memory >> 30) + " GiB");
+        if (bytes > memory.bytes)
+            throw Error(needs + ", about " + gib(bytes) + " at " + std::to_string(kBytesPerTriangle) + " and " +
+                        std::to_string(kBytesPerInstance) + " bytes each, more than " + memory.what);
     }
 
     // Imports every drawing: copies first, in node order, then each instanced mesh once
@@ -354,7 +350,7 @@ struct Importer {
             stack.pop_back();
             const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(item.node)];
             glm::dmat4 world = item.parent * local_transform(node);
-            std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " '" + node.name + "'");
+            std::string what = "node " + std::to_string(item.node) + (node.name.empty() ? "" : " " + quote(node.name));
             if (node.mesh >= 0) {
                 if (node.mesh >= static_cast<int>(model.meshes.size()))
                     throw Error(source + ": " + what + ": mesh " + std::to_string(node.mesh) + " does not exist");

@@ -108,7 +108,7 @@ SceneMaterial import_material(const tinygltf::Material& m, TextureImporter& text
     else if (m.alphaMode == "BLEND")
         out.alpha_mode = AlphaMode::Blend;
     else if (m.alphaMode != "OPAQUE")
-        throw Error(source + ": " + where + ": alphaMode must be OPAQUE, MASK or BLEND, not \"" + m.alphaMode + "\"");
+        throw Error(source + ": " + where + ": alphaMode must be OPAQUE, MASK or BLEND, not " + quote(m.alphaMode));
     out.alpha_cutoff = static_cast<float>(m.alphaCutoff);
     out.metallic = static_cast<float>(pbr.metallicFactor);
     out.roughness = static_cast<float>(pbr.roughnessFactor);

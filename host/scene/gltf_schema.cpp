@@ -26,6 +26,7 @@ public:
         asset_version();
         extension_objects(root_, "");
         lights_ = count_extension_array("KHR_lights_punctual", "lights");
+        variants_ = count_extension_array("KHR_materials_variants", "variants");
         index(root_, "scene", "scene", "scenes");
         each(root_, "scenes", "scenes",
              [&](const Json& s, const std::string& at) { index_array(s, "nodes", at + ".nodes", "nodes"); });
@@ -75,7 +76,7 @@ private:
             fail("asset.version", "is " + version->dump() + ", not a string \"2.x\": only glTF 2.0 files are read");
         const std::string& v = version->get_ref<const std::string&>();
         if (v.rfind("2.", 0) != 0)
-            fail("asset.version", "is \"" + v + "\": only glTF 2.0 files are read");
+            fail("asset.version", "is " + quote(v) + ": only glTF 2.0 files are read");
     }
 
     [[noreturn]] void fail(const std::string& at, const std::string& problem) const
@@ -270,6 +271,33 @@ private:
                 fail(light_at, "has no \"light\"");
             index_value((*light)["light"], light_at + ".light", lights_, "KHR_lights_punctual lights");
         }
+        if (ext != nullptr && ext->contains("EXT_mesh_gpu_instancing")) {
+            const std::string at_ext = at + ".extensions.EXT_mesh_gpu_instancing";
+            const Json* instancing = member_object(*ext, "EXT_mesh_gpu_instancing", at_ext);
+            if (const Json* attributes = member_object(*instancing, "attributes", at_ext + ".attributes"))
+                index_members(*attributes, at_ext + ".attributes", "accessors");
+        }
+    }
+
+    // KHR_materials_variants mappings: each names a material and variants of the file's.
+    void primitive_variants(const Json& p, const std::string& at) const
+    {
+        const Json* ext = member_object(p, "extensions", at + ".extensions");
+        if (ext == nullptr || !ext->contains("KHR_materials_variants"))
+            return;
+        const std::string v_at = at + ".extensions.KHR_materials_variants";
+        each(*member_object(*ext, "KHR_materials_variants", v_at), "mappings", v_at + ".mappings",
+             [&](const Json& m, const std::string& m_at) {
+                 index(m, "material", m_at + ".material", "materials");
+                 if (!m.contains("variants"))
+                     return;
+                 const Json& list = m["variants"];
+                 if (!list.is_array())
+                     fail(m_at + ".variants", "is not an array");
+                 for (std::size_t i = 0; i < list.size(); ++i)
+                     index_value(list[i], m_at + ".variants[" + std::to_string(i) + "]", variants_,
+                                 "KHR_materials_variants variants");
+             });
     }
 
     void mesh(const Json& m, const std::string& at) const
@@ -283,6 +311,7 @@ private:
             index(p, "indices", p_at + ".indices", "accessors");
             index(p, "material", p_at + ".material", "materials");
             integer(p, "mode", p_at);
+            primitive_variants(p, p_at);
             each(p, "targets", p_at + ".targets",
                  [&](const Json& t, const std::string& t_at) { index_members(t, t_at, "accessors"); });
         });
@@ -391,7 +420,7 @@ private:
 
     const Json& root_;
     const std::string& what_;
-    std::size_t lights_ = 0;
+    std::size_t lights_ = 0, variants_ = 0;
 };
 
 } // namespace

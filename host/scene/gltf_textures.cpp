@@ -7,6 +7,7 @@
 #include <tiny_gltf.h>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 #include "scene/gltf_images.h"
 
 namespace pathcl {
@@ -25,7 +26,7 @@ double number(const tinygltf::Value& obj, const char* key, double fallback, cons
         return fallback;
     const tinygltf::Value& v = obj.Get(key);
     if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
-        throw Error(where + ": \"" + key + "\" must be a finite number");
+        throw Error(where + ": " + quote(key) + " must be a finite number");
     return v.GetNumberAsDouble();
 }
 
@@ -42,7 +43,7 @@ void pair(const tinygltf::Value& obj, const char* key, double fallback, double& 
         b = v.Get(1).GetNumberAsDouble();
     }
     if (!ok || !std::isfinite(a) || !std::isfinite(b))
-        throw Error(where + ": \"" + key + "\" must be an array of two finite numbers");
+        throw Error(where + ": " + quote(key) + " must be an array of two finite numbers");
 }
 
 TextureWrap wrap_mode(int mode, const std::string& where)
@@ -144,10 +145,19 @@ int TextureImporter::image(int gltf_image, const std::string& where)
     const tinygltf::Image& im = model_.images[static_cast<std::size_t>(gltf_image)];
     std::string what = "image " + std::to_string(gltf_image);
     if (!im.uri.empty())
-        what += " '" + im.uri + "'";
+        what += " " + quote(im.uri);
     else if (!im.name.empty())
         what += " (" + im.name + ")";
     SceneImage decoded;
+    // The decoder's copy and the RGBA image are held together while it decodes: both
+    // count against the images' budget and against the memory the process may take.
+    auto admit = [&](std::size_t peak) {
+        if (peak > kMaxTotalImageBytes - image_bytes_)
+            throw Error(what + ": decoding it takes " + gib(static_cast<double>(peak)) + " more than the " +
+                        std::to_string(kMaxTotalImageBytes >> 20) + " MiB the decoded images may have in all (" +
+                        std::to_string(image_bytes_ >> 20) + " MiB taken)");
+        check_memory_for(static_cast<double>(peak), what + ": decoding it");
+    };
     try {
         if (im.bufferView >= 0) {
             // tinygltf hands bufferView bytes over without checking the view's bounds.
@@ -159,7 +169,7 @@ int TextureImporter::image(int gltf_image, const std::string& where)
             const std::vector<unsigned char>& data = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
             if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
                 throw Error(what + ": its bufferView lies outside its buffer");
-            decoded = decode_image(data.data() + view.byteOffset, view.byteLength, what);
+            decoded = decode_image(data.data() + view.byteOffset, view.byteLength, what, admit);
         } else {
             if (!im.uri.empty())
                 check_image_uri(im.uri, what);
@@ -168,10 +178,11 @@ int TextureImporter::image(int gltf_image, const std::string& where)
                     if (r.rfind(im.uri + ":", 0) == 0)
                         throw Error(what + r.substr(im.uri.size()));
                 std::string file = (std::filesystem::path(base_dir_.empty() ? "." : base_dir_) / im.uri).string();
-                throw Error(what + (im.uri.empty() ? ": has no image data" : ": cannot read the file '" + file + "'"));
+                throw Error(what + (im.uri.empty() ? ": has no image data" : ": cannot read the file " + quote(file)));
             }
             // bits 0: the encoded bytes keep_encoded_image kept; else pixels a program set.
-            decoded = im.bits == 0 ? decode_image(im.image.data(), im.image.size(), what) : image_from_pixels(im, what);
+            decoded = im.bits == 0 ? decode_image(im.image.data(), im.image.size(), what, admit)
+                                   : image_from_pixels(im, what, admit);
         }
         std::size_t bytes = decoded.rgba8.size() + 2 * decoded.rgba16.size();
         if (bytes > kMaxTotalImageBytes - image_bytes_)

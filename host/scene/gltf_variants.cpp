@@ -47,8 +47,8 @@ int variant_index(const std::vector<std::string>& names, const std::string& want
             return static_cast<int>(i);
     std::string there;
     for (const std::string& n : names)
-        there += (there.empty() ? "" : ", ") + ("\"" + n + "\"");
-    throw ParameterError("variant", "there is no material variant \"" + wanted + "\": " + source +
+        there += (there.empty() ? "" : ", ") + (quote(n));
+    throw ParameterError("variant", "there is no material variant " + quote(wanted) + ": " + source +
                                         (names.empty() ? " has none" : " has " + there));
 }
 

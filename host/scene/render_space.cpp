@@ -3,13 +3,17 @@
 // and the camera.
 #include "scene/render_space.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "common/error.h"
 
 namespace pathcl {
 namespace {
@@ -134,6 +138,33 @@ void finish_instances(const PendingGeometry& geometry, const glm::dvec3& origin,
             scene.instances.push_back(SceneInstance{renumbered[instance.mesh], to_render * instance.world});
 }
 
+// Render-space positions are floats, and so is all arithmetic on them: the BVH's box
+// centres, extents and areas, a ray's distances. Within this distance of the origin the
+// builder's box areas (the square of an extent, twice this) stay finite; a scene beyond
+// it (a transform of 1e38) would make infinite boxes and NaN bin indices.
+constexpr double kMaxRenderSpaceDistance = 1e18;
+
+void check_render_space_bounds(const Scene& scene)
+{
+    glm::vec3 lo, hi;
+    scene_bounds(scene, lo, hi);
+    double reach = 0.0;
+    if (lo.x <= hi.x)
+        for (int a = 0; a < 3; ++a)
+            reach = std::max({reach, std::fabs(static_cast<double>(lo[a])), std::fabs(static_cast<double>(hi[a]))});
+    for (const SceneLight& l : scene.lights)
+        for (int a = 0; a < 3 && l.type != SceneLight::Type::Directional; ++a)
+            reach = std::max(reach, std::fabs(l.position[a]));
+    if (!(reach <= kMaxRenderSpaceDistance)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the scene reaches %.3g from its centre (its camera, or the middle of its geometry), beyond "
+                      "the %.0e a float render can hold: a transform or a position is too large",
+                      reach, kMaxRenderSpaceDistance);
+        throw Error(text);
+    }
+}
+
 } // namespace
 
 void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& scene)
@@ -144,6 +175,7 @@ void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& sc
     for (SceneLight& l : scene.lights)
         l.position = world_to_render(origin, l.position);
     scene.render_origin = origin;
+    check_render_space_bounds(scene);
     if (have_camera)
         scene.camera.position = world_to_render(origin, scene.camera.position);
     else

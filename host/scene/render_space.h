@@ -14,6 +14,8 @@ namespace pathcl {
 // the file's when `have_camera`, else replaced by one framing the scene. Zero-area
 // triangles are dropped and unusable normals replaced, each counted on the scene. Rounding
 // after the subtraction keeps a scene 1e5 from the world origin at full float precision.
+// Throws pathcl::Error when the scene reaches further from the render-space origin than
+// float arithmetic on it can go (1e18).
 void move_to_render_space(PendingGeometry& geometry, bool have_camera, Scene& scene);
 
 // A world-space point in the render space whose origin is `render_origin`

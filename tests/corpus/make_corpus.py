@@ -13,7 +13,8 @@ kernel variant: area lights only), with TEXCOORD_0 so that any case can add a te
 
 Manifest columns (tab-separated; '-' is empty):
   name     the case
-  file     the scene, relative to files/ (the runner renders a copy of files/)
+  file     the scene, relative to files/ (the runner renders a copy of files/); '-': args
+           is the whole command line after `pathcl` (merge, converge), run as it is
   args     extra render arguments; {CWD} is the run's working directory, {FILES} the
            copied files/ directory, {SCENE} the scene's path, {RO} a directory nobody can
            write into. Without -o the runner adds -o out.png (in {CWD}); without --width,
@@ -27,6 +28,11 @@ Manifest columns (tab-separated; '-' is empty):
              mkdir:REL           a directory {CWD}/REL
              existing-output     {CWD}/out.png exists; it must stay byte-identical
              chain:N:REL         files/REL: an N-deep node chain ending at the triangle
+             sparse:REL:SIZE     files/REL: a sparse file of SIZE bytes (truncate -s)
+             partial:REL:FIRST:COUNT  files/REL: samples FIRST..FIRST+COUNT-1 of the 4x4,
+                                 32-spp render of valid.gltf in batches of 16 (made by pathcl)
+             replace:REL|OLD|NEW files/REL with bytes OLD replaced by NEW, once, of the same
+                                 length (Python escapes such as \\x00 allowed)
   names    what the error line must contain ('-': the scene file's name; A|B: A or B)
   what     a short description
 """
@@ -1039,6 +1045,163 @@ def cli_cases():
     CLI_CASES = len(CASES) - before
 
 
+def fnv1a64(data):
+    h = 0xcbf29ce484222325
+    for b in data:
+        h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return h
+
+
+def checkpoint(key, pixels=16, version=2, cut=None):
+    """A checkpoint as render/checkpoint.cpp writes it (version 2), of a render of
+    `pixels` pixels stopped before its first pass, with its checksum."""
+    def array(item_size, count, fill=b""):
+        return struct.pack("<Q", count) + (fill or b"\0" * item_size * count)
+    data = b"PATHCLCP" + struct.pack("<I", version) + array(1, len(key), key)
+    data += struct.pack("<IIId", 0, 0, 0, 0.0)
+    for _ in range(4):
+        data += array(24, 3 * pixels)  # the exact sums (ExactSum, 24 bytes)
+    data += array(8, pixels) + array(4, pixels)  # samples, pixel_batches
+    data += struct.pack("<QIQ", 0, 0, 1)  # bad samples, batches, one device
+    data += array(64, pixels) + array(4, pixels) + array(4, 0)  # its film, bad counts; no mask
+    data += struct.pack("<Q", fnv1a64(data))
+    return data if cut is None else data[:cut]
+
+
+def args_file(rel, args):
+    """An argument list for tools/fuzz.sh cli: the arguments separated by NUL bytes."""
+    write(rel, b"\0".join(a.encode("utf-8") for a in args))
+
+
+def service_cases():
+    """What a render service meets when it runs pathcl on files it did not write:
+    checkpoints (--resume), partial renders (merge), special files and other names for
+    one file as outputs, and small inputs that ask for unbounded work."""
+    key = b"scene 0; size 16x16; seed 0; sampler sobol"
+    write("checkpoint/other-render.bin", checkpoint(key))
+    case("checkpoint-other-render", "valid.gltf", "error", "--resume of a well-formed checkpoint of another render",
+         args="--resume {FILES}/checkpoint/other-render.bin", names="other-render.bin")
+    write("checkpoint/line-break-key.bin", checkpoint(b"\n" * 10000))
+    case("checkpoint-line-break-key", "valid.gltf", "error",
+         "--resume of a checkpoint whose key is 10,000 line breaks (the error stays one short line)",
+         args="--resume {FILES}/checkpoint/line-break-key.bin", names="line-break-key.bin")
+    write("checkpoint/truncated.bin", checkpoint(key, cut=2000))
+    case("checkpoint-truncated", "valid.gltf", "error", "--resume of a checkpoint cut short",
+         args="--resume {FILES}/checkpoint/truncated.bin", names="truncated.bin")
+    write("checkpoint/version-9.bin", checkpoint(key, version=9))
+    case("checkpoint-version-9", "valid.gltf", "error", "--resume of a checkpoint of format version 9",
+         args="--resume {FILES}/checkpoint/version-9.bin", names="version-9.bin")
+    write("checkpoint/not-a-checkpoint.bin", "not a checkpoint\n")
+    case("checkpoint-not-one", "valid.gltf", "error", "--resume of a text file",
+         args="--resume {FILES}/checkpoint/not-a-checkpoint.bin", names="not-a-checkpoint.bin")
+    case("checkpoint-sparse-3g", "valid.gltf", "error",
+         "--resume of a 3 GB sparse file for a 16x16 render (refused from its size, unread)",
+         args="--resume {FILES}/checkpoint/huge.bin", setup="sparse:checkpoint/huge.bin:3G", names="huge.bin")
+    case("checkpoint-fifo", "valid.gltf", "error", "--resume naming a FIFO",
+         args="--resume {FILES}/checkpoint/fifo.bin", setup="mkfifo:checkpoint/fifo.bin", names="fifo.bin")
+    case("checkpoint-dev-zero", "valid.gltf", "error", "--resume /dev/zero",
+         args="--resume /dev/zero", names="/dev/zero")
+
+    # Partial renders, made by the runner (partial:REL:FIRST:COUNT renders samples
+    # FIRST..FIRST+COUNT-1 of the 4x4, 32-spp valid scene in batches of 16), some edited
+    # in place (replace:REL|OLD|NEW, bytes of the same length in the EXR's header).
+    two = "partial:partial/a.exr:0:16,partial:partial/b.exr:16:16"
+    merge = "merge {FILES}/partial/a.exr {FILES}/partial/b.exr -o {CWD}/m.exr"
+    case("merge-valid", "-", "renders", "merge of the two halves of a render", args=merge, setup=two)
+    case("merge-overlap", "-", "error", "merge of a partial render with itself (its samples would count twice)",
+         args="merge {FILES}/partial/a.exr {FILES}/partial/a.exr -o {CWD}/m.exr", setup=two, names="a.exr")
+    case("merge-range-not-whole-batches", "-", "error", "pathcl:sample_ranges 16:16 edited to 16:08",
+         args=merge, setup=two + ",replace:partial/b.exr|16:16|16:08", names="b.exr")
+    case("merge-total-against-key", "-", "error",
+         "the render key's spp edited (32 to 64): pathcl:spp_total no longer agrees",
+         args=merge, setup=two + ",replace:partial/b.exr|; spp 32;|; spp 64;", names="b.exr")
+    case("merge-batch-size-zero", "-", "error", "the render key's batch size edited to 00",
+         args=merge, setup=two + ",replace:partial/b.exr|batch spp 16|batch spp 00", names="b.exr")
+    case("merge-film-batches-edited", "-", "error", "pathcl:film_batches edited from 1 to 7",
+         args=merge, setup=two + ",replace:partial/b.exr|film_batches\\x00string\\x00\\x01\\x00\\x00\\x001|"
+                                 "film_batches\\x00string\\x00\\x01\\x00\\x00\\x007", names="b.exr")
+    case("merge-not-partial", "-", "error", "merge of an EXR that is no partial render (an environment map)",
+         args="merge {FILES}/env/valid.exr -o {CWD}/m.exr", names="valid.exr")
+    case("merge-output-is-input", "-", "error", "merge whose output is one of its inputs, spelled otherwise",
+         args="merge {FILES}/partial/a.exr {FILES}/partial/b.exr -o {FILES}/partial/../partial/a.exr", setup=two,
+         names="a.exr")
+    case("merge-output-fifo", "-", "error", "merge onto a FIFO (it must stay a FIFO)",
+         args="merge {FILES}/partial/a.exr {FILES}/partial/b.exr -o {FILES}/partial/out-fifo.exr",
+         setup=two + ",mkfifo:partial/out-fifo.exr", names="out-fifo.exr")
+    case("merge-input-fifo", "-", "error", "merge of a FIFO",
+         args="merge {FILES}/partial/in-fifo.exr -o {CWD}/m.exr", setup="mkfifo:partial/in-fifo.exr",
+         names="in-fifo.exr")
+
+    # Outputs: special files, one file under two names, where nothing can be written.
+    case("output-fifo", "valid.gltf", "error", "-o naming a FIFO (it must stay a FIFO)",
+         args="-o {FILES}/out-fifo.exr", setup="mkfifo:out-fifo.exr", names="out-fifo.exr")
+    case("checkpoint-output-fifo", "valid.gltf", "error", "--checkpoint naming a FIFO",
+         args="--checkpoint {FILES}/cp-fifo.bin", setup="mkfifo:cp-fifo.bin", names="cp-fifo.bin")
+    case("ray-log-fifo", "valid.gltf", "error", "--ray-log naming a FIFO",
+         args="--ray-log {FILES}/rays-fifo.ply", setup="mkfifo:rays-fifo.ply", names="rays-fifo.ply")
+    case("checkpoint-is-the-output", "valid.gltf", "error", "--checkpoint ./out.png beside -o {CWD}/out.png",
+         args="--checkpoint ./out.png", names="out.png")
+    case("ray-log-is-the-checkpoint", "valid.gltf", "error", "--ray-log r.ply and --checkpoint ./r.ply",
+         args="--ray-log {CWD}/r.ply --checkpoint ./r.ply", names="r.ply")
+    case("resume-is-the-output", "valid.gltf", "error", "-o cp.exr --resume ./cp.exr (the checkpoint overwritten)",
+         args="-o {CWD}/cp.exr --resume ./cp.exr", names="cp.exr")
+    case("checkpoint-is-the-scene", "valid.gltf", "error", "--checkpoint naming the scene file",
+         args="--checkpoint {SCENE}", names="valid.gltf")
+    case("checkpoint-unwritable", "valid.gltf", "error",
+         "--checkpoint where no file can be written (found before the render, not at its first checkpoint)",
+         args="--checkpoint {RO}/cp.bin", names="cp.bin")
+
+    # Small inputs, unbounded work.
+    m = base()
+    m["extensionsUsed"].append("EXT_mesh_gpu_instancing")
+    m["accessors"].append({"componentType": 5126, "count": 10000000, "type": "VEC3"})
+    m["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 3}}}
+    model_case("ext/instancing-1e7-coincident.gltf", "bomb-instances-1e7", "error",
+               "10^7 coincident instances from a TRANSLATION accessor without bufferView", m)
+    m = base()
+    m["materials"][0]["emissiveFactor"] = [0.0, 0.0, 0.0]  # drawn twice, an instanced mesh (emitters are copied)
+    m["nodes"][0]["translation"] = [2e38, 0.0, 0.0]
+    m["nodes"].append({"name": "again", "mesh": 0})
+    m["scenes"][0]["nodes"].append(2)
+    model_case("node/instance-translated-2e38.gltf", "node-instance-beyond-float", "error",
+               "a mesh drawn by two nodes, one translated by 2e38 (render-space bounds overflow float)", m)
+    m = base()
+    m["extensionsUsed"].append("KHR_materials_variants")
+    m["extensions"] = {"KHR_materials_variants": {"variants": [{"name": "a"}]}}
+    m["meshes"][0]["primitives"][0]["extensions"] = {
+        "KHR_materials_variants": {"mappings": [{"material": 0, "variants": [424242]}]}}
+    model_case("ext/variant-index-2p32.gltf", "ext-variant-index-2p32", "error",
+               "a KHR_materials_variants mapping's variant index 2^32 (0 after a 32-bit wrap)", m,
+               raw=("424242", "4294967296"))
+    many = lambda knob: "--vary " + knob + "=" + ",".join(str(i) for i in range(2000))
+    case("bomb-converge-plan", "-", "error", "converge of 2000 x 2000 settings (4,000,000 kernel builds)",
+         args="converge {FILES}/valid.gltf -o {CWD}/study " + many("max-bounces") + " " + many("stratified-bounces"),
+         names="4000000 settings")
+    case("bomb-film-32768", "valid.gltf", "error", "--width 32768 --height 32768 (a 432 GiB film)",
+         args="--width 32768 --height 32768", names="the film needs")
+    case("converge-ladder-falling", "-", "error", "converge --spp-ladder 4,2,1",
+         args="converge {FILES}/valid.gltf -o {CWD}/study --vary strategy=mis --spp-ladder 4,2,1",
+         names="--spp-ladder")
+    case("converge-ladder-empty-step", "-", "error", "converge --spp-ladder 1,,2",
+         args="converge {FILES}/valid.gltf -o {CWD}/study --vary strategy=mis --spp-ladder 1,,2",
+         names="--spp-ladder")
+    case("converge-targets-nan", "-", "error", "converge --targets nan",
+         args="converge {FILES}/valid.gltf -o {CWD}/study --vary strategy=mis --targets nan", names="--targets")
+
+    # Argument lists for tools/fuzz.sh cli (not cases: seeds of the fuzzer).
+    args_file("cli-args/render.args", ["render", "scene.gltf", "-o", "out.exr", "--width", "8", "--height", "8",
+                                       "--spp", "4", "--sampler", "halton", "--background", "1,1,1"])
+    args_file("cli-args/render-budget.args", ["render", "scene.gltf", "-o", "out.png", "--time", "2", "--max-spp",
+                                              "64", "--batch-spp", "16", "--checkpoint", "cp.bin"])
+    args_file("cli-args/render-range.args", ["render", "scene.gltf", "-o", "r.exr", "--spp", "64", "--batch-spp",
+                                             "16", "--sample-range", "16:32", "--seed", "3"])
+    args_file("cli-args/converge.args", ["converge", "scene.gltf", "-o", "study", "--vary", "sampler=sobol,halton",
+                                         "--spp-ladder", "1,2,4", "--targets", "0.01,0.001"])
+    args_file("cli-args/merge.args", ["merge", "a.exr", "b.exr", "-o", "m.exr"])
+    args_file("cli-args/samples.args", ["samples", "--sampler", "sobol", "--spp", "64", "-o", "points.png"])
+    args_file("cli-args/info.args", ["info", "scene.gltf", "--variant", "a"])
+
+
 def main():
     if os.path.isdir(FILES):
         shutil.rmtree(FILES)
@@ -1056,6 +1219,7 @@ def main():
     image_cases()
     environment_cases()
     cli_cases()
+    service_cases()
     largest = max((os.path.getsize(os.path.join(d, f)), os.path.join(d, f))
                   for d, _, fs in os.walk(FILES) for f in fs)
     assert largest[0] < 1 << 20, largest
