@@ -11,6 +11,8 @@
 
 #include "common/error.h"
 #include "render/light_tree.h"
+#include "scene/gltf_loader.h"
+#include "support/gltf_builder.h"
 
 namespace pathcl {
 namespace {
@@ -226,6 +228,41 @@ TEST(LightTree, BoundsThatAreNotFiniteAreRefused)
     std::vector<LightBounds> lights = random_lights(4, rng);
     lights[2].hi.y = INFINITY;
     EXPECT_THROW(build_light_tree(lights), Error);
+}
+
+// A floor of 10 x 10 with `lamps` emissive quads spaced `spacing` apart along x.
+Scene lamps_on_a_floor(int lamps, float spacing)
+{
+    test::GltfBuilder b;
+    const int grey = b.add_material(glm::vec3(0.5f));
+    b.add_root(b.add_node(b.add_quad_mesh({{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}}, grey)));
+    const int lamp = b.add_material(glm::vec3(0.0f), glm::vec3(5.0f));
+    for (int i = 0; i < lamps; ++i) {
+        const float x = -4.0f + spacing * static_cast<float>(i);
+        b.add_root(b.add_node(b.add_quad_mesh({{x, 2, 0}, {x + 0.1f, 2, 0}, {x + 0.1f, 2, 0.1f}, {x, 2, 0.1f}}, lamp)));
+    }
+    b.add_camera_node(b.add_perspective_camera(1.0), {0.0, 1.0, 6.0});
+    return import_gltf(b.model, "lamps-on-a-floor");
+}
+
+TEST(LightTree, AutoTakesTheTreeWhereLightsAreManyAndSpread)
+{
+    RenderOptions o; // light_sampler Auto by default
+    EXPECT_EQ(o.light_sampler, LightSampler::Auto);
+    EXPECT_EQ(resolve_light_sampler(load_gltf(std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box.gltf"), o),
+              LightSampler::Power)
+        << "one area light";
+    EXPECT_EQ(resolve_light_sampler(lamps_on_a_floor(3, 3.5f), o), LightSampler::Tree) << "three lamps 7 apart";
+    EXPECT_EQ(resolve_light_sampler(lamps_on_a_floor(3, 0.2f), o), LightSampler::Power) << "three lamps together";
+    EXPECT_EQ(resolve_light_sampler(lamps_on_a_floor(1, 1.0f), o), LightSampler::Power) << "one lamp (two triangles)";
+    RenderOptions wavefront = o;
+    wavefront.integrator = Integrator::Wavefront;
+    EXPECT_EQ(resolve_light_sampler(lamps_on_a_floor(3, 3.5f), wavefront), LightSampler::Power) << "no tree there";
+    for (LightSampler asked : {LightSampler::Power, LightSampler::Tree, LightSampler::Uniform}) {
+        RenderOptions explicit_choice = o;
+        explicit_choice.light_sampler = asked;
+        EXPECT_EQ(resolve_light_sampler(lamps_on_a_floor(3, 0.2f), explicit_choice), asked);
+    }
 }
 
 } // namespace

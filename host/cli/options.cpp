@@ -90,14 +90,17 @@ void add_render_options(CLI::App* command, RenderOptions& options, std::string& 
     command->add_option("--strategy", options.strategy, "light sampling: bsdf, nee, one-sample or mis")
         ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
         ->default_str("mis");
-    static const std::map<std::string, LightSampler> light_samplers = {
-        {"power", LightSampler::Power}, {"tree", LightSampler::Tree}, {"uniform", LightSampler::Uniform}};
+    static const std::map<std::string, LightSampler> light_samplers = {{"auto", LightSampler::Auto},
+                                                                       {"power", LightSampler::Power},
+                                                                       {"tree", LightSampler::Tree},
+                                                                       {"uniform", LightSampler::Uniform}};
     command
         ->add_option("--light-sampler", options.light_sampler,
                      "how next event estimation picks a light: power (by power alone), tree (the light tree: power, "
-                     "distance and orientation at the shading point; for scenes of many lights) or uniform")
+                     "distance and orientation at the shading point), uniform, or auto (the tree where three or "
+                     "more lights are spread over a quarter of the scene, else power)")
         ->transform(CLI::CheckedTransformer(light_samplers, CLI::ignore_case))
-        ->default_str("power");
+        ->default_str("auto");
     add_sampler_option(command, options.sampler, sampler_name(options.sampler));
     command
         ->add_option("--stratified-bounces", options.stratified_bounces,

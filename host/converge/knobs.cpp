@@ -63,12 +63,12 @@ const std::map<std::string, Apply>& appliers()
         {"adaptive", [](RenderOptions& o, const std::string& v) { o.adaptive = parse_switch("adaptive", v); }},
         {"light-sampler",
          [](RenderOptions& o, const std::string& v) {
-             for (LightSampler s : {LightSampler::Power, LightSampler::Tree, LightSampler::Uniform})
+             for (LightSampler s : {LightSampler::Power, LightSampler::Tree, LightSampler::Uniform, LightSampler::Auto})
                  if (v == light_sampler_name(s)) {
                      o.light_sampler = s;
                      return;
                  }
-             throw Error("--vary light-sampler: unknown light sampler '" + v + "' (power, tree, uniform)");
+             throw Error("--vary light-sampler: unknown light sampler '" + v + "' (power, tree, uniform, auto)");
          }},
         {"integrator",
          [](RenderOptions& o, const std::string& v) {

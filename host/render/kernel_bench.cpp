@@ -1,5 +1,7 @@
 #include "render/kernel_bench.h"
 
+#include "render/light_tree.h"
+
 #include <algorithm>
 #include <chrono>
 #include <functional>
@@ -42,7 +44,7 @@ std::vector<KernelFigure> bench_kernels(const Scene& scene, const RenderOptions&
     std::vector<double> bvh;
     CompiledScene compiled;
     for (int i = 0; i < runs; ++i) {
-        compiled = compile_scene(scene, kernel_features(scene, opt), opt.light_sampler);
+        compiled = compile_scene(scene, kernel_features(scene, opt), resolve_light_sampler(scene, opt));
         bvh.push_back(static_cast<double>(scene.triangles.size()) / 1e6 / std::max(compiled.bvh_build_seconds, 1e-9));
     }
     out.push_back(figure("BVH build", "Mtris/s", bvh));

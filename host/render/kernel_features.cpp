@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/light_tree.h"
 #include "render/wavefront.h"
 #include "scene/alpha_cutouts.h"
 
@@ -50,7 +51,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     if (options.specialization == Specialization::All)
         f.mask |= FEATURE_ALL & ~(FEATURE_SINGLE_SCATTERING | FEATURE_LIGHT_TREE); // model options, not scene features
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
-    set(FEATURE_LIGHT_TREE, options.light_sampler == LightSampler::Tree);
+    set(FEATURE_LIGHT_TREE, resolve_light_sampler(scene, options) == LightSampler::Tree);
     return f;
 }
 

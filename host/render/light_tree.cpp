@@ -571,4 +571,35 @@ LightTree build_light_tree(const std::vector<LightBounds>& lights)
     return tree;
 }
 
+LightSampler resolve_light_sampler(const Scene& scene, const RenderOptions& options)
+{
+    if (options.light_sampler != LightSampler::Auto)
+        return options.light_sampler;
+    if (options.integrator == Integrator::Wavefront)
+        return LightSampler::Power;
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    std::size_t placed = 0;
+    auto add = [&](const glm::dvec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+        ++placed;
+    };
+    for (const SceneTriangle& t : scene.triangles)
+        if (scene.materials[static_cast<std::size_t>(t.material)].emits())
+            for (const glm::vec3& v : t.v)
+                add(glm::dvec3(v));
+    std::size_t emitters = placed / 3;
+    placed = emitters;
+    for (const SceneLight& l : scene.lights)
+        if (l.type != SceneLight::Type::Directional)
+            add(l.position);
+    if (placed < 3)
+        return LightSampler::Power;
+    glm::vec3 scene_lo, scene_hi;
+    scene_bounds(scene, scene_lo, scene_hi);
+    const double scene_diagonal = glm::length(glm::dvec3(scene_hi) - glm::dvec3(scene_lo));
+    const double light_diagonal = glm::length(hi - lo);
+    return light_diagonal >= 0.25 * scene_diagonal ? LightSampler::Tree : LightSampler::Power;
+}
+
 } // namespace pathcl

@@ -47,12 +47,15 @@ enum class LightSampler : std::uint32_t {
     Power,   // in proportion to each light's power, wherever the shading point is (an alias table)
     Tree,    // by the light tree: power, distance and orientation at the shading point
     Uniform, // every light alike (Mitsuba 3's default; for comparisons)
+    Auto,    // tree or power, by the scene's lights (render/light_tree.h, resolve_light_sampler)
 };
 
-// "power", "tree" or "uniform".
+// "power", "tree", "uniform" or "auto".
 inline const char* light_sampler_name(LightSampler s)
 {
     switch (s) {
+    case LightSampler::Auto:
+        return "auto";
     case LightSampler::Power:
         return "power";
     case LightSampler::Tree:
@@ -78,7 +81,7 @@ struct RenderOptions {
     std::uint32_t max_bounces = 8; // scattering events: 0 = emission only, 1 = direct light
     std::uint32_t seed = 0;
     Strategy strategy = Strategy::Mis;
-    LightSampler light_sampler = LightSampler::Power;
+    LightSampler light_sampler = LightSampler::Auto;
     // Owen-scrambled Sobol': the most efficient sampler on the committed scenes
     // (docs/accuracy.md, "On the committed scenes"). spp is rounded as sampler_spp() says.
     SamplerType sampler = SamplerType::Sobol;

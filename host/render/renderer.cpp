@@ -15,6 +15,7 @@
 #include "render/film.h"
 #include "render/film_channels.h"
 #include "render/kernel_features.h"
+#include "render/light_tree.h"
 #include "render/partial_renders.h"
 #include "render/render_metadata.h"
 #include "render/wavefront.h"
@@ -121,10 +122,11 @@ struct Renderer::Impl {
 
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
+        options.light_sampler = resolve_light_sampler(scene, opt); // Auto decided once
         check_options(opt);
         default_plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
-        compiled = compile_scene(scene, kernel_features(scene, opt), opt.light_sampler);
+        compiled = compile_scene(scene, kernel_features(scene, options), options.light_sampler);
         compiled.arrays.camera = {compile_camera(scene.camera, opt.width, opt.height)};
         setup.triangles = compiled.arrays.triangles.size();
         setup.drawn_triangles = scene.drawn_triangles();
