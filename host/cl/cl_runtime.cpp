@@ -9,6 +9,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "cl/device_workarounds.h"
 #include "cl/program_cache.h"
 #include "common/error.h"
 
@@ -169,7 +170,8 @@ std::string base_build_options(const DeviceInfo& device, const std::string& opti
     // costs NVIDIA's H200 a quarter to a third of its samples per second (README, On a GPU);
     // PoCL on CPUs divides correctly rounded either way. --fast-math gives it up.
     bool exact = device.correctly_rounded_divide_sqrt && options.find(kUnsafeMathOption) == std::string::npos;
-    return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "");
+    return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "") +
+           workaround_options(device);
 }
 
 ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& program_source,
