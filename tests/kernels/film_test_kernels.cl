@@ -1,6 +1,6 @@
 /* Accumulates `count` samples of 0.1 + noise into film pixel 0 from one work-item,
- * through the real film code (kernels/film/film.cl), and the same with a naive float sum
- * for contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
+ * through the real film code (kernels/film/film.cl), and gives the samples for the host's
+ * sums. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
 #include "film/film.cl"
 #include "util/hash.cl"
 
@@ -22,14 +22,6 @@ PATHCL_KERNEL void test_film_samples(__global float* out)
 {
     uint i = get_global_id(0);
     out[i] = film_test_sample(i);
-}
-
-PATHCL_KERNEL void test_naive_accumulate(__global float* out, uint count)
-{
-    float sum = 0.0f;
-    for (uint i = 0; i < count; ++i)
-        sum += film_test_sample(i);
-    out[0] = sum;
 }
 
 PATHCL_KERNEL void test_film_rejects_non_finite(__global FilmPixel* film, __global uint* bad)
