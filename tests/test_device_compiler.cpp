@@ -2,7 +2,11 @@
 // itself, and the workarounds where a compiler gets it wrong (host/cl/device_workarounds.h,
 // docs/devices.md): float3 arguments reach a function that is not inlined (Intel's CPU
 // runtime 2026.2 gives them to the wrong work-items unless the kernels carry the width
-// hint).
+// hint), the slab test's min and max are defined for infinities and NaN, and FP_CONTRACT
+// OFF keeps a product rounded (the triangle test's watertightness needs it).
+#include <bit>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -44,6 +48,51 @@ TEST(DeviceCompiler, Float3ArgumentsReachAFunctionThatIsNotInlined)
                                                     {{"util/compat.h", "#ifdef PATHCL_KERNEL_WIDTH_HINT", "#if 0"}});
         EXPECT_GT(float3_argument_errors(bare, n), 0u) << "the width hint may be dropped on this runtime";
     }
+}
+
+TEST(DeviceCompiler, SlabMinAndMaxAreDefinedForInfinitiesAndNaN)
+{
+    // OpenCL C leaves min and max undefined for infinite or NaN arguments; the slab
+    // test's distances are +-inf for rays parallel to an axis (and NaN for 0 x inf), so it
+    // takes slab_min and slab_max (kernels/bvh/traversal.cl): a < b ? a : b and
+    // a > b ? a : b, whatever the operands.
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const std::vector<float> values = {-inf, -1.0f, -0.0f, 0.0f, 2.5f, 1e30f, inf, nan};
+    const cl_uint n = static_cast<cl_uint>(values.size());
+    ClDevice& dev = test::test_device();
+    static cl::Program program = test::build_test_program("compiler_test_kernels.cl");
+    cl::Buffer a = test::upload(values), b = test::upload(values);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, 2 * n * n * sizeof(float));
+    cl::Kernel k(program, "test_slab_min_max");
+    set_kernel_args(k, a, b, n, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<float> got = test::read_back<float>(out, 2 * n * n);
+    auto same = [](float x, float y) { return std::bit_cast<std::uint32_t>(x) == std::bit_cast<std::uint32_t>(y); };
+    auto same_or_both_nan = [&](float x, float y) { return same(x, y) || (std::isnan(x) && std::isnan(y)); };
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            const float x = values[i], y = values[j];
+            const float lo = x < y ? x : y, hi = x > y ? x : y;
+            EXPECT_TRUE(same_or_both_nan(got[2 * (i * n + j)], lo)) << "slab_min(" << x << ", " << y << ")";
+            EXPECT_TRUE(same_or_both_nan(got[2 * (i * n + j) + 1], hi)) << "slab_max(" << x << ", " << y << ")";
+        }
+}
+
+TEST(DeviceCompiler, ContractOffRoundsTheProductBeforeTheSubtraction)
+{
+    // x y - z with x y = 1 + 2^-11 + 2^-24 exactly: rounded first, the last term is lost
+    // (ties to even), and x y - z = 2^-11 exactly; fused into an fma it would be 2^-11 +
+    // 2^-24. The triangle test's shared edges are watertight only with separately rounded
+    // products (kernels/bvh/triangle_intersect.cl).
+    const std::vector<float> x = {1.0f + 0x1p-12f}, y = {1.0f + 0x1p-12f}, z = {1.0f};
+    ClDevice& dev = test::test_device();
+    static cl::Program program = test::build_test_program("compiler_test_kernels.cl");
+    cl::Buffer xb = test::upload(x), yb = test::upload(y), zb = test::upload(z);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, sizeof(float));
+    cl::Kernel k(program, "test_contract_off");
+    set_kernel_args(k, xb, yb, zb, out);
+    dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1));
+    EXPECT_EQ(test::read_back<float>(out, 1)[0], 0x1p-11f);
 }
 
 } // namespace
