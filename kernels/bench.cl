@@ -20,7 +20,7 @@ static inline float bench_ray_extent(Ray r)
     return r.direction.w > 0.0f ? r.direction.w : INFINITY;
 }
 
-__kernel void bench_closest_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void bench_closest_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;
@@ -31,7 +31,7 @@ __kernel void bench_closest_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
     kd.bad_samples[pixel] = (uint)bvh_closest_hit(&kd, r.origin.xyz, r.direction.xyz, bench_ray_extent(r)).triangle;
 }
 
-__kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;
@@ -46,7 +46,7 @@ __kernel void bench_any_hit(PATHCL_KERNEL_PARAMS FrameParams frame)
  * shading normal (diffuse != 0), or towards a point on a light picked as next event
  * estimation picks it (a shadow ray, its extent in direction.w). A ray that hit nothing
  * stays as it is. */
-__kernel void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint diffuse)
+PATHCL_KERNEL void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint diffuse)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;
@@ -82,7 +82,7 @@ __kernel void bench_bounce_rays(PATHCL_KERNEL_PARAMS FrameParams frame, uint dif
     kd.rays[pixel] = out;
 }
 
-__kernel void bench_film(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void bench_film(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;

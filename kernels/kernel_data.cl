@@ -3,7 +3,7 @@
  * (Cycles' KernelGlobals), so no function takes a long list of buffers and the host binds
  * every kernel the same way.
  *
- *   __kernel void k(PATHCL_KERNEL_PARAMS FrameParams frame)
+ *   PATHCL_KERNEL void k(PATHCL_KERNEL_PARAMS FrameParams frame)
  *   {
  *       PATHCL_KERNEL_DATA; // declares KernelData kd, filled from the parameters
  *       ... kd.lights[i] ...

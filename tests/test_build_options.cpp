@@ -37,5 +37,22 @@ TEST(BuildOptions, DivisionAndSquareRootAreCorrectlyRoundedWhereTheDeviceCan)
     EXPECT_FALSE(has(base_build_options(can, plain_options), "-cl-fast-relaxed-math"));
 }
 
+TEST(BuildOptions, IntelsCpuRuntimeAloneGetsTheKernelWidthHint)
+{
+    // Its vectorizer miscompiles calls with float3 arguments (docs/devices.md); PoCL and
+    // Intel's GPU runtime (another compiler) build the kernels as written.
+    DeviceInfo intel_cpu, intel_gpu, pocl;
+    intel_cpu.platform = "Intel(R) OpenCL";
+    intel_cpu.type = "CPU";
+    intel_gpu.platform = "Intel(R) OpenCL Graphics";
+    intel_gpu.type = "GPU";
+    pocl.platform = "Portable Computing Language";
+    pocl.type = "CPU";
+    const std::string hint = "-DPATHCL_KERNEL_WIDTH_HINT";
+    EXPECT_TRUE(has(base_build_options(intel_cpu, ""), hint));
+    EXPECT_FALSE(has(base_build_options(intel_gpu, ""), hint));
+    EXPECT_FALSE(has(base_build_options(pocl, ""), hint));
+}
+
 } // namespace
 } // namespace pathcl

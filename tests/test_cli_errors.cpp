@@ -3,6 +3,7 @@
 // one left byte-identical). Every case here fails before rendering; the render options
 // are tiny anyway so that a regression cannot make this test slow.
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -449,6 +450,30 @@ TEST_F(Cli, CompareOfTwoSizesNamesBothFiles)
     ASSERT_EQ(run("render " + quoted(kCornell) + " -o b.exr --width 8 --height 4 --spp 1").status, 0);
     RunResult r = run("compare a.exr b.exr");
     expect_clean_failure(r, "b.exr: is 8x4, a.exr 4x4");
+}
+
+TEST_F(Cli, PathclPlatformNarrowsTheDevicesOrIsAOneLineError)
+{
+    // PATHCL_PLATFORM (host/cl/cl_runtime.cpp) aims every command, and the device tests,
+    // at the platforms whose name contains it, ignoring case; one that matches none is an
+    // error, not an empty list.
+    RunResult all = run("devices");
+    ASSERT_EQ(all.status, 0) << all.err;
+    const std::size_t bar = all.out.find(" | ");
+    ASSERT_NE(bar, std::string::npos) << all.out;
+    const std::string platform = all.out.substr(3, bar - 3); // "0: <platform> | ..."
+    std::string shouted = platform;
+    std::transform(shouted.begin(), shouted.end(), shouted.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    RunResult one = run_limited("PATHCL_PLATFORM='" + shouted + "' ", "devices");
+    EXPECT_EQ(one.status, 0) << one.err;
+    std::istringstream lines(one.out);
+    std::size_t listed = 0;
+    for (std::string line; std::getline(lines, line); ++listed)
+        EXPECT_NE(line.find(": " + platform + " | "), std::string::npos) << line;
+    EXPECT_GT(listed, 0u);
+    RunResult none = run_limited("PATHCL_PLATFORM=no-such-platform ", "devices");
+    expect_clean_failure(none, "PATHCL_PLATFORM=no-such-platform");
 }
 
 } // namespace

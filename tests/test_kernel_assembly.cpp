@@ -2,6 +2,12 @@
 // (host/cl/kernel_source.h): includes resolved once, #line directives naming the real
 // files, clear errors for missing includes, cycles and patches that do not apply, and
 // every kernel file opening with a comment that says what it holds.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "cl/embedded_kernels.h"
@@ -43,7 +49,28 @@ TEST(KernelAssembly, TheRenderProgramHoldsEveryKernel)
 {
     std::string out = assemble_kernel_source(ProgramSource{});
     for (const char* kernel : {"generate_camera_rays", "trace_paths", "clear_film", "sampler_points"})
-        EXPECT_EQ(count(out, std::string("__kernel void ") + kernel + "("), 1u) << kernel;
+        EXPECT_EQ(count(out, std::string("PATHCL_KERNEL void ") + kernel + "("), 1u) << kernel;
+}
+
+TEST(KernelAssembly, EveryKernelIsDeclaredWithPathclKernel)
+{
+    // PATHCL_KERNEL (util/compat.h) carries the per-device workaround attributes
+    // (host/cl/device_workarounds.h); a kernel declared with a bare __kernel would miss
+    // them. Test kernels included.
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const EmbeddedFile& f : embedded_kernel_files())
+        files.emplace_back(f.name, f.text);
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(PATHCL_SOURCE_DIR) + "/tests/kernels"))
+        files.emplace_back(entry.path().string(),
+                           std::string(std::istreambuf_iterator<char>(std::ifstream(entry.path()).rdbuf()), {}));
+    std::size_t kernels = 0;
+    for (const auto& [name, text] : files) {
+        kernels += count(text, "PATHCL_KERNEL void ");
+        if (name != "util/compat.h") {
+            EXPECT_EQ(count(text, "__kernel"), 0u) << name;
+        }
+    }
+    EXPECT_GT(kernels, 30u);
 }
 
 TEST(KernelAssembly, MissingIncludesAndCyclesAreErrors)

@@ -1,16 +1,41 @@
 #!/bin/sh
 # Installs what is missing, builds, and runs the whole test suite (the README's test
-# command; .ci/run calls this): every test in a release build, then the unit tests (the
-# hostile corpus included) and the commands end to end (label cli: render, resume, merge,
-# converge, info) again in a build with AddressSanitizer and UndefinedBehaviorSanitizer.
-# Kernel binaries are cached in build/kernel-cache.
+# command; .ci/run calls this): every test in a release build on PoCL, the device tests
+# that check exact results again on Intel's OpenCL CPU runtime (a second OpenCL
+# implementation; docs/devices.md), then the unit tests (the hostile corpus included) and
+# the commands end to end (label cli: render, resume, merge, converge, info) again in a
+# build with AddressSanitizer and UndefinedBehaviorSanitizer. Kernel binaries are cached
+# in build/kernel-cache.
 set -eu
 cd "$(dirname "$0")/.."
 sh tools/install_deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build
 export PATHCL_CACHE_DIR="$PWD/build/kernel-cache"
-ctest --test-dir build --output-on-failure
+
+# Intel's runtime comes from PyPI into ~/.cache (tools/intel_opencl.sh), once; where PyPI
+# cannot be reached the suite fails here, as it does for any other missing dependency.
+# `pathcl devices` must list both platforms; PATHCL_PLATFORM then aims each run at one.
+pocl="Portable Computing Language"
+intel="Intel(R) OpenCL"
+devices=$(sh tools/intel_opencl.sh ./build/pathcl devices)
+echo "$devices"
+for platform in "$pocl" "$intel"; do
+    echo "$devices" | grep -qF ": $platform |" || {
+        echo "test.sh: no OpenCL device of the platform '$platform'" >&2
+        exit 1
+    }
+done
+
+PATHCL_PLATFORM="$pocl" ctest --test-dir build --output-on-failure
+
+# On Intel's runtime: the tests of exact results (traversal, intersection, BSDFs,
+# samplers, film, lights, the kernels' own math and the compiler checks) and the
+# wavefront integrator's; the statistical image tests run on PoCL only, to keep CI's time.
+exact='^(BvhTraversal|SelfIntersection|Robustness|BsdfSampling|BsdfEval|BsdfEnergy|BsdfDelta|BsdfRoughness'
+exact="$exact|Samplers|Film|LightSampling|LightTreeSampling|PointLight|SpotLight|SphereLight|DirectionalLight|TextureLookup"
+exact="$exact|MaterialInputs|KernelMath|KernelSource|DeviceCompiler|Wavefront|WavefrontTool)\\."
+PATHCL_PLATFORM="$intel" sh tools/intel_opencl.sh ctest --test-dir build -L device -R "$exact" --output-on-failure
 
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPATHCL_SANITIZE=ON
 cmake --build build-sanitize --target unit_tests cli_tests pathcl

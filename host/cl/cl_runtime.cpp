@@ -1,11 +1,15 @@
 #include "cl/cl_runtime.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
 
+#include "cl/device_workarounds.h"
 #include "cl/program_cache.h"
 #include "common/error.h"
 
@@ -23,6 +27,42 @@ std::string device_type_name(cl_device_type t)
     return "other";
 }
 
+std::string strip_nuls(std::string s)
+{
+    while (!s.empty() && s.back() == '\0')
+        s.pop_back();
+    return s;
+}
+
+std::string lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+// PATHCL_PLATFORM, when set: only the platforms whose name contains it (ignoring case), as
+// if no other were installed, for every command and the test suite alike (on a machine
+// with several OpenCL implementations, device 0 is otherwise whichever the ICD loader
+// lists first). One that matches no platform is an error, not an empty list.
+std::vector<cl::Platform> selected_platforms(const std::vector<cl::Platform>& platforms)
+{
+    const char* wanted = std::getenv("PATHCL_PLATFORM");
+    if (!wanted || !*wanted)
+        return platforms;
+    std::vector<cl::Platform> out;
+    std::string names;
+    for (const cl::Platform& p : platforms) {
+        std::string name = strip_nuls(p.getInfo<CL_PLATFORM_NAME>());
+        if (lower(name).find(lower(wanted)) != std::string::npos)
+            out.push_back(p);
+        names += (names.empty() ? "" : ", ") + name;
+    }
+    if (out.empty())
+        throw Error(std::string("PATHCL_PLATFORM=") + wanted +
+                    " matches no OpenCL platform (there are: " + (names.empty() ? "none" : names) + ")");
+    return out;
+}
+
 struct Enumerated {
     DeviceInfo info;
     cl::Device device;
@@ -37,7 +77,7 @@ std::vector<Enumerated> enumerate()
     } catch (const cl::Error&) {
         return out; // no ICD installed or no platform: an empty list, not a crash
     }
-    for (const cl::Platform& p : platforms) {
+    for (const cl::Platform& p : selected_platforms(platforms)) {
         std::vector<cl::Device> devices;
         try {
             p.getDevices(CL_DEVICE_TYPE_ALL, &devices);
@@ -62,13 +102,6 @@ std::vector<Enumerated> enumerate()
         }
     }
     return out;
-}
-
-std::string strip_nuls(std::string s)
-{
-    while (!s.empty() && s.back() == '\0')
-        s.pop_back();
-    return s;
 }
 
 // The first line of a compiler log that reports an error (else its first line), so the
@@ -137,7 +170,8 @@ std::string base_build_options(const DeviceInfo& device, const std::string& opti
     // costs NVIDIA's H200 a quarter to a third of its samples per second (docs/gpu.md);
     // PoCL on CPUs divides correctly rounded either way. --fast-math gives it up.
     bool exact = device.correctly_rounded_divide_sqrt && options.find(kUnsafeMathOption) == std::string::npos;
-    return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "");
+    return std::string("-cl-std=CL1.2") + (exact ? " -cl-fp32-correctly-rounded-divide-sqrt" : "") +
+           workaround_options(device);
 }
 
 ProgramBuild build_program(const ClDevice& dev, const std::string& options, const ProgramSource& program_source,

@@ -66,8 +66,9 @@ void store_pending_program(ProgramBuild& build) noexcept;
 inline constexpr const char* kUnsafeMathOption = "-cl-unsafe-math-optimizations";
 
 // The options every program is built with on `device`, before the program's own
-// `options`: OpenCL C 1.2, and division and square root correctly rounded wherever the
-// device offers it, unless `options` ask for unsafe math.
+// `options`: OpenCL C 1.2, division and square root correctly rounded wherever the
+// device offers it, unless `options` ask for unsafe math, and the device's workarounds
+// (cl/device_workarounds.h).
 std::string base_build_options(const DeviceInfo& device, const std::string& options);
 
 } // namespace pathcl

@@ -329,7 +329,7 @@ void add_budget_flags(CLI::App* render, RenderRequest& rq)
         ->check(CLI::PositiveNumber);
     render
         ->add_option("--target-error", o.target_error,
-                     "stop when the estimated relMSE of the image (README: What accuracy costs) falls to E")
+                     "stop when the estimated relMSE of the image (docs/accuracy.md) falls to E")
         ->type_name("E")
         ->check(CLI::PositiveNumber);
     render->add_option("--min-spp", o.min_spp, "with --target-error: take at least N samples per pixel")
@@ -345,7 +345,7 @@ void add_budget_flags(CLI::App* render, RenderRequest& rq)
         ->check(CLI::Range(1u, 1u << 30));
     render->add_flag("--adaptive", o.adaptive,
                      "with --target-error: pixels whose estimated error (and their neighbours') reach it stop taking "
-                     "samples (slightly biased where rare paths carry much light: README \"What accuracy costs\")");
+                     "samples (slightly biased where rare paths carry much light: docs/accuracy.md)");
     auto* progress =
         render->add_flag("--progress", rq.progress, "progress lines on stderr even when it is not a terminal");
     render->add_flag("--quiet", rq.quiet, "no progress line")->excludes(progress);

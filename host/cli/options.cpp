@@ -139,7 +139,7 @@ void add_program_options(CLI::App* command, RenderOptions& options)
         ->check(CLI::IsMember({1u, 8u}));
     command->add_flag("--fast-math", options.fast_math,
                       "build the kernels with -cl-unsafe-math-optimizations (fast math; not -cl-finite-math-only, "
-                      "which traversal cannot take; a measured opt-in: README \"What accuracy costs\")");
+                      "which traversal cannot take; a measured opt-in: docs/accuracy.md)");
     command->add_flag("--single-scattering", options.single_scattering,
                       "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
                       "render them; for cross-checks)");

@@ -47,18 +47,32 @@ static inline RayTraversal instance_ray(const Instance* inst, const RayTraversal
 #define TRAVERSAL_STACK_SIZE BVH_STACK_SIZE
 #endif
 
+/* a < b ? a : b and a > b ? a : b, lane by lane: OpenCL C's min and max are undefined for
+ * infinite or NaN arguments (an implementation may return anything), and the slab
+ * distances below are +-inf for every ray parallel to an axis. A comparison is defined
+ * for every float, and x86's minps and maxps are exactly these selects. */
+static inline float8 slab_min(float8 a, float8 b)
+{
+    return select(b, a, a < b);
+}
+
+static inline float8 slab_max(float8 a, float8 b)
+{
+    return select(b, a, a > b);
+}
+
 /* Slab tests against the eight child boxes of a node at once (float8 lanes), with the far
  * distance enlarged by 1 + 2 gamma(3) so that rounding never culls a box the ray touches
  * (Ize 2013). Returns each child's entry distance, INFINITY where the ray misses it.
  *
- * min and max, not fmin and fmax (whose NaN handling costs a compare and a blend per
- * lane on CPUs): the only NaN is 0 x inf, a ray parallel to an axis starting exactly in
- * a slab's plane. The builder widens every box outwards (one ulp; near zero two of the
- * smallest normal floats, which a device without denormals does not flush), so a ray in
- * the plane of a face of the geometry's box is strictly inside its slab (its t range is
- * +-inf, no NaN), and a NaN is met only by a ray in the widened plane, outside the
- * geometry, which touches nothing in the box: culling it or entering it is right either
- * way. */
+ * slab_min and slab_max, not fmin and fmax (whose NaN handling costs a compare and a blend
+ * per lane on CPUs): the only NaN is 0 x inf, a ray parallel to an axis starting exactly
+ * in a slab's plane, and the selects pass it on or drop it by their operand order. The
+ * builder widens every box outwards (one ulp; near zero two of the smallest normal
+ * floats, which a device without denormals does not flush), so a ray in the plane of a
+ * face of the geometry's box is strictly inside its slab (its t range is +-inf, no NaN),
+ * and a NaN is met only by a ray in the widened plane, outside the geometry, which
+ * touches nothing in the box: culling it or entering it is right either way. */
 static inline float8 ray_box_entry8(const RayTraversal* r, __global const BvhNode* node, float tmax)
 {
     float8 ox = (float8)(r->origin.x), oy = (float8)(r->origin.y), oz = (float8)(r->origin.z);
@@ -66,8 +80,10 @@ static inline float8 ray_box_entry8(const RayTraversal* r, __global const BvhNod
     float8 t0x = (node->lo_x - ox) * ix, t1x = (node->hi_x - ox) * ix;
     float8 t0y = (node->lo_y - oy) * iy, t1y = (node->hi_y - oy) * iy;
     float8 t0z = (node->lo_z - oz) * iz, t1z = (node->hi_z - oz) * iz;
-    float8 tnear = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), (float8)(0.0f)));
-    float8 tfar = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), (float8)(tmax)));
+    float8 tnear =
+        slab_max(slab_max(slab_min(t0x, t1x), slab_min(t0y, t1y)), slab_max(slab_min(t0z, t1z), (float8)(0.0f)));
+    float8 tfar =
+        slab_min(slab_min(slab_max(t0x, t1x), slab_max(t0y, t1y)), slab_min(slab_max(t0z, t1z), (float8)(tmax)));
     tfar *= 1.0f + 2.0f * FLOAT_GAMMA(3);
     return select((float8)(INFINITY), tnear, islessequal(tnear, tfar));
 }

@@ -41,7 +41,7 @@ static inline Ray camera_generate_ray(const Camera* cam, float2 film_uv, float2 
 }
 
 /* Writes the camera ray of this pass's sample for every pixel into kd.rays. */
-__kernel void generate_camera_rays(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void generate_camera_rays(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;

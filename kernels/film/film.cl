@@ -32,7 +32,7 @@ static inline void film_add_sample(__global FilmPixel* film, __global uint* bad_
 }
 
 /* Zeroes the film and the bad-sample counters of every pixel. */
-__kernel void clear_film(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void clear_film(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);

@@ -22,7 +22,7 @@
 #include "sample/dimensions.h"
 #include "sample/sampler.cl"
 
-__kernel void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
+PATHCL_KERNEL void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 {
     PATHCL_KERNEL_DATA;
     uint2 xy;

@@ -6,8 +6,8 @@
  * holds sample first_sample + k of pixel pixels[p], as the decision at dim0 sees it: the
  * 2D pair when dim1 == dim0 + 1, else the two 1D values of decisions at dim0 and dim1.
  * Global size (count, number of pixels). */
-__kernel void sampler_points(uint type, uint spp, uint seed, uint dim0, uint dim1, __global const uint* pixels,
-                             uint first_sample, uint count, __global float2* out)
+PATHCL_KERNEL void sampler_points(uint type, uint spp, uint seed, uint dim0, uint dim1, __global const uint* pixels,
+                                  uint first_sample, uint count, __global float2* out)
 {
     uint k = get_global_id(0), p = get_global_id(1);
     if (k >= count)

@@ -46,6 +46,17 @@ typedef float3 pcl_real3;
 #define PATHCL_ALWAYS_INLINE
 #define PATHCL_NOINLINE
 #endif
+/* Every kernel is declared PATHCL_KERNEL. On a device whose compiler vectorizes kernels
+ * across work-items and miscompiles that (Intel's CPU runtime passes the float3 arguments
+ * of a call it does not inline to the wrong work-items; host/cl/device_workarounds.h), the
+ * host defines PATHCL_KERNEL_WIDTH_HINT and each kernel declares the width it already
+ * computes in (float8: the BVH's eight lanes), which that compiler does not vectorize
+ * further. Elsewhere the hint is left out, and nothing changes. */
+#ifdef PATHCL_KERNEL_WIDTH_HINT
+#define PATHCL_KERNEL __kernel __attribute__((vec_type_hint(float8)))
+#else
+#define PATHCL_KERNEL __kernel
+#endif
 
 #else
 

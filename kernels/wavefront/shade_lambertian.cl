@@ -114,8 +114,8 @@ PATHCL_ALWAYS_INLINE static inline LaneI lane_sample_triangle_light(const Kernel
 #define LANES_SET_F(s, name, v) LANE_STORE((v), (s).words + WAVEFRONT_##name * (s).capacity + base)
 #define LANES_SET_I(s, name, v) LANE_STORE((v), (__global int*)(s).words + WAVEFRONT_##name * (s).capacity + base)
 
-__kernel void wavefront_shade(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
-                              uint depth)
+PATHCL_KERNEL void wavefront_shade(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
+                                   uint depth)
 {
     PATHCL_KERNEL_DATA;
     uint base = (uint)get_global_id(0) * LANES;

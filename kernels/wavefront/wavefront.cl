@@ -29,8 +29,8 @@
 
 /* The path of slot p (pixel first_row * width + p) along its camera ray (kd.rays); slots
  * past the band's pixels, up to the capacity (a multiple of LANES), start ended. */
-__kernel void wavefront_start(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
-                              uint paths)
+PATHCL_KERNEL void wavefront_start(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
+                                   uint paths)
 {
     PATHCL_KERNEL_DATA;
     uint p = get_global_id(0);
@@ -63,8 +63,8 @@ __kernel void wavefront_start(PATHCL_KERNEL_PARAMS FrameParams frame, __global f
 
 /* The bounce's sampler numbers and light pick (sample/, light/light_pick.cl), drawn here
  * beside the traversal as the megakernel draws them before it, then the closest hit. */
-__kernel void wavefront_extend(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
-                               uint depth)
+PATHCL_KERNEL void wavefront_extend(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
+                                    uint depth)
 {
     PATHCL_KERNEL_DATA;
     uint p = get_global_id(0);
@@ -108,7 +108,7 @@ __kernel void wavefront_extend(PATHCL_KERNEL_PARAMS FrameParams frame, __global 
 
 /* The bounce's shadow rays: a contribution whose segment nothing blocks joins its path's
  * radiance. */
-__kernel void wavefront_shadow(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity)
+PATHCL_KERNEL void wavefront_shadow(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity)
 {
     PATHCL_KERNEL_DATA;
     uint p = get_global_id(0);
@@ -128,8 +128,8 @@ __kernel void wavefront_shadow(PATHCL_KERNEL_PARAMS FrameParams frame, __global 
 }
 
 /* Each path's radiance into its pixel (film/film.cl). */
-__kernel void wavefront_film(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
-                             uint paths)
+PATHCL_KERNEL void wavefront_film(PATHCL_KERNEL_PARAMS FrameParams frame, __global float* state_words, uint capacity,
+                                  uint paths)
 {
     PATHCL_KERNEL_DATA;
     uint p = get_global_id(0);

@@ -31,9 +31,9 @@ static inline SurfacePoint test_surface_point(float3 normal, float3 tangent, uin
  *   dir_pdf = (wi, sample pdf)           (0 when there was no sample)
  *   weight  = (sample weight, 1 if delta)
  *   eval    = (bsdf_eval f_cos at wi, bsdf_eval pdf at wi) */
-__kernel void test_bsdf_sample(Material m, float4 normal, float4 tangent, float4 wo, uint front_face, uint seed,
-                               __global const float* layer, __global float4* dir_pdf, __global float4* weight,
-                               __global float4* eval)
+PATHCL_KERNEL void test_bsdf_sample(Material m, float4 normal, float4 tangent, float4 wo, uint front_face, uint seed,
+                                    __global const float* layer, __global float4* dir_pdf, __global float4* weight,
+                                    __global float4* eval)
 {
     uint i = get_global_id(0);
     SurfacePoint sp = test_surface_point(normal.xyz, tangent.xyz, front_face);
@@ -53,8 +53,9 @@ __kernel void test_bsdf_sample(Material m, float4 normal, float4 tangent, float4
 }
 
 /* bsdf_eval for given pairs: out = (f_cos, pdf). */
-__kernel void test_bsdf_eval(Material m, float4 normal, float4 tangent, uint front_face, __global const float* layer,
-                             __global const float4* wo, __global const float4* wi, __global float4* out)
+PATHCL_KERNEL void test_bsdf_eval(Material m, float4 normal, float4 tangent, uint front_face,
+                                  __global const float* layer, __global const float4* wo, __global const float4* wi,
+                                  __global float4* out)
 {
     uint i = get_global_id(0);
     SurfacePoint sp = test_surface_point(normal.xyz, tangent.xyz, front_face);
@@ -64,7 +65,7 @@ __kernel void test_bsdf_eval(Material m, float4 normal, float4 tangent, uint fro
 }
 
 /* Whether NEE is skipped at this material (every lobe a delta function). */
-__kernel void test_bsdf_is_delta(Material m, __global const float* layer, __global int* out)
+PATHCL_KERNEL void test_bsdf_is_delta(Material m, __global const float* layer, __global int* out)
 {
     SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), 1u);
     BsdfParams p = bsdf_params(&m, &sp, (float3)(0.0f, 0.0f, 1.0f), layer);
@@ -79,9 +80,9 @@ __kernel void test_bsdf_is_delta(Material m, __global const float* layer, __glob
  *   (bsdf_lambertian, 0, 0, 0)
  * to `shortcut` from bsdf_sample_lambertian and bsdf_eval_lambertian, to `lobes` from
  * bsdf_sample_lobes and bsdf_eval_lobes. */
-__kernel void test_bsdf_lambertian_shortcut(Material m, uint front_face, uint seed, __global const float* layer,
-                                            __global const float4* wo, __global const float4* wi,
-                                            __global float4* shortcut, __global float4* lobes)
+PATHCL_KERNEL void test_bsdf_lambertian_shortcut(Material m, uint front_face, uint seed, __global const float* layer,
+                                                 __global const float4* wo, __global const float4* wi,
+                                                 __global float4* shortcut, __global float4* lobes)
 {
     uint i = get_global_id(0);
     SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), front_face);
@@ -135,10 +136,11 @@ static void write_sample(const BsdfSample* s, __global float4* out)
  * computes them; the predicate (1 or 0) to `admitted`; to `samples`, bsdf_sample with the
  * numbers u[i] = (u_lobe, u) from the shortcut's fields and from the general ones, two
  * float4 each (write_sample). */
-__kernel void test_bsdf_params_shortcut(Material m, uint front_face, uint ideal, __global const float* layer,
-                                        __global const float4* wo, __global const float4* u, __global float4* params,
-                                        __global float4* shortcut, __global float4* general, __global float* admitted,
-                                        __global float4* samples)
+PATHCL_KERNEL void test_bsdf_params_shortcut(Material m, uint front_face, uint ideal, __global const float* layer,
+                                             __global const float4* wo, __global const float4* u,
+                                             __global float4* params, __global float4* shortcut,
+                                             __global float4* general, __global float* admitted,
+                                             __global float4* samples)
 {
     uint i = get_global_id(0);
     SurfacePoint sp = test_surface_point((float3)(0.0f, 0.0f, 1.0f), (float3)(1.0f, 0.0f, 0.0f), front_face);

@@ -1,6 +1,6 @@
 /* Accumulates `count` samples of 0.1 + noise into film pixel 0 from one work-item,
- * through the real film code (kernels/film/film.cl), and the same with a naive float sum
- * for contrast. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
+ * through the real film code (kernels/film/film.cl), and gives the samples for the host's
+ * sums. Noise: uniform in [-0.05, 0.05) from the counter-based hash. */
 #include "film/film.cl"
 #include "util/hash.cl"
 
@@ -9,7 +9,7 @@ static inline float film_test_sample(uint i)
     return 0.1f + (u32_to_unit_float(hash_u32(i * 2654435761u + 1u)) - 0.5f) * 0.1f;
 }
 
-__kernel void test_film_accumulate(__global FilmPixel* film, __global uint* bad, uint count)
+PATHCL_KERNEL void test_film_accumulate(__global FilmPixel* film, __global uint* bad, uint count)
 {
     for (uint i = 0; i < count; ++i) {
         float v = film_test_sample(i);
@@ -18,21 +18,13 @@ __kernel void test_film_accumulate(__global FilmPixel* film, __global uint* bad,
 }
 
 /* The same samples, one per work-item, for an exact host-side sum. */
-__kernel void test_film_samples(__global float* out)
+PATHCL_KERNEL void test_film_samples(__global float* out)
 {
     uint i = get_global_id(0);
     out[i] = film_test_sample(i);
 }
 
-__kernel void test_naive_accumulate(__global float* out, uint count)
-{
-    float sum = 0.0f;
-    for (uint i = 0; i < count; ++i)
-        sum += film_test_sample(i);
-    out[0] = sum;
-}
-
-__kernel void test_film_rejects_non_finite(__global FilmPixel* film, __global uint* bad)
+PATHCL_KERNEL void test_film_rejects_non_finite(__global FilmPixel* film, __global uint* bad)
 {
     film_add_sample(film, bad, 0u, (float3)(1.0f, 1.0f, 1.0f));
     film_add_sample(film, bad, 0u, (float3)(NAN, 1.0f, 1.0f));

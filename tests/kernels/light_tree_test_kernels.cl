@@ -7,8 +7,8 @@
 #include "util/hash.cl"
 
 /* Pick i with the uniform number hash(seed, i): the light (-1: none) and both pmfs. */
-__kernel void test_light_tree_pick(PATHCL_KERNEL_PARAMS FrameParams frame, float4 ref, float4 n, uint seed,
-                                   __global int* light, __global float* pick_pmf, __global float* pmf)
+PATHCL_KERNEL void test_light_tree_pick(PATHCL_KERNEL_PARAMS FrameParams frame, float4 ref, float4 n, uint seed,
+                                        __global int* light, __global float* pick_pmf, __global float* pmf)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -22,7 +22,8 @@ __kernel void test_light_tree_pick(PATHCL_KERNEL_PARAMS FrameParams frame, float
 }
 
 /* light_tree_pmf of light i. */
-__kernel void test_light_tree_pmf(PATHCL_KERNEL_PARAMS FrameParams frame, float4 ref, float4 n, __global float* pmf)
+PATHCL_KERNEL void test_light_tree_pmf(PATHCL_KERNEL_PARAMS FrameParams frame, float4 ref, float4 n,
+                                       __global float* pmf)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -30,8 +31,8 @@ __kernel void test_light_tree_pmf(PATHCL_KERNEL_PARAMS FrameParams frame, float4
 }
 
 /* The importance of the root's lane 0 at point i (points[i].xyz) with normal normals[i].xyz. */
-__kernel void test_light_tree_importance(PATHCL_KERNEL_PARAMS __global const float4* points,
-                                         __global const float4* normals, __global float* importance)
+PATHCL_KERNEL void test_light_tree_importance(PATHCL_KERNEL_PARAMS __global const float4* points,
+                                              __global const float4* normals, __global float* importance)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);

@@ -10,8 +10,8 @@
 /* The Halton sampler's radical inverse (kernels/sample/halton.cl) for the first n points
  * (n = the global size): out[i] = the float value, digits[i] / scale[i] = the integer
  * digit prefix it comes from (the whole value when unscrambled). */
-__kernel void test_radical_inverse(uint base, uint scramble, uint seed, __global float* out, __global ulong* digits,
-                                   __global ulong* scale)
+PATHCL_KERNEL void test_radical_inverse(uint base, uint scramble, uint seed, __global float* out,
+                                        __global ulong* digits, __global ulong* scale)
 {
     uint i = get_global_id(0), n = (uint)get_global_size(0);
     ulong r, s;
@@ -24,7 +24,7 @@ __kernel void test_radical_inverse(uint base, uint scramble, uint seed, __global
 
 /* The warps' sine and cosine: out[i] = (sin, cos) of in[i] radians (turns == 0, |x| <=
  * pi/4) or of 2 pi in[i] (turns != 0); the built-in sincos alongside for comparison. */
-__kernel void test_sin_cos(__global const float* in, uint turns, __global float2* out, __global float2* builtin)
+PATHCL_KERNEL void test_sin_cos(__global const float* in, uint turns, __global float2* out, __global float2* builtin)
 {
     uint i = get_global_id(0);
     float x = in[i], c, s = turns ? sin_cos_turns(x, &c) : sin_cos_small(x, &c);
@@ -34,7 +34,7 @@ __kernel void test_sin_cos(__global const float* in, uint turns, __global float2
 }
 
 /* Sobol' dimension 1 in reversed bit order, for the test against its definition. */
-__kernel void test_sobol_dimension1(__global const uint* in, __global uint* out)
+PATHCL_KERNEL void test_sobol_dimension1(__global const uint* in, __global uint* out)
 {
     uint i = get_global_id(0);
     out[i] = sobol_dimension1_reversed_u32(in[i]);
@@ -42,7 +42,7 @@ __kernel void test_sobol_dimension1(__global const uint* in, __global uint* out)
 
 /* The 2D decision at `dim` of every pixel (one work-item each) through frame_sampler, as a
  * render pass draws it. */
-__kernel void test_frame_sampler(FrameParams frame, uint dim, __global float2* out)
+PATHCL_KERNEL void test_frame_sampler(FrameParams frame, uint dim, __global float2* out)
 {
     uint pixel = get_global_id(0);
     SamplerState s = frame_sampler(&frame, pixel, dim);
@@ -57,8 +57,8 @@ __kernel void test_frame_sampler(FrameParams frame, uint dim, __global float2* o
  * elsewhere), then a 1D decision at every offset (a pair's second offset included, where
  * the drawn state must fall back to drawing alone); count[pixel] = how many numbers the
  * state drew at once. */
-__kernel void test_sampler_draw_bounce(FrameParams frame, uint start, __global float* at_once,
-                                       __global float* one_by_one, __global uint* count)
+PATHCL_KERNEL void test_sampler_draw_bounce(FrameParams frame, uint start, __global float* at_once,
+                                            __global float* one_by_one, __global uint* count)
 {
     uint pixel = get_global_id(0);
     const SamplerState path = frame_sampler(&frame, pixel, DIM_PATH_START);

@@ -9,7 +9,7 @@
 #include "texture/material_inputs.cl"
 
 /* One lookup per work-item: query = (u, v, as_float(view index), unused). */
-__kernel void test_texture_sample(PATHCL_KERNEL_PARAMS __global const float4* queries, __global float4* out)
+PATHCL_KERNEL void test_texture_sample(PATHCL_KERNEL_PARAMS __global const float4* queries, __global float4* out)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -22,12 +22,12 @@ __kernel void test_texture_sample(PATHCL_KERNEL_PARAMS __global const float4* qu
  * emission and specular colour, (metallic, roughness, specular, transmission), the clear
  * coat's (factor, roughness, n_coat.ng) and its normal, the sheen (colour, roughness), and
  * the anisotropy direction and strength. */
-__kernel void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* hits, __global const float4* wos,
-                                   __global float4* out_normal, __global float4* out_base_color,
-                                   __global float4* out_emission, __global float4* out_specular_color,
-                                   __global float4* out_params, __global float4* out_coat,
-                                   __global float4* out_coat_normal, __global float4* out_sheen,
-                                   __global float4* out_anisotropy)
+PATHCL_KERNEL void test_material_inputs(PATHCL_KERNEL_PARAMS __global const float4* hits, __global const float4* wos,
+                                        __global float4* out_normal, __global float4* out_base_color,
+                                        __global float4* out_emission, __global float4* out_specular_color,
+                                        __global float4* out_params, __global float4* out_coat,
+                                        __global float4* out_coat_normal, __global float4* out_sheen,
+                                        __global float4* out_anisotropy)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);

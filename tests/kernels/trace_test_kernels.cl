@@ -19,9 +19,9 @@ static inline KernelData geometry_only(__global const BvhNode* nodes, __global c
     return kd;
 }
 
-__kernel void test_trace_closest(__global const float4* origins, __global const float4* dirs,
-                                 __global const BvhNode* nodes, __global const Triangle* triangles,
-                                 __global const TriangleBlock* blocks, __global float4* out)
+PATHCL_KERNEL void test_trace_closest(__global const float4* origins, __global const float4* dirs,
+                                      __global const BvhNode* nodes, __global const Triangle* triangles,
+                                      __global const TriangleBlock* blocks, __global float4* out)
 {
     uint i = get_global_id(0);
     KernelData kd = geometry_only(nodes, triangles, blocks);
@@ -31,9 +31,9 @@ __kernel void test_trace_closest(__global const float4* origins, __global const 
 
 /* Every triangle tested on its own: `singles` holds one block per triangle, its triangle
  * in lane 0 (the traversal's own test, without the tree and without a leaf's lanes). */
-__kernel void test_trace_brute_force(__global const float4* origins, __global const float4* dirs,
-                                     __global const Triangle* triangles, __global const TriangleBlock* singles,
-                                     uint count, __global float4* out)
+PATHCL_KERNEL void test_trace_brute_force(__global const float4* origins, __global const float4* dirs,
+                                          __global const Triangle* triangles, __global const TriangleBlock* singles,
+                                          uint count, __global float4* out)
 {
     uint i = get_global_id(0);
     RayTraversal r = ray_traversal_setup(origins[i].xyz, dirs[i].xyz);
@@ -53,9 +53,9 @@ __kernel void test_trace_brute_force(__global const float4* origins, __global co
     out[i] = (float4)(h.t, h.b1, h.b2, as_float(h.triangle));
 }
 
-__kernel void test_any_hit(__global const float4* origins, __global const float4* dirs, __global const BvhNode* nodes,
-                           __global const Triangle* triangles, __global const TriangleBlock* blocks, float t_max,
-                           __global int* out)
+PATHCL_KERNEL void test_any_hit(__global const float4* origins, __global const float4* dirs,
+                                __global const BvhNode* nodes, __global const Triangle* triangles,
+                                __global const TriangleBlock* blocks, float t_max, __global int* out)
 {
     uint i = get_global_id(0);
     KernelData kd = geometry_only(nodes, triangles, blocks);
@@ -65,9 +65,9 @@ __kernel void test_any_hit(__global const float4* origins, __global const float4
 /* Spawns one ray per work-item from a random point on a random triangle (through the
  * kernels' own barycentric_point and offset_ray_origin), in a random direction on either
  * side, and returns the triangle it hits first (-1: none). */
-__kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles,
-                                    __global const TriangleBlock* blocks, uint count, uint seed,
-                                    __global int* hit_triangle, __global int* source_triangle)
+PATHCL_KERNEL void test_spawned_ray_hits(__global const BvhNode* nodes, __global const Triangle* triangles,
+                                         __global const TriangleBlock* blocks, uint count, uint seed,
+                                         __global int* hit_triangle, __global int* source_triangle)
 {
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
@@ -93,8 +93,8 @@ __kernel void test_spawned_ray_hits(__global const BvhNode* nodes, __global cons
  * when there is no sample (the chi-square harness counts those as failures of the
  * sampler), and the radiance the sample carries (so weight = radiance / pdf can be
  * checked). Environment and emissive-texture lookups read the same arrays. */
-__kernel void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uint seed, __global float4* out,
-                                __global float4* radiance_out)
+PATHCL_KERNEL void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uint seed, __global float4* out,
+                                     __global float4* radiance_out)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
@@ -108,8 +108,8 @@ __kernel void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uin
 
 /* light_pick for each u[i] with the alias coin u_alias and the step jitter jitter: the
  * light and u[i] rescaled within its slot. */
-__kernel void test_light_pick(__global const LightAliasEntry* distribution, uint count, __global const float* u,
-                              float u_alias, float jitter, __global int* picked, __global float* u_out)
+PATHCL_KERNEL void test_light_pick(__global const LightAliasEntry* distribution, uint count, __global const float* u,
+                                   float u_alias, float jitter, __global int* picked, __global float* u_out)
 {
     uint i = get_global_id(0);
     float v = u[i];
@@ -120,9 +120,9 @@ __kernel void test_light_pick(__global const LightAliasEntry* distribution, uint
 /* A naive ray/triangle test for the robustness test to show that its checks catch one:
  * Moller-Trumbore without a determinant check, its range checks written as "reject if
  * outside", which lets NaN through. Never used for rendering. */
-__kernel void test_trace_brute_force_naive(__global const float4* origins, __global const float4* dirs,
-                                           __global const Triangle* triangles, __global const TriangleBlock* singles,
-                                           uint count, __global float4* out)
+PATHCL_KERNEL void test_trace_brute_force_naive(__global const float4* origins, __global const float4* dirs,
+                                                __global const Triangle* triangles,
+                                                __global const TriangleBlock* singles, uint count, __global float4* out)
 {
     uint i = get_global_id(0);
     float3 o = origins[i].xyz, d = dirs[i].xyz;
