@@ -11,12 +11,15 @@
 
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "cli/version.h"
 #include "common/error.h"
 
 int main(int argc, char** argv)
 {
     CLI::App app{"pathcl: a physically based OpenCL path tracer for glTF 2.0 scenes"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", pathcl::cli::version_text,
+                         "print the version, the commit it was built from and the OpenCL platforms found");
     // Usage errors follow the same contract as every other error: one line, exit code 2.
     // (Set before the subcommands are added: they inherit it.)
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
