@@ -24,14 +24,7 @@ const std::string kTiny = " --width 4 --height 4 --spp 1";
 const std::vector<std::string> kCommands = {"render",  "merge", "converge", "info",
                                             "devices", "bench", "compare",  "samples"};
 
-std::vector<std::string> lines_of(const std::string& text)
-{
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-    return lines;
-}
+using test::lines_of;
 
 // A help text read back: its section headings in order, the section each flag is listed
 // in, and the example command lines.
