@@ -6,7 +6,6 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 #include <thread>
 
 #include <spawn.h>
@@ -25,16 +24,8 @@ namespace {
 const std::string kSource = PATHCL_SOURCE_DIR;
 const std::string kCornell = "'" + kSource + "/scenes/cornell-box.gltf'";
 
+using test::lines_of;
 using test::ToolRun;
-
-std::vector<std::string> lines_of(const std::string& text)
-{
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        out.push_back(line);
-    return out;
-}
 
 TEST_F(ToolRun, ConvergeWritesEveryRowItsPlotsAndSummary)
 {

@@ -68,23 +68,33 @@ struct Enumerated {
     cl::Device device;
 };
 
+std::vector<cl::Platform> platforms()
+{
+    std::vector<cl::Platform> out;
+    try {
+        cl::Platform::get(&out);
+    } catch (const cl::Error&) {
+        out.clear(); // no ICD installed or no platform: an empty list, not a crash
+    }
+    return out;
+}
+
+std::vector<cl::Device> devices_of(const cl::Platform& p)
+{
+    std::vector<cl::Device> devices;
+    try {
+        p.getDevices(CL_DEVICE_TYPE_ALL, &devices);
+    } catch (const cl::Error&) {
+        devices.clear(); // a platform without devices reports CL_DEVICE_NOT_FOUND
+    }
+    return devices;
+}
+
 std::vector<Enumerated> enumerate()
 {
     std::vector<Enumerated> out;
-    std::vector<cl::Platform> platforms;
-    try {
-        cl::Platform::get(&platforms);
-    } catch (const cl::Error&) {
-        return out; // no ICD installed or no platform: an empty list, not a crash
-    }
-    for (const cl::Platform& p : selected_platforms(platforms)) {
-        std::vector<cl::Device> devices;
-        try {
-            p.getDevices(CL_DEVICE_TYPE_ALL, &devices);
-        } catch (const cl::Error&) {
-            continue;
-        }
-        for (const cl::Device& d : devices) {
+    for (const cl::Platform& p : selected_platforms(platforms())) {
+        for (const cl::Device& d : devices_of(p)) {
             DeviceInfo info;
             info.index = static_cast<int>(out.size());
             info.platform = p.getInfo<CL_PLATFORM_NAME>();
@@ -129,6 +139,15 @@ std::string save_build_log(const std::string& log)
 }
 
 } // namespace
+
+std::vector<PlatformInfo> list_platforms()
+{
+    std::vector<PlatformInfo> out;
+    for (const cl::Platform& p : platforms())
+        out.push_back({strip_nuls(p.getInfo<CL_PLATFORM_NAME>()), strip_nuls(p.getInfo<CL_PLATFORM_VENDOR>()),
+                       strip_nuls(p.getInfo<CL_PLATFORM_VERSION>()), devices_of(p).size()});
+    return out;
+}
 
 std::vector<DeviceInfo> list_devices()
 {

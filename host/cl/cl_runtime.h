@@ -27,6 +27,15 @@ struct DeviceInfo {
 
 std::vector<DeviceInfo> list_devices();
 
+struct PlatformInfo {
+    std::string name, vendor, version; // CL_PLATFORM_NAME, _VENDOR, _VERSION
+    std::size_t devices = 0;           // of every type
+};
+
+// Every OpenCL platform the ICD loader finds; empty when there is none (or no loader
+// configuration), which is not an error.
+std::vector<PlatformInfo> list_platforms();
+
 // A device with its context and in-order queue.
 struct ClDevice {
     DeviceInfo info;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "cli/options.h"
 #include "render/kernel_bench.h"
 #include "render/renderer.h"
@@ -93,6 +94,17 @@ Command add_bench_command(CLI::App& app)
     bench->add_flag("--kernels", rq->kernels,
                     "time each stage on its own instead: camera rays, closest and any-hit traversal (primary, "
                     "diffuse, shadow rays), path samples, film accumulation, BVH build, program build");
+    describe_command(
+        bench,
+        {{kSamplingGroup, {}},
+         {kSceneGroup, {}},
+         {kDeviceGroup, {}},
+         {kKernelGroup, {}},
+         {"Benchmark", {"--runs", "--kernels"}}},
+        {{"pathcl bench scenes/cornell-box.gltf", "five timed renders at 256x256 and 16 spp after a warm-up"},
+         {"pathcl bench scenes/cornell-box.gltf --integrator wavefront", "the same with the wavefront integrator"},
+         {"pathcl bench scenes/cornell-box.gltf --kernels", "each stage on its own: camera rays, traversal, "
+                                                            "path samples, film, BVH and program builds"}});
     return {bench, [rq] { return run_bench(*rq); }};
 }
 

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "common/error.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
@@ -51,6 +52,12 @@ Command add_compare_command(CLI::App& app)
     compare->add_flag("--bitwise", rq->bitwise,
                       "instead: are the pixel data (means, variances, spp) identical bit for bit? (reproducibility, "
                       "refactors)");
+    describe_command(compare, {{"Test", {"--alpha", "--max-fail-fraction", "--welch", "--bitwise"}}},
+                     {{"pathcl compare box.exr reference.exr",
+                       "are the two renders the same image up to noise? (exit 1 if not), and the RMSE of the first"},
+                      {"pathcl compare nee.exr mis.exr --welch",
+                       "the same for renders by different estimators, each with its own variance"},
+                      {"pathcl compare before.exr after.exr --bitwise", "are the pixel data identical bit for bit?"}});
     return {compare, [rq] { return run_compare(*rq); }};
 }
 

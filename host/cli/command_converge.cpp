@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_line.h"
@@ -265,6 +266,21 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
     add_variant_option(c, rq->variant);
     add_copy_instances_option(c, rq->copy_instances);
     c->add_flag("--quiet", rq->quiet, "no progress line");
+    describe_command(
+        c,
+        {{"Study", {"--output", "--vary", "--spp-ladder", "--seeds", "--reference", "--reference-spp", "--targets"}},
+         {kSamplingGroup, {"--seed"}},
+         {kSceneGroup, {}},
+         {kDeviceGroup, {}},
+         {kKernelGroup, {}},
+         {"Progress", {"--quiet"}}},
+        {{"pathcl converge scenes/cornell-box.gltf -o study --vary sampler=independent,sobol",
+          "error against time of two samplers at 1, 2, 4, ..., 256 spp, against a 4096-spp reference"},
+         {"pathcl converge scenes/cornell-box-glass-mirror.gltf -o study --vary strategy=nee,mis "
+          "--vary max-bounces=4,8 --spp-ladder 4,16,64",
+          "two knobs at once: every strategy with every bounce limit"},
+         {"pathcl converge scenes/sky-spheres.gltf -o study --vary light-sampler=power,tree --reference ref.exr",
+          "against a reference EXR of your own (any renderer's)"}});
     return {c, [rq] { return run_converge(*rq); }};
 }
 

@@ -6,12 +6,17 @@
 #include "cl/cl_runtime.h"
 #include "cl/device_workarounds.h"
 #include "cli/commands.h"
+#include "cli/help_format.h"
 
 namespace pathcl::cli {
 
 Command add_devices_command(CLI::App& app)
 {
     CLI::App* devices = app.add_subcommand("devices", "List every OpenCL platform and device with its index");
+    describe_command(
+        devices, {},
+        {{"pathcl devices", "every device with the index --device takes"},
+         {"pathcl render scenes/cornell-box.gltf -o box.png --device 0,1", "then two of them sharing one render"}});
     return {devices, [] {
                 std::vector<DeviceInfo> list = list_devices();
                 if (list.empty()) {

@@ -5,6 +5,7 @@
 
 #include "cl/cl_runtime.h"
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "cli/options.h"
 #include "common/error.h"
 #include "render/kernel_features.h"
@@ -82,6 +83,11 @@ Command add_info_command(CLI::App& app)
     add_variant_option(info, rq->variant);
     add_copy_instances_option(info, rq->copy_instances);
     info->add_option("--device", rq->device, "OpenCL device index (see 'pathcl devices')")->capture_default_str();
+    describe_command(info, {{kSceneGroup, {}}, {kDeviceGroup, {"--device"}}, {kKernelGroup, {}}},
+                     {{"pathcl info scenes/textured.gltf",
+                       "what the scene uses, the kernel features it compiles and how long a cold build takes"},
+                      {"pathcl info scenes/cornell-box.gltf --specialization all",
+                       "the same for the program with every feature compiled in"}});
     return {info, [rq] { return run_info(*rq); }};
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "common/error.h"
 #include "common/file_identity.h"
 #include "common/staged_files.h"
@@ -45,6 +46,10 @@ Command add_merge_command(CLI::App& app)
     merge->add_option("inputs", rq->inputs, "partial renders (EXR) of one render, no sample in two")->required();
     merge->add_option("-o,--output", rq->output, "the merged EXR: the whole render's image once every range is in")
         ->required();
+    describe_command(
+        merge, {{kOutputGroup, {"--output"}}},
+        {{"pathcl merge half1.exr half2.exr -o box.exr",
+          "the two halves of a render made with --sample-range 0:512 and 512:512: its image bit for bit"}});
     return {merge, [rq] { return run_merge(*rq); }};
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_line.h"
@@ -147,8 +148,7 @@ struct RenderRequest {
     std::string ray_log;            // --ray-log FILE.ply
     std::string checkpoint, resume; // --checkpoint FILE, --resume FILE
     double checkpoint_every = 60.0;
-    DisplayTransform display; // PNG outputs: --exposure EV, --tone
-    std::string tone = "clip";
+    DisplayTransform display;    // PNG outputs: --exposure EV, --tone
     std::string sample_range;    // --sample-range FIRST:COUNT
     std::string variant;         // --variant NAME
     bool copy_instances = false; // --copy-instances
@@ -219,7 +219,6 @@ int run_render(RenderRequest rq)
 {
     if (!std::isfinite(rq.display.exposure_ev) || std::fabs(rq.display.exposure_ev) > 64.0)
         throw Error("--exposure: must be a finite number of stops between -64 and 64");
-    rq.display.tone = tone_curve_from_name(rq.tone);
     for (const std::string& output : rq.outputs)
         check_output_path(output); // fail before spending time on the render
     if (!rq.ray_log.empty())
@@ -381,6 +380,41 @@ void add_environment_flags(CLI::App* render, EnvironmentFlags& e)
         ->expected(3);
 }
 
+// The help's groups in the order of docs/usage.md, and the examples it ends with.
+void describe_render_command(CLI::App* render)
+{
+    describe_command(
+        render,
+        {{kOutputGroup, {"--output", "--exposure", "--tone"}},
+         {kSamplingGroup, {"--seed"}},
+         {kBudgetGroup,
+          {"--time", "--target-error", "--min-spp", "--max-spp", "--batch-spp", "--adaptive", "--progress", "--quiet"}},
+         {kCameraGroup, {"--camera", "--fov", "--look-from", "--look-at", "--up", "--aperture", "--focus-distance"}},
+         {kEnvironmentGroup, {"--env", "--env-strength", "--env-rotation", "--background"}},
+         {kSceneGroup, {}},
+         {kDeviceGroup, {"--device-shares"}},
+         {kDistributedGroup, {"--sample-range"}},
+         {kCheckpointGroup, {"--checkpoint", "--checkpoint-every", "--resume"}},
+         {kKernelGroup, {}},
+         {kDiagnosticGroup, {"--ray-log"}}},
+        {{"pathcl render scenes/cornell-box.gltf -o box.png",
+          "the Cornell box at 512x512 and 64 samples per pixel, as an sRGB PNG"},
+         {"pathcl render scenes/sky-spheres.gltf -o sky.exr -o sky.png --width 1280 --height 720 --spp 256 "
+          "--tone filmic",
+          "one render written twice: a linear EXR (with its variance) and a PNG through the filmic curve"},
+         {"pathcl render scenes/cornell-box.gltf -o box.exr --target-error 0.001 --max-spp 4096",
+          "render until the estimated relative MSE is 0.001 (or 4096 samples per pixel)"},
+         {"pathcl render scenes/material-spheres.gltf -o spheres.png --env scenes/sky.hdr --env-rotation 90",
+          "light the scene by an environment map, turned 90 degrees about +Y"},
+         {"pathcl render scenes/cornell-box.gltf -o corner.png --look-from 0.05,0.5,-0.3 --look-at 0.3,0.2,0.3 "
+          "--fov 50",
+          "the same scene seen from another place"},
+         {"pathcl render scenes/cornell-box.gltf -o box.exr --time 600 --checkpoint box.ckpt",
+          "ten minutes of samples; after Ctrl-C or a crash, the same command with --resume box.ckpt continues it"},
+         {"pathcl render scenes/cornell-box.gltf -o half1.exr --spp 1024 --batch-spp 64 --sample-range 0:512",
+          "the first half of a 1024-spp render's samples, for 'pathcl merge' to add to the second (512:512)"}});
+}
+
 } // namespace
 
 Command add_render_command(CLI::App& app)
@@ -392,6 +426,7 @@ Command add_render_command(CLI::App& app)
         ->add_option(
             "-o,--output", rq->outputs,
             "output image, repeatable (.exr: linear float + variance; .png: sRGB, after --exposure and --tone)")
+        ->type_name("FILE")
         ->required()
         ->allow_extra_args(false);
     add_render_options(render, rq->options, rq->device);
@@ -405,23 +440,32 @@ Command add_render_command(CLI::App& app)
                      "with several devices: each one's initial share of the rows (default: equal; the render "
                      "re-deals them by measured speed after its second pass)")
         ->delimiter(',');
-    render->add_option("--exposure", rq->display.exposure_ev,
-                       "PNG outputs: scale radiance by 2^EV before the tone curve (EXR stays linear)");
     render
-        ->add_option("--tone", rq->tone,
-                     "PNG outputs: tone curve, clip (clamp to [0, 1]) or filmic (ACES fit: rolls highlights off)")
-        ->capture_default_str();
-    render->add_option("--ray-log", rq->ray_log,
-                       "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
-                       "directions as normals");
-    render->add_option("--checkpoint", rq->checkpoint,
-                       "write the render's state to FILE every --checkpoint-every seconds and when it stops early, "
-                       "so that --resume FILE continues it");
+        ->add_option("--exposure", rq->display.exposure_ev,
+                     "PNG outputs: scale radiance by 2^EV before the tone curve (EXR stays linear)")
+        ->type_name("EV");
+    const std::vector<std::pair<std::string, ToneCurve>> tones = {{"clip", ToneCurve::Clip},
+                                                                  {"filmic", ToneCurve::Filmic}};
+    add_enum_option(render, "--tone", rq->display.tone, tones,
+                    "PNG outputs: tone curve, clip (clamp to [0, 1]) or filmic (ACES fit: rolls highlights off)");
+    render
+        ->add_option("--ray-log", rq->ray_log,
+                     "write camera rays (16 samples of up to 16x16 pixels) to a .ply point cloud: origins, with "
+                     "directions as normals")
+        ->type_name("FILE");
+    render
+        ->add_option("--checkpoint", rq->checkpoint,
+                     "write the render's state to FILE every --checkpoint-every seconds and when it stops early, "
+                     "so that --resume FILE continues it")
+        ->type_name("FILE");
     render->add_option("--checkpoint-every", rq->checkpoint_every, "seconds between checkpoints")
+        ->type_name("SECONDS")
         ->capture_default_str();
-    render->add_option("--resume", rq->resume,
-                       "continue the render whose checkpoint FILE holds (same scene and options: the image equals "
-                       "the uninterrupted render's bit for bit)");
+    render
+        ->add_option("--resume", rq->resume,
+                     "continue the render whose checkpoint FILE holds (same scene and options: the image equals "
+                     "the uninterrupted render's bit for bit)")
+        ->type_name("FILE");
     render
         ->add_option("--sample-range", rq->sample_range,
                      "render only sample indices FIRST .. FIRST+COUNT-1 of the --spp render (whole batches of "
@@ -431,6 +475,7 @@ Command add_render_command(CLI::App& app)
     add_program_options(render, rq->options);
     add_variant_option(render, rq->variant);
     add_copy_instances_option(render, rq->copy_instances);
+    describe_render_command(render);
     return {render, [rq] { return run_render(*rq); }};
 }
 

@@ -4,6 +4,7 @@
 
 #include "cl/cl_runtime.h"
 #include "cli/commands.h"
+#include "cli/help_format.h"
 #include "cli/options.h"
 #include "common/error.h"
 #include "common/staged_files.h"
@@ -63,7 +64,7 @@ Command add_samples_command(CLI::App& app)
     CLI::App* samples = app.add_subcommand(
         "samples", "Draw one pixel's sample points for a dimension pair (and their power spectrum) to a PNG");
     samples->add_option("-o,--output", rq->output, "output PNG")->required();
-    add_sampler_option(samples, rq->sampler, "independent");
+    add_sampler_option(samples, rq->sampler);
     samples->add_option("--spp", rq->spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 20));
     samples->add_option("--pixel", rq->pixel, "pixel X,Y (default 0,0)")->delimiter(',')->expected(2);
     samples->add_option("--width", rq->width, "image width the pixel index y * width + x refers to")
@@ -78,6 +79,16 @@ Command add_samples_command(CLI::App& app)
     samples->add_option("--seed", rq->seed, "random seed")->capture_default_str();
     samples->add_flag("--spectrum", rq->spectrum, "add the power spectrum averaged over many pixels");
     samples->add_option("--device", rq->device, "OpenCL device index")->capture_default_str();
+    describe_command(
+        samples,
+        {{kOutputGroup, {"--output"}},
+         {"Points", {"--sampler", "--spp", "--pixel", "--width", "--dims", "--seed", "--spectrum"}},
+         {kDeviceGroup, {"--device"}}},
+        {{"pathcl samples -o sobol.png --sampler sobol --spp 256", "the 256 film positions of pixel 0,0 under Sobol'"},
+         {"pathcl samples -o jittered.png --sampler jittered --spp 64 --spectrum",
+          "64 jittered points and the power spectrum averaged over many pixels"},
+         {"pathcl samples -o bounce.png --sampler halton --spp 128 --dims 8,9",
+          "the first bounce's BSDF direction, a 2D decision"}});
     return {samples, [rq] { return run_samples(*rq); }};
 }
 

@@ -5,8 +5,11 @@
 #include <map>
 
 #include "cl/cl_runtime.h"
+#include "cli/help_format.h"
+#include "cli/usage_errors.h"
 #include "common/error.h"
 #include "common/text_fields.h"
+#include "sampling/samplers.h"
 
 namespace pathcl::cli {
 namespace {
@@ -17,34 +20,39 @@ std::string lowercase(std::string s)
     return s;
 }
 
-// --sampler NAME with a readable message for a bad name (CheckedTransformer's would list
-// the numeric values too).
-CLI::Validator sampler_validator()
-{
-    return CLI::Validator(
-        [](std::string& value) {
-            auto it = sampler_names().find(lowercase(value));
-            if (it == sampler_names().end())
-                return "unknown sampler " + quote(value) +
-                       " (independent, jittered, multi-jittered, n-rooks, sobol, halton, hammersley)";
-            value = std::to_string(static_cast<std::uint32_t>(it->second));
-            return std::string();
-        },
-        "SAMPLER");
-}
-
-const char* const kSamplerHelp =
-    "sampler: independent, jittered, multi-jittered, n-rooks, sobol, halton or hammersley (jittered and "
-    "multi-jittered round --spp up to a square, hammersley to a power of two)";
+const char* const kSamplerHelp = "the point sets of each pixel's samples (jittered and multi-jittered round --spp up "
+                                 "to a square, hammersley to a power of two)";
 
 } // namespace
 
-void add_sampler_option(CLI::App* command, SamplerType& sampler, const std::string& default_name)
+CLI::Validator named_values(const std::vector<std::pair<std::string, std::string>>& names)
 {
-    command->add_option("--sampler", sampler, kSamplerHelp)
-        ->transform(sampler_validator())
-        ->type_name("NAME")
-        ->default_str(default_name);
+    std::vector<std::string> listed;
+    for (const auto& entry : names)
+        listed.push_back(entry.first);
+    std::string description;
+    for (const std::string& name : listed)
+        description += (description.empty() ? "{" : ",") + name;
+    return CLI::Validator(
+        [names, listed](std::string& value) {
+            for (const auto& [name, number] : names)
+                if (name == lowercase(value)) {
+                    value = number;
+                    return std::string();
+                }
+            std::string all;
+            for (std::size_t i = 0; i < listed.size(); ++i)
+                all += (i == 0 ? "" : i + 1 == listed.size() ? " or " : ", ") + listed[i];
+            return quote(value) + " is not " + all + did_you_mean(nearest_names(value, listed));
+        },
+        description + "}");
+}
+
+CLI::Option* add_sampler_option(CLI::App* command, SamplerType& sampler)
+{
+    std::vector<std::pair<std::string, SamplerType>> names(sampler_names().begin(), sampler_names().end());
+    std::sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    return add_enum_option(command, "--sampler", sampler, names, kSamplerHelp); // in the order of SamplerType
 }
 
 std::vector<int> parse_devices(const std::string& text)
@@ -75,88 +83,100 @@ void add_render_options(CLI::App* command, RenderOptions& options, std::string& 
     if (with_spp)
         command->add_option("--spp", options.spp, "samples per pixel")
             ->capture_default_str()
-            ->check(CLI::Range(1u, 1u << 30));
-    command->add_option("--width", options.width, "image width")->capture_default_str()->check(CLI::Range(1u, 32768u));
+            ->check(CLI::Range(1u, 1u << 30))
+            ->group(kSamplingGroup);
+    command->add_option("--width", options.width, "image width")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 32768u))
+        ->group(kSamplingGroup);
     command->add_option("--height", options.height, "image height")
         ->capture_default_str()
-        ->check(CLI::Range(1u, 32768u));
+        ->check(CLI::Range(1u, 32768u))
+        ->group(kSamplingGroup);
     command
         ->add_option("--max-bounces", options.max_bounces,
                      "scattering events per path (0: emission only, 1: direct light)")
         ->capture_default_str()
-        ->check(CLI::Range(0u, 1u << 16));
-    static const std::map<std::string, Strategy> strategies = {
+        ->check(CLI::Range(0u, 1u << 16))
+        ->group(kSamplingGroup);
+    const std::vector<std::pair<std::string, Strategy>> strategies = {
         {"bsdf", Strategy::Bsdf}, {"nee", Strategy::Nee}, {"one-sample", Strategy::OneSample}, {"mis", Strategy::Mis}};
-    command->add_option("--strategy", options.strategy, "light sampling: bsdf, nee, one-sample or mis")
-        ->transform(CLI::CheckedTransformer(strategies, CLI::ignore_case))
-        ->default_str("mis");
-    static const std::map<std::string, LightSampler> light_samplers = {{"auto", LightSampler::Auto},
-                                                                       {"power", LightSampler::Power},
-                                                                       {"tree", LightSampler::Tree},
-                                                                       {"uniform", LightSampler::Uniform}};
-    command
-        ->add_option("--light-sampler", options.light_sampler,
-                     "how next event estimation picks a light: power (by power alone), tree (the light tree: power, "
-                     "distance and orientation at the shading point), uniform, or auto (the tree where three or "
-                     "more lights are spread over a quarter of the scene, else power)")
-        ->transform(CLI::CheckedTransformer(light_samplers, CLI::ignore_case))
-        ->default_str("auto");
-    add_sampler_option(command, options.sampler, sampler_name(options.sampler));
+    add_enum_option(command, "--strategy", options.strategy, strategies,
+                    "how direct light is found: bsdf (BSDF sampling alone), nee (next event estimation), "
+                    "one-sample (one of the two by a coin) or mis (both, weighted by the power heuristic)")
+        ->group(kSamplingGroup);
+    const std::vector<std::pair<std::string, LightSampler>> light_samplers = {{"auto", LightSampler::Auto},
+                                                                              {"power", LightSampler::Power},
+                                                                              {"tree", LightSampler::Tree},
+                                                                              {"uniform", LightSampler::Uniform}};
+    add_enum_option(command, "--light-sampler", options.light_sampler, light_samplers,
+                    "how next event estimation picks a light: power (by power alone), tree (the light tree: power, "
+                    "distance and orientation at the shading point), uniform, or auto (the tree where three or "
+                    "more lights are spread over a quarter of the scene, else power)")
+        ->group(kSamplingGroup);
+    add_sampler_option(command, options.sampler)->group(kSamplingGroup);
     command
         ->add_option("--stratified-bounces", options.stratified_bounces,
                      "the camera's decisions and those of the first N bounces take the sampler's stratified sets, "
                      "deeper ones independent numbers (any N >= --max-bounces: all)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->group(kSamplingGroup);
     command
         ->add_option("--device", devices,
                      "OpenCL device index, a comma-separated list of them or all (see 'pathcl devices'): several "
                      "devices share the rows, and the image is the one-device image")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->group(kDeviceGroup);
 }
 
 void add_program_options(CLI::App* command, RenderOptions& options)
 {
-    static const std::map<std::string, Specialization> kinds = {{"scene", Specialization::Scene},
-                                                                {"all", Specialization::All}};
-    command
-        ->add_option("--specialization", options.specialization,
-                     "kernel features compiled in: scene (those the scene uses) or all (to measure what "
-                     "specializing saves)")
-        ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case))
-        ->default_str("scene");
-    static const std::map<std::string, Integrator> integrators = {{"megakernel", Integrator::Megakernel},
-                                                                  {"wavefront", Integrator::Wavefront}};
-    command
-        ->add_option("--integrator", options.integrator,
-                     "megakernel (one work-item per path) or wavefront (one kernel per stage, shading in lanes; "
-                     "Lambertian scenes lit by emissive triangles so far)")
-        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))
-        ->default_str("megakernel");
+    const std::vector<std::pair<std::string, Integrator>> integrators = {{"megakernel", Integrator::Megakernel},
+                                                                         {"wavefront", Integrator::Wavefront}};
+    add_enum_option(command, "--integrator", options.integrator, integrators,
+                    "megakernel (one work-item per path) or wavefront (one kernel per stage, shading in lanes; "
+                    "Lambertian scenes lit by emissive triangles so far)")
+        ->group(kKernelGroup);
     command
         ->add_option("--wavefront-lanes", options.wavefront_lanes,
                      "paths per shading work-item of the wavefront: 8 (the default on CPUs) or 1 (elsewhere; on a CPU, "
                      "for measuring what lanes gain)")
-        ->check(CLI::IsMember({1u, 8u}));
-    command->add_flag("--fast-math", options.fast_math,
-                      "build the kernels with -cl-unsafe-math-optimizations (fast math; not -cl-finite-math-only, "
-                      "which traversal cannot take; a measured opt-in: docs/accuracy.md)");
-    command->add_flag("--single-scattering", options.single_scattering,
-                      "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
-                      "render them; for cross-checks)");
+        ->check(CLI::IsMember({1u, 8u}))
+        ->group(kKernelGroup);
+    const std::vector<std::pair<std::string, Specialization>> kinds = {{"scene", Specialization::Scene},
+                                                                       {"all", Specialization::All}};
+    add_enum_option(command, "--specialization", options.specialization, kinds,
+                    "kernel features compiled in: scene (those the scene uses) or all (to measure what "
+                    "specializing saves)")
+        ->group(kKernelGroup);
+    command
+        ->add_flag("--fast-math", options.fast_math,
+                   "build the kernels with -cl-unsafe-math-optimizations (fast math; not -cl-finite-math-only, "
+                   "which traversal cannot take; a measured opt-in: docs/accuracy.md)")
+        ->group(kKernelGroup);
+    command
+        ->add_flag("--single-scattering", options.single_scattering,
+                   "rough microfacets without multiple-scattering energy compensation (as pbrt and Mitsuba "
+                   "render them; for cross-checks)")
+        ->group(kKernelGroup);
 }
 
 void add_variant_option(CLI::App* command, std::string& variant)
 {
-    command->add_option("--variant", variant,
-                        "KHR_materials_variants variant to render the scene's materials in (default: the file's own "
-                        "materials; 'pathcl info' lists the variants)");
+    command
+        ->add_option("--variant", variant,
+                     "KHR_materials_variants variant to render the scene's materials in (default: the file's own "
+                     "materials; 'pathcl info' lists the variants)")
+        ->group(kSceneGroup);
 }
 
 void add_copy_instances_option(CLI::App* command, bool& copy_instances)
 {
-    command->add_flag("--copy-instances", copy_instances,
-                      "copy a mesh drawn by several nodes or EXT_mesh_gpu_instancing instances into the scene once per "
-                      "drawing (one-level BVH) instead of storing it once and drawing instances of it (two-level BVH)");
+    command
+        ->add_flag("--copy-instances", copy_instances,
+                   "copy a mesh drawn by several nodes or EXT_mesh_gpu_instancing instances into the scene once per "
+                   "drawing (one-level BVH) instead of storing it once and drawing instances of it (two-level BVH)")
+        ->group(kSceneGroup);
 }
 
 std::string flag_for(const std::string& parameter)

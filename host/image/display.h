@@ -6,8 +6,6 @@
 // towards white instead of clipping them (f(1) = 0.80, f(4) = 0.97).
 #pragma once
 
-#include <string>
-
 namespace pathcl {
 
 enum class ToneCurve { Clip, Filmic };
@@ -19,8 +17,5 @@ struct DisplayTransform {
 
 // Linear radiance to display-linear [0, 1] (before the sRGB encoding).
 float display_value(float radiance, const DisplayTransform& display);
-
-// "clip" or "filmic" to the curve; throws pathcl::Error for another name.
-ToneCurve tone_curve_from_name(const std::string& name);
 
 } // namespace pathcl

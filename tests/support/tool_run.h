@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,16 @@
 #include <gtest/gtest.h>
 
 namespace pathcl::test {
+
+// The lines of a text (an output file, stdout), without their line breaks.
+inline std::vector<std::string> lines_of(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
 
 class ToolRun : public ::testing::Test {
 protected:

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/commands.h"
+#include "cli/command_line.h"
+#include "cli/usage_errors.h"
 #include "fuzz_scratch.h"
 
 namespace {
@@ -89,22 +91,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         argv.push_back(a.data());
     argv.push_back(nullptr);
     const int argc = static_cast<int>(args.size());
-    // As main() does (host/cli/main.cpp).
-    CLI::App app{"pathcl"};
-    app.require_subcommand(1);
-    std::vector<pathcl::cli::Command> commands = {
-        pathcl::cli::add_render_command(app),  pathcl::cli::add_devices_command(app),
-        pathcl::cli::add_bench_command(app),   pathcl::cli::add_samples_command(app),
-        pathcl::cli::add_compare_command(app), pathcl::cli::add_merge_command(app),
-        pathcl::cli::add_info_command(app),    pathcl::cli::add_converge_command(app, argc, argv.data())};
+    // As main() does (host/cli/command_line.cpp), with the line a usage error gets.
+    std::unique_ptr<pathcl::cli::CommandLine> line = pathcl::cli::make_command_line(argc, argv.data());
     if (::fchdir(scratch_fd) != 0)
         std::abort();
     try {
-        app.parse(argc, argv.data());
-        for (const pathcl::cli::Command& c : commands)
+        line->app.parse(argc, argv.data());
+        for (const pathcl::cli::Command& c : line->commands)
             if (c.app->parsed())
                 c.run();
-    } catch (const CLI::Error&) {
+    } catch (const CLI::ParseError& e) {
+        (void)pathcl::cli::usage_error(line->app, e);
     } catch (const std::exception&) {
     }
     keep_only_the_scene(fuzz::scratch_directory("cli"));
