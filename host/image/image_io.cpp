@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/muted_stderr.h"
 #include "common/staged_files.h"
+#include "image/exr_header.h"
 
 namespace pathcl {
 namespace {
@@ -63,6 +64,8 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path)
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         throw Error(path + (fs::exists(path, ec) ? ": is not a regular file" : ": no such file"));
+    if (is_exr_file(path))
+        check_exr_headers(path); // what OpenEXR and OpenImageIO would trust (image/exr_header.h)
     auto in = OIIO::ImageInput::open(path);
     if (!in)
         throw Error(path + ": cannot read image: " + one_line(OIIO::geterror()));

@@ -231,15 +231,16 @@ def hdr(width, height, pixels=None, header_extra=b""):
     return head + pixels
 
 
-def exr(width, height, x_min=0, y_min=0, x_max=None, y_max=None, cut=None, offsets=None):
-    """A scanline OpenEXR file: channels B, G, R as FLOAT, no compression, one line per block."""
+def exr(width, height, x_min=0, y_min=0, x_max=None, y_max=None, cut=None, offsets=None, pixel_type=2, extra=b""):
+    """A scanline OpenEXR file: channels B, G, R as FLOAT (or pixel_type), no compression,
+    one line per block; `extra`: more attributes, as bytes, at the end of the header."""
     x_max = x_min + width - 1 if x_max is None else x_max
     y_max = y_min + height - 1 if y_max is None else y_max
 
     def attribute(name, kind, value):
         return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value)) + value
 
-    chlist = b"".join(c + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    chlist = b"".join(c + b"\0" + struct.pack("<iB3xii", pixel_type, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
     header = struct.pack("<Ii", 20000630, 2)
     header += attribute(b"channels", b"chlist", chlist)
     header += attribute(b"compression", b"compression", b"\0")
@@ -249,7 +250,7 @@ def exr(width, height, x_min=0, y_min=0, x_max=None, y_max=None, cut=None, offse
     header += attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0))
     header += attribute(b"screenWindowCenter", b"v2f", struct.pack("<2f", 0.0, 0.0))
     header += attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0))
-    header += b"\0"
+    header += extra + b"\0"
     lines = height if offsets is None else offsets
     table_end = len(header) + 8 * lines
     line_bytes = 8 + 3 * 4 * width
@@ -930,6 +931,14 @@ def environment_cases():
     write("env/header-only.exr", exr(8, 4)[:8])
     env("env-exr-header-only.gltf", "env-exr-magic-only", "the 8 bytes of an EXR's magic and version",
         "env/header-only.exr")
+    # Found by tools/fuzz.sh partial: OpenImageIO 2.4 aborts on a pixel type other than
+    # uint, half and float, and OpenEXR 3.1 allocates an attribute's claimed size.
+    write("env/pixel-type-3.exr", exr(8, 4, pixel_type=3))
+    env("env-exr-pixel-type-3.gltf", "env-exr-pixel-type-3", "an EXR whose channels have pixel type 3",
+        "env/pixel-type-3.exr")
+    write("env/attribute-2gb.exr", exr(8, 4, extra=b"note\0string\0" + struct.pack("<i", 0x7FFF0000) + b"x"))
+    env("env-exr-attribute-2gb.gltf", "env-exr-attribute-2gb",
+        "an EXR of 778 bytes with a string attribute that claims 2 GB", "env/attribute-2gb.exr")
     env("uri/env-parent.gltf", "env-uri-parent-directory",
         "environment uri ../env/valid.hdr: a valid map outside the scene's directory", "../env/valid.hdr")
     env("env-uri-absolute.gltf", "env-uri-absolute", "environment uri /etc/passwd", "/etc/passwd")
@@ -1120,6 +1129,130 @@ def service_cases():
     case("merge-film-batches-edited", "-", "error", "pathcl:film_batches edited from 1 to 7",
          args=merge, setup=two + ",replace:partial/b.exr|film_batches\\x00string\\x00\\x01\\x00\\x00\\x001|"
                                  "film_batches\\x00string\\x00\\x01\\x00\\x00\\x007", names="b.exr")
+    case("merge-film-pixel-type-3", "-", "error", "a film channel's pixel type edited from uint to 3",
+         args=merge, setup=two + ",replace:partial/b.exr|batch_mean_sq.B.0\\x00\\x00|batch_mean_sq.B.0\\x00\\x03",
+         names="b.exr")
+    case("merge-string-attribute-2gb", "-", "error", "pathcl:film_batches's byte count edited to 2 GB",
+         args=merge, setup=two + ",replace:partial/b.exr|film_batches\\x00string\\x00\\x01\\x00\\x00\\x00|"
+                                 "film_batches\\x00string\\x00\\x01\\x00\\x00\\x7f", names="b.exr")
+    # (The image part's: its last channel, variance.R, is float; the film part's are uint.)
+    last = "R\\x00\\x02\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x01\\x00\\x00\\x00\\x01\\x00\\x00\\x00"
+    count = last + "\\x00chunkCount\\x00int\\x00\\x04\\x00\\x00\\x00"
+    case("merge-chunk-count-2-28", "-", "error", "the image part's chunkCount edited from 1 to 2^28",
+         args=merge, setup=two + ",replace:partial/b.exr|" + count + "\\x01\\x00\\x00\\x00|" + count + "\\x00\\x00\\x00\\x10",
+         names="b.exr")
+    # Found by tools/fuzz.sh partial (the findings' bytes): OpenImageIO 2.4 aborted the
+    # process on the first two, OpenEXR 3.1 allocated and filled 1.9 GB for the third.
+    write("findings/abort-unknown-pixel-type.exr", base64.b64decode(
+        "di8xAQIQAABjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACIAAAAQgACAAAAAAAA"
+        "AAEAAAABAAAARwACAAAAAAAAAAEAAAABAAAAUgACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuQgACAAAAAAAAAAEAAAABAAAAdmFy"
+        "aWFuY2UuRwACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuUgACAAAAAAAAAAEAAAABAAAAAGNodW5rQ291bnQAaW50AAQAAAABAAAA"
+        "Y29tcHJlc3Npb24AY29tcHJlc3Npb24AAQAAAANkYXRhV2luZG93AGJveDJpABAAAAAAAAAAAAAAAAMAAAADAAAAZGlzcGxheVdp"
+        "bmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGxpbmVPcmRlcgBsaW5lT3JkZXIAAQAAAABuYW1lAHN0cmluZwAFAAAAaW1h"
+        "Z2VwYXRoY2w6YmF0Y2hfc3BwAHN0cmluZwACAAAAMTZwYXRoY2w6YmF0Y2hlcwBzdHJpbmcAAQAAADFwYXRoY2w6ZmlsbV9iYWRf"
+        "cyBtcGxlcwBzdHJpbmcAAQAAADBwYXRoY2w6ZmlsbV9iYXRjaGVzAHN0cmluZwABAAAAMnBhdGhjbDpyZWxtc2VfZXN0aW1hdGUA"
+        "c3RyaW5nAAkAAAAwLjA3NjkwODJwYXRoY2w6cmVsbXNlX2VzdGltYXRlX21ldGhvZABzdHJpbmcAIQAAAHBlci1zYW0scGxlIHZh"
+        "cmlhbmNlICh1cHBlciBib3VuZClwYXRoY2w6cmVuZGVyX2tleQBzdHJpbmcAmwAAAHNjZW5lIGU5YmNjYTkxMDdjNmMwMTg7IHNp"
+        "emUgNHg0OyBzZWVkIDA7IHNhbXBsZXIgc29ib2w7IHN0cmF0ZWd5IG1pczsgYm91bmNlcyA4OyBzdHJhdGlmaWVkIGJvdW5jZXMg"
+        "MTsgYmF0Y2ggc3BwIDE2OyBzcHAgNDA7IG9wdGlvbnMgMDAwMDsgc2FtcGxlIGxheW91dCAycGF0aGNsOnNhbXBsZV9yYW5nZXMA"
+        "c3RyaW5nAAUAAAAxNjoxNnBhdGhjbDpzYW1wbGVyAHN0cmluZwAFAAAAc29ib2xwYXRoY2w6c2VlZABzdHJpbmcAAQAAADBwYXRo"
+        "Y2w6c3BwAGludAAEAAAAEAAAAHBhdGhjbDpzcHBfdG90YWwAc3RyaW5nAAIAAAA0MHBhdGhjbDpzdG9wAHN0cmluZwADAAAAc3Bw"
+        "cGl4ZWxBc3BlY3RSYXRpbwBmbG9hdAAEAAAAAACAP3NjcmVlbldpbmRvd0NlbnRlcgB2MmYACAAAAAAAAAAAAAAAc2NyZWVuV2lu"
+        "ZG93V2lkdGgAZmxvYXQABAAAAAAAgD90eXBlAHN0cmluZwANAAAAc2NhbmxpbmVpbU1NTU1jYXBEYXRlAHNJSUlJdHJpbmcAEwAA"
+        "ADIwMjY6MTE6MjggMjA6MTg6NTJjaGFubmVscwBjaGxpc3QApwgAAGJhdGNoX21lYW5fc3EuQi4wAAAAAAAAAAAAAQAAAAEAAABi"
+        "YXRjaF9tZWFuX3NxLkIuMQAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbXYvMQECEAAAY2FwRGF0ZQBzdHJpbmcAEwAAADIwMjY6MTE6"
+        "MjggMjA6MTg6NTJjaGFubmVscwBjaGxpc3QAiAAAAEIAAgAAAAAAAAABAAAAAQAAAEcAAgAAAAAAAAABAAAAAQAAAFIAAgAAAAAA"
+        "AAABAAAAAQAAAHZhcmlhbmNlLkIAAgAAAAAAAAABAAAAAQAAAHZhcmlhbmNlLkcAAgAAAAAAAAABAAAAAQAAAHZhcmlhbmNlLlIA"
+        "AgAAAAAAAAABAAAAAQAAAABlYW5fc3EuQi4yAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkIuMwAAAAAAAAAAAAEAAAAB"
+        "AAAAYmF0Y2hfbWVhbl9zcS5CLjQAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi41AAAAAAAAAAAAAQAAAAEAAABiYXRj"
+        "aF9tZWFuX3NxLkcuMAAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5HLjEAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5f"
+        "c3EuRy4yAAAAAAAAAAAAAQAAAAEAAABiYXRjaDUAAAAAAAAAAAABAAAAAQAAAABjaHVua0NvdW50AGludAAEAAAAAQAAAGNvbXBy"
+        "ZXNzaW9uAGNvbXByZXNzaW9uAAEAAAADZGF0YVdpbmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGRpc3BsYXlXaW5kb3cA"
+        "Ym94MmkAEAAAAAAAAAAAAAAAAwAAAAMAAABsaW5lT3JkZXIAbGluZU9yZGVyAAEAAAAAbmFtZQBzdHJpbmcABAAAAGZpbG1waXhl"
+        "bEFzcGVjdFJhdGlvAGZsb2F0AAQAAAAAAIA/c2NyZWVuV2luZG93Q2VudGVyAHYyZgAIAAAAAAAAAAAAAABzY3JlZW5XaW5kb3dX"
+        "aWR0aABmbG9hdAAEAAAAAACAP3R5cGUAc3RyaW5nAA0AAABzY2FubGluZWltYWdlAABuDgAAAAAAAOEOAAAAAAAAAAAAAAAAAABn"
+        "AAAAeF5jaGhgYGgAA2LphAUJC7DQz4DULyx0wwdjaHVua0NvdW50AGludAAEAAAAAQAAAGNvbXByZXNzaW9uAGNvbXByZXNzaW9u"
+        "AAEAAAADZGF0YVdpbmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGRpc3BsYXlXaW5kb3cAYm94MmkAEAAAAAAAAAAAAAAA"
+        "AwAAAAMAAABsaW5lT3JkZXIAbGluZU9yZGVyAAEAAAAAbmFtZQBzdHJpbmcABQAAAGltYWdlcGF0aGNsOmJhdGNoX3NwcABzdHJp"
+        "bmcAAgAAADE2cGF0aGNsOmJhdGNoZXMAc3RyaW5nAAEAAAAxcGF0aGNsOmZpbG1fYmFkX3NhbXBsZXMAc3RyaW5nAAEAAAAwcGF0"
+        "aGNsOmZpbG1fYmF0Y2hlcwBzdHJpbmcAAQAAADFwYXRoY2w6cmVsbXNlX2VzdGltYXRlAHN0cmluZwAJAAAAMC4wNzY5MDgycGF0"
+        "aGNsOnJlbG1zZV9lc3RpbWF0ZV9tZXRob2QAc3RyaW5nACEAAABwZXItc2FtcGxlIHZhcmlhbmNlICh1cHBlciBib3VuZClwYXRo"
+        "Y2w6cmVuZGVyX2tleQBzdHJpbmcAmwAAAHNjZW5lIGU5YmNjYTkxMDdjNmMwMTg7IHNpemUgNHg0OyBzZWVkIDA7IHNhbXBsZXIg"
+        "c29ib2w7IHN0cmF0ZWd5IG1pczsgYm91bmNlcyA4OyBzdHJhdGlmaWVkIGJvdW5jZXMgMTsgYmF0Y2ggc3BwIDE2OyBzcHAgNDA7"
+        "IG9wdGlvbnMgMDAwMDsgc2FtcGxlIGxheW91dCAycGF0aGNsOnNhbXBsZV9yYW5nZXMAc3RyaW5nAAUAAAAxNjoxNnBhdGhjbDpz"
+        "YW1wbGVyAHN0cmluZwAFAAAAc29ib2xwYXRoY2w6c2VlZABzdHJpbmcAAQAAADBwYXRoY2w6c3BwAGludAAEAAAAEAAAAHBhdGhj"
+        "bDpzcHBfdG90YWwAc3RyaW5nAAIAAAA0MHBhdGhjbDpzdG9wAHN0cmluZwADAAAAc3BwcGl4ZWxBc3BlY3RSYXRpbwBmbG9hdAAE"
+        "AAAAAACAP3NjcmVlbldpbmRvd0NlbnRlcgB2MmYACAAAAAAAAAAAAAAAc2NyZWVuV2luZG93V2lkdGgAZmxvYXQABAAAAAAAgD90"
+        "eXBlAHN0cmluZwANAAAAc2NhbmxpbmVpbWFnZQBjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxz"
+        "AGNobGlzdACnCAAAYmF0Y2hfbWVhbl9zcS5CLjAAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi4xAAAAAAAAAAAAAQAA"
+        "AAEAAABiYXRjaF9tZWFuX3NxLkIuMgAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5CLjMAAAAAAAAAAAABAAAAAQAAAGJh"
+        "dGNoX21lYW5fc3EuQi40AAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkIuNQAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVh"
+        "bl9zcS5HLjAAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy4xAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcu"
+        "MgAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5HLjMAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy40AAAAAAAA"
+        "AAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuNQAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5SLjAAAAAAAAAAAAABAAAA"
+        "AQAAAGJhdGNoX21lYW5fc3EuUi4xAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLlIuMgAAAAAAAAAAAAEAgQcK2GiG9/WT"
+        "MGkGBocDDgew0UAAVIFONzTsdQbpJp7e57TPCQv9LGJFBDa6Yb/jfkds9F7D82ATUem9ziDz9jlhpQ3OO6PRAECQs74BAAAAAAAA"
+        "ALEAAAB4Xu3VsQ2DMBCF4YzACAwAAAEAAABiYXRjaF9tZWFuX3NxLlIuMwAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5S"
+        "LjQAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuUi41AAAAAAAAAAAAAQAAAAEAAABiYXSTngUoyAZOOlAUx2NoXw=="))
+    case("merge-found-abort-unknown-pixel-type", "-", "error", "a partial render whose film channel has pixel type 1885430528 (OpenImageIO aborted)",
+         args="merge {FILES}/findings/abort-unknown-pixel-type.exr -o {CWD}/m.exr", names="abort-unknown-pixel-type.exr")
+    write("findings/abort-channel-list-overrun.exr", base64.b64decode(
+        "di8xAQIQAABjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACIAAAAQgACAAAAAAAA"
+        "AAEAAAABAAAARwACAAAAAAAAAAEAAAABAAAAUgACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuQgACAAAAAAAAAAEAAAABAAAAdmFy"
+        "aWFuY2UuRwACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuUgACAAAAAAAAAAEAAAABAAAAAGNodW5rQ291bnQAaW50AAQAAAABAAAA"
+        "Y29tcHJlc3Npb24AY29tcHJlc3Npb24AAQAAAANkYXRhV2luZG93AGJveDJpABAAAAAAAAAAAAAAAAMAAAADAAAAZGlzcGxheVdp"
+        "bmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGxpbmVPcmRlcgBsaW5lT3JkZXIAAQAAAABuYW1lAHN0cmluZwAFAAAAaW1h"
+        "Z2VwYXRoY2w6YmF0Y2hfc3BwAHN0cmluZwACAAAAMTZwYXRoY2w6YmF0Y2hlcwBzdHJpbmcAAQAAADFwYXRoY2w6ZmlsbV9iYWRf"
+        "cyBtcGxlcwBzdHJpbmcAAQAAADBwYXRoY2w6ZmlsbV9iYXRjaGVzAHN0cmluZwABAAAAMnBhdGhjbDpyZWxtc2VfZXN0aW1hdGUA"
+        "c3RyaW5nAAkAAAAwLjA3NjkwODJwYXRoY2w6cmVsbXNlX2VzdGltYXRlX21ldGhvZABzdHJpbmcAIQAAAHBlci1zYW1wbGUgdmFy"
+        "aWFuY2UgKHVwcGVyIGJvdW5kKXBhdGhjbDpyZW5kZXJfa2V5AHN0cmluZwCbAAAAc2NlbmUgZTliY2NhOTEwN2M2YzAxODsgc2l6"
+        "ZSA0eDQ7IHNlZWQgMDsgc2FtcGxlciBzb2JvbDsgc3RyYXRlZ3kgbWlzOyBib3VuY2VzIDg7IHN0cmF0aWZpZWQgYm91bmNlcyAx"
+        "OyBiYXRjaCBzcHAgMTY7IHNwcCA0MDsgb3B0aW9ucyAwMDAwOyBzYW1wbGUgbGF5b3V0IDJwYXRoY2w6c2FtcGxlX3JhbmdlcwBz"
+        "dHJpbmcABQAAADE2OjE2cGF0aGNsOnNhbXBsZXIAc3RyaW5nAAUAAABzb2JvbHBhdGhjbDpzZWVkAHN0cmluZwABAAAAMHBhdGhj"
+        "bDpzcHAAaW50AAQAAAAQAAAAcGF0aGNsOnNwcF90b3RhbABzdHJpbmcAAgAAADQwcGF0aGNsOnN0b3AAc3RyaW5nAAMAAABzcHBw"
+        "aXhlbEFzcGVjdFJhdGlvAGZsb2F0AAQAAAAAAIA/c2NyZWVuV2luZG93Q2VudGVyAHYyZgAIAAAAAAAAAAAAAABzY3JlZW5XaW5k"
+        "b3dXaWR0aABmbG9hdAAEAAAAAACAP3R5cGUAc3RyaW5nAA0AAABzY2FubGluZWltTU1NTWNhcERhdGUAc0lJSUl0cmluZwATAAAA"
+        "MjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACnCAAAYmF0Y2hfbWVhbl9zcS5CLjAAAABTdDlleGNlcHRpb24AAAAA"
+        "AAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi4xAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkIuMgAAAAAAAAAAAAEAAAAB"
+        "AAAAYmF0Y2hfbWVhbl9zcS5CLjMAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi40AAAAAAAAAAAAAQAAAAEAAABiYXRj"
+        "aF9tZWFuX3NxLkIuNQAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5HLjAAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5f"
+        "c3EuRy4xAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMgAAAAAAAAAAAAEAAAABAAAAYmF0Y2g1AAAAAAAAAAAAAQAA"
+        "AAEAAAAAY2h1bmtDb3VudABpbnQABAAAAAEAAABjb21wcmVzc2lvbgBjb21wcmVzc2lvbgABAAAAA2RhdGFXaW5kb3cAYm94MmkA"
+        "EAAAAAAAAAAAAAAAAwAAAAMAAABkaXNwbGF5V2luZG93AGJveDJpABAAAAAAAAAAAAAAAAMAAAADAAAAbGluZU9yZGVyAGxpbmVP"
+        "cmRlcgABAAAAAG5hbWUAc3RyaW5nAAQAAABmaWxtcGl4ZWxBc3BlY3RSYXRpbwBmbG9hdAAEAAAAAACAP3NjcmVlbldpbmRvd0Nl"
+        "bnRlcgB2MmYACAAAAAAAAAAAAAAAc2NyZWVuV2luZG93V2lkdGgAZmxvYXQABAAAAAAAgD90eXBlAHN0cmluZwANAAAAc2Nhbmxp"
+        "bmVpbWFnZQAAbg4AAAAAAADhDgAAAAAAAAAAAAAAAAAAZwAAAHheY2hoYGBoAANi6YQFCQuw0M+A1C8sdMMHgQcK2GiG9/WTMGkG"
+        "BocDDgew0UAAVIFONzTsdQbpJp7e57TPCQv9LGJFBDa6Yb/jfkds9F7D82ATUem9ziDz9jlhpQ3OO6PRAECQs74BAAAAAAAAALEA"
+        "AAB4Xu3VsQ2DMBCF4YzACAyTngUoyAZOOlAUxyiCLngDKFiAPsMwAiNEEY31kM9xcZXvc/f4Oyz59BQUo/dj1X7w+6/AhZZaL1zh"
+        "+9TXfY0bJbVeuML3abi+b7hRUuuFK3SfjO6armkfuPsk1Mc+jNz98efRuHsRZymWAjcKd79lW4YbhbsXcS7j+YMbhbtXtppwo3D3"
+        "IobRczmXrzvuPty9VWu+5lOFuw93L/7yBX5xQAg="))
+    case("merge-found-abort-channel-list-overrun", "-", "error", "a partial render whose channel list claims more bytes than the file has (OpenImageIO aborted)",
+         args="merge {FILES}/findings/abort-channel-list-overrun.exr -o {CWD}/m.exr", names="abort-channel-list-overrun.exr")
+    write("findings/string-attribute-2gb.exr", base64.b64decode(
+        "di8xAQIQAABjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACIAgAAQgACAAAAAAAA"
+        "AAEAAAABAAAARwACAAAAAAAAAAEAAAABAAAAUgACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuQgACAAAAAAAAAAEAAAABAAAAip6N"
+        "lpxuY2UuRwACAAAAAAAAAAEAAAABAAAAdmFyaWFuY2UuUgACAAAAAAAAAAEAAAABAAAAAGNodW5rQ291bnQAaW50AAQAAAABAAAA"
+        "Y29tcHJlc3Npb24AY29tcHJlc3Npb24AAQAAAANkYXRhV2luZG93AGJveDJpABAAAAAAAAAAAAAAAAMAAAADAAAAZGlzcGxheVdp"
+        "bmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGxpbmVPcmRlcgBsaW5lT3JkZXIAAQAAAABuYW1lAHN0cmluZwAFAAAAaW1h"
+        "Z2VwYXRoY2w6YmF0Y2hfc3BwAHN0cmluZwACAAAAMTZiYXRjaF9zcHAAc3RyaW5nAAIAAAAxNnBhdGhjbDpiYXRjaGVzAHN0cmlu"
+        "ZwABAAAAMXBhdGhjbDpmaWxtX2JhZF9zYW1wbGVzAHN0cmluZwABAAAAMHBhdGhjbDpmaWxtX2JhdGNoZXMAc3RyaW5zdHJpbmcA"
+        "AQAAADFwYXRoY2w6cmVsbXNlX2VzdGltYXRlAHN0cmluZwAJAAAAMC4wNzY5MDgycGF0aGNsOnJlbG1zZV9lc3RpbWF0ZV9tZXRo"
+        "b2QAc3RyaW5nACEAAABwZXstc2FtcGxlIHZhcmlhbmNlICh1cHBlciBib3VuZClwYXRoY2w6cmVuZGVyX2tleQBzdHJpbmcAmwAA"
+        "AHNjZW5lIGU5YmNjYTkxMDdjNmMwMTg7IHNpemUgNHg0OyBzZWVkIDA7IHNhbXBsZXIgc29ib2w7IHN0cmF0ZWd5IG1pczsgYm91"
+        "bmMlcyA4OyBzdHJhdGlmaWVkIGJvdW5jZXMgMTsgYmF0Y2ggc3BwIDE2OyBzcHAgNDA7IG9wdGlvbnMgMDAwMDsgc2FtcGxlIGxh"
+        "eW91dCAycGF0aGNsOnNhbXBsZV9yYW5nZXMAc3RyaW5nAAUAAHJpbmcABQAAAHNvYm9scGF0aGNsOnNlZWQAc3RyaW5nAAEAAAAw"
+        "cGF0aGNsOnNwcABpbnQABAAAABAAAABwYXRoY2w6c3BwX3RvdGFsAHN0cmluZwACAAAANDBwYXRoY2w6c3RvcABzdHJpbmcAAwAA"
+        "AHNwcHBpeGVsQXNwZWN0UmF0aW8AZmxvYXQABAAAAAAAgD9zY3JlZW5XaW5kb3dDZW50ZXIAdjJmAAgAAAAAAAAAAAAAAHNjcmVl"
+        "bldpbmRvd1dpZHRoAGZsb2F0AAQAAAAAAIA/dHlwZQBzdHJpbmcADQAAAHNjYW5saW5laW1hZ2UAY2FwRGF0ZQBzdHJpbmcAEwAA"
+        "ADIwMjY6MTE6MjggMjA6MTg6NTJjaGFubmVscwBjaGxpc3QApwgAAGJhdGNoX21lYW5fc3EuQi4wAAAAAAAAAAAAAQAAAAEAAABi"
+        "YXRjaF9tZWFuX3NxLkIuMQAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5CLjIAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21l"
+        "YW5fc3EuQi4zAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkIuNAAAAAA/ACoAAAABAAAAAQAAAGJhdGNoX21lYW5fc3Eu"
+        "Qi41AAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMAAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5HLjEAAAAA"
+        "AAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy4yAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMwAAAAAAAAAAAAEA"
+        "AAABAAB2LzEBAhAAAGNhcERhdGUAc3RyaW5nABMAAAAyMDI2OjExOjI4IDIwOjE4OjUyY2huZWxhc24AY2hsaXN0AIgAogAAAAAA"
+        "AAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuNAAAAEcAAgAAAAAAAAAAAAAAAAAAAQAAAAEAAAE="))
+    case("merge-found-string-attribute-2gb", "-", "error", "a partial render of 1634 bytes whose attribute claims 1.9 GB (OpenEXR allocated it)",
+         args="merge {FILES}/findings/string-attribute-2gb.exr -o {CWD}/m.exr", names="string-attribute-2gb.exr")
     case("merge-not-partial", "-", "error", "merge of an EXR that is no partial render (an environment map)",
          args="merge {FILES}/env/valid.exr -o {CWD}/m.exr", names="valid.exr")
     case("merge-output-is-input", "-", "error", "merge whose output is one of its inputs, spelled otherwise",
