@@ -61,6 +61,18 @@ Bytes exr(std::int32_t pixel_type = 2, const Bytes& extra = "")
     return f;
 }
 
+// A 3x2 image of 4 samples a pixel, as pathcl writes them.
+Image small_image()
+{
+    Image img;
+    img.width = 3;
+    img.height = 2;
+    img.spp = 4;
+    img.rgb.assign(18, 0.5f);
+    img.variance.assign(18, 0.25f);
+    return img;
+}
+
 class ExrHeader : public ::testing::Test {
 protected:
     void SetUp() override
@@ -100,12 +112,7 @@ protected:
     // channels "a" and "b"), each header with its chunkCount.
     Bytes partial()
     {
-        Image img;
-        img.width = 3;
-        img.height = 2;
-        img.spp = 4;
-        img.rgb.assign(18, 0.5f);
-        img.variance.assign(18, 0.25f);
+        Image img = small_image();
         img.metadata["note"] = "a string attribute";
         img.film_channels = {"a", "b"};
         img.film.assign(12, 7u);
@@ -138,12 +145,7 @@ TEST_F(ExrHeader, AcceptsAWellFormedFileThatOpenImageIoReads)
 
 TEST_F(ExrHeader, AcceptsWhatPathclWritesWithAndWithoutAFilmPart)
 {
-    Image img;
-    img.width = 3;
-    img.height = 2;
-    img.spp = 4;
-    img.rgb.assign(18, 0.5f);
-    img.variance.assign(18, 0.25f);
+    const Image img = small_image();
     const std::string single = (dir_ / "single.exr").string();
     write_image(single, img);
     EXPECT_EQ(error_of(single), "");

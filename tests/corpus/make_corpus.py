@@ -1194,7 +1194,8 @@ def service_cases():
         "MGkGBocDDgew0UAAVIFONzTsdQbpJp7e57TPCQv9LGJFBDa6Yb/jfkds9F7D82ATUem9ziDz9jlhpQ3OO6PRAECQs74BAAAAAAAA"
         "ALEAAAB4Xu3VsQ2DMBCF4YzACAwAAAEAAABiYXRjaF9tZWFuX3NxLlIuMwAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5S"
         "LjQAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuUi41AAAAAAAAAAAAAQAAAAEAAABiYXSTngUoyAZOOlAUx2NoXw=="))
-    case("merge-found-abort-unknown-pixel-type", "-", "error", "a partial render whose film channel has pixel type 1885430528 (OpenImageIO aborted)",
+    case("merge-found-abort-unknown-pixel-type", "-", "error",
+         "a partial render whose film channel has pixel type 1885430528 (OpenImageIO aborted)",
          args="merge {FILES}/findings/abort-unknown-pixel-type.exr -o {CWD}/m.exr", names="abort-unknown-pixel-type.exr")
     write("findings/abort-channel-list-overrun.exr", base64.b64decode(
         "di8xAQIQAABjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACIAAAAQgACAAAAAAAA"
@@ -1226,7 +1227,8 @@ def service_cases():
         "AAB4Xu3VsQ2DMBCF4YzACAyTngUoyAZOOlAUxyiCLngDKFiAPsMwAiNEEY31kM9xcZXvc/f4Oyz59BQUo/dj1X7w+6/AhZZaL1zh"
         "+9TXfY0bJbVeuML3abi+b7hRUuuFK3SfjO6armkfuPsk1Mc+jNz98efRuHsRZymWAjcKd79lW4YbhbsXcS7j+YMbhbtXtppwo3D3"
         "IobRczmXrzvuPty9VWu+5lOFuw93L/7yBX5xQAg="))
-    case("merge-found-abort-channel-list-overrun", "-", "error", "a partial render whose channel list claims more bytes than the file has (OpenImageIO aborted)",
+    case("merge-found-abort-channel-list-overrun", "-", "error",
+         "a partial render whose channel list claims more bytes than the file has (OpenImageIO aborted)",
          args="merge {FILES}/findings/abort-channel-list-overrun.exr -o {CWD}/m.exr", names="abort-channel-list-overrun.exr")
     write("findings/string-attribute-2gb.exr", base64.b64decode(
         "di8xAQIQAABjYXBEYXRlAHN0cmluZwATAAAAMjAyNjoxMToyOCAyMDoxODo1MmNoYW5uZWxzAGNobGlzdACIAgAAQgACAAAAAAAA"
@@ -1251,7 +1253,8 @@ def service_cases():
         "AAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy4yAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMwAAAAAAAAAAAAEA"
         "AAABAAB2LzEBAhAAAGNhcERhdGUAc3RyaW5nABMAAAAyMDI2OjExOjI4IDIwOjE4OjUyY2huZWxhc24AY2hsaXN0AIgAogAAAAAA"
         "AAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuNAAAAEcAAgAAAAAAAAAAAAAAAAAAAQAAAAEAAAE="))
-    case("merge-found-string-attribute-2gb", "-", "error", "a partial render of 1634 bytes whose attribute claims 1.9 GB (OpenEXR allocated it)",
+    case("merge-found-string-attribute-2gb", "-", "error",
+         "a partial render of 1634 bytes whose attribute claims 1.9 GB (OpenEXR allocated it)",
          args="merge {FILES}/findings/string-attribute-2gb.exr -o {CWD}/m.exr", names="string-attribute-2gb.exr")
     case("merge-not-partial", "-", "error", "merge of an EXR that is no partial render (an environment map)",
          args="merge {FILES}/env/valid.exr -o {CWD}/m.exr", names="valid.exr")
