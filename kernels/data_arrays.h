@@ -6,7 +6,7 @@
  *
  * Device side: kernels/kernel_data.cl makes them the parameter list of every render
  * kernel (PATHCL_KERNEL_PARAMS) and the KernelData struct the code reads them through.
- * Host side: host/render/device_arrays.h makes them the vectors of a compiled scene, the
+ * Host side: host/compile/device_arrays.h makes them the vectors of a compiled scene, the
  * buffers of a device, and the one bind call; the test fixture uses the same. An array a
  * scene does not use is uploaded as one zeroed element (OpenCL has no null buffer). */
 #ifndef PATHCL_DATA_ARRAYS_H

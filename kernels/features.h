@@ -2,7 +2,7 @@
  * effects it uses (docs/architecture.md, "Design notes"). Every feature bit and every
  * guard derived from the bits is defined here and nowhere else.
  *
- * The host computes one mask for a render (host/render/kernel_features.cpp) and passes it
+ * The host computes one mask for a render (host/compile/kernel_features.cpp) and passes it
  * as the one define -DPATHCL_FEATURES=<mask>; this file turns the mask into the
  * PATHCL_HAS_* guards the kernel files test. A program built without the define gets no
  * optional feature (the sample visualizer's). */

@@ -279,7 +279,7 @@ typedef struct {
 } LightAliasEntry;
 
 /* A node of the light tree (--light-sampler tree; kernels/light/light_tree.cl, built by
- * host/render/light_tree.cpp): up to eight children, lane k holding child k's bounds, from
+ * host/compile/light_tree.cpp): up to eight children, lane k holding child k's bounds, from
  * which one float8 computation weighs all eight at a shading point (Conty Estevez and
  * Kulla 2018): the bounding sphere of its lights' box, their power, and the cone of
  * directions they emit along (normals within theta_o of the axis, emitting up to theta_e

@@ -10,8 +10,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
+#include "compile/kernel_features.h"
 #include "image/image_compare.h"
-#include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/alpha_cutouts.h"
 #include "scene/gltf_loader.h"

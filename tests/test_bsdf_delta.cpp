@@ -9,9 +9,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "render/layer_albedo.h"
 #include "support/bsdf_harness.h"
 #include "support/device_fixture.h"
+#include "tables/layer_albedo.h"
 
 namespace pathcl {
 namespace {

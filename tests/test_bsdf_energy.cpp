@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "features.h"
-#include "render/layer_albedo.h"
 #include "support/bsdf_harness.h"
 #include "support/device_fixture.h"
+#include "tables/layer_albedo.h"
 
 namespace pathcl {
 namespace {

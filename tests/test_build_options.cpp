@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cl/cl_runtime.h"
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 
 namespace pathcl {
 namespace {

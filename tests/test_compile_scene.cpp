@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "compile/light_distribution.h"
 #include "light/light_pick.h"
-#include "render/light_distribution.h"
 #include "support/compiled_scene.h"
 
 namespace pathcl {

@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "compile/environment.h"
+#include "compile/light_distribution.h"
 #include "image/image_io.h"
-#include "render/environment.h"
-#include "render/light_distribution.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/chi_square.h"

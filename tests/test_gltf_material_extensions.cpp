@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "support/expect_error.h"

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/texture_lookup.h"
+#include "compile/texture_lookup.h"
 #include "scene/gltf_loader.h"
 #include "support/compiled_scene.h"
 #include "support/gltf_texture_fixtures.h"

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
 #include "support/gltf_texture_fixtures.h"

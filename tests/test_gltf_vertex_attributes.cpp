@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "scene/gltf_loader.h"
 #include "scene/tangents.h"
 #include "support/gltf_builder.h"

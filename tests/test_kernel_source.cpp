@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "cl/kernel_source.h"
+#include "compile/kernel_features.h"
 #include "features.h"
-#include "render/kernel_features.h"
 #include "support/device_fixture.h"
 
 namespace pathcl {

@@ -1,4 +1,4 @@
-// The dielectric layer's albedo table (host/render/layer_albedo.h), generated at build
+// The dielectric layer's albedo table (host/tables/layer_albedo.h), generated at build
 // time, against independent computations: its integration against a brute-force
 // Monte Carlo mean, the table against the integration at finer settings, and the
 // smooth interface's averages against closed-form values; likewise the anisotropic GGX
@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "closure/layer_table.h"
-#include "render/layer_albedo.h"
 #include "support/reference_bsdf.h"
+#include "tables/layer_albedo.h"
 #include "types.h"
 
 namespace pathcl {

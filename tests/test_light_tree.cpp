@@ -1,4 +1,4 @@
-// The light tree's host side (render/light_tree.h): the union of two emission cones holds
+// The light tree's host side (compile/light_tree.h): the union of two emission cones holds
 // both; the built tree holds every light in exactly one leaf lane, which its trail leads
 // to, with every lane's bounds (sphere, power, cone) holding those of the lanes below it;
 // infinite lights stay beside it with their share of the power.
@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/light_tree.h"
+#include "compile/light_tree.h"
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"
 

@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/light_tree.h"
+#include "compile/light_tree.h"
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
 

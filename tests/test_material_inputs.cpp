@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/device_arrays.h"
-#include "render/texture_lookup.h"
+#include "compile/device_arrays.h"
+#include "compile/texture_lookup.h"
 #include "scene/gltf_loader.h"
 #include "support/compiled_scene.h"
 #include "support/device_fixture.h"

@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include "compile/kernel_features.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/render_checks.h"

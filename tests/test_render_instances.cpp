@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "compile/compile_scene.h"
+#include "compile/kernel_features.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "render/compile_scene.h"
-#include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include "compile/texture_lookup.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
-#include "render/texture_lookup.h"
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"
 #include "support/render_checks.h"

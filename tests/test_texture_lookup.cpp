@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/device_arrays.h"
-#include "render/texture_lookup.h"
+#include "compile/device_arrays.h"
+#include "compile/texture_lookup.h"
 #include "support/device_fixture.h"
 #include "support/texture_kernels.h"
 

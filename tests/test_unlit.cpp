@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/floor_probe.h"

@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "compile/kernel_features.h"
 #include "image/image_compare.h"
-#include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/expect_error.h"

@@ -26,7 +26,7 @@
 #include "cl/cl_runtime.h"
 #include "cl/kernel_args.h"
 #include "common/error.h"
-#include "render/compile_scene.h"
+#include "compile/compile_scene.h"
 #include "scene/gltf_loader.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // Binds a kernel's arguments in the order given: the one place pathcl calls setArg. The
-// render kernels' arguments come from the generated list (render/device_arrays.h).
+// render kernels' arguments come from the generated list (compile/device_arrays.h).
 #pragma once
 
 #include <CL/opencl.hpp>

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "bench/kernel_bench.h"
 #include "cli/commands.h"
 #include "cli/help_format.h"
 #include "cli/options.h"
-#include "render/kernel_bench.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 

@@ -8,7 +8,7 @@
 #include "cli/help_format.h"
 #include "cli/options.h"
 #include "common/error.h"
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 

@@ -4,7 +4,7 @@
 #include <numeric>
 
 #include "cl/cl_runtime.h"
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 #include "sampling/samplers.h"
 #include "scene/scene_fingerprint.h"
 

@@ -36,7 +36,7 @@ inline const char* strategy_name(Strategy s)
     return "unknown";
 }
 
-// Which kernel features a render's program is compiled with (render/kernel_features.h).
+// Which kernel features a render's program is compiled with (compile/kernel_features.h).
 enum class Specialization : std::uint32_t {
     Scene, // those the scene uses: the default, and the fastest
     All,   // every scene feature, whatever the scene (for measuring what specializing saves)
@@ -47,7 +47,7 @@ enum class LightSampler : std::uint32_t {
     Power,   // in proportion to each light's power, wherever the shading point is (an alias table)
     Tree,    // by the light tree: power, distance and orientation at the shading point
     Uniform, // every light alike (Mitsuba 3's default; for comparisons)
-    Auto,    // tree or power, by the scene's lights (render/light_tree.h, resolve_light_sampler)
+    Auto,    // tree or power, by the scene's lights (compile/light_tree.h, resolve_light_sampler)
 };
 
 // "power", "tree", "uniform" or "auto".

@@ -1,8 +1,8 @@
 #include "render/wavefront.h"
 
 #include "common/error.h"
+#include "compile/kernel_features.h"
 #include "features.h"
-#include "render/kernel_features.h"
 #include "wavefront/path_state.h"
 
 namespace pathcl {

@@ -10,7 +10,7 @@
 #include <CL/opencl.hpp>
 
 #include "cl/cl_runtime.h"
-#include "render/device_arrays.h"
+#include "compile/device_arrays.h"
 #include "types.h"
 
 namespace pathcl {

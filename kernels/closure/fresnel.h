@@ -1,5 +1,5 @@
 /* Fresnel reflectance of a dielectric interface, written once for the kernels (float) and
- * the host's layer albedo tables (double, host/render/layer_albedo.cpp). */
+ * the host's layer albedo tables (double, host/tables/layer_albedo.cpp). */
 #ifndef PATHCL_CLOSURE_FRESNEL_H
 #define PATHCL_CLOSURE_FRESNEL_H
 

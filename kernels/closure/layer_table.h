@@ -1,4 +1,4 @@
-/* The layout of the dielectric layer's albedo tables, which host/render/layer_albedo.cpp
+/* The layout of the dielectric layer's albedo tables, which host/tables/layer_albedo.cpp
  * computes at build time and kernels/closure/layer_albedo.cl reads. They weight the diffuse
  * base under the layer (albedo scaling) and restore the energy rough microfacets lose.
  * One float array over sqrt(cos theta), roughness r = sqrt(alpha) and x = (eta-1)/(eta+1),

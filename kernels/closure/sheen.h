@@ -1,7 +1,7 @@
 /* The KHR_materials_sheen lobe (Conty Estevez and Kulla 2017, "Production Friendly
  * Microfacet Sheen BRDF", as the extension writes it): the "Charlie" distribution of fibre
  * normals and its fitted masking term, written once for the kernels (float) and the host's
- * sheen albedo table (double, host/render/layer_albedo.cpp). Local frame: z is the macro
+ * sheen albedo table (double, host/tables/layer_albedo.cpp). Local frame: z is the macro
  * normal. */
 #ifndef PATHCL_CLOSURE_SHEEN_H
 #define PATHCL_CLOSURE_SHEEN_H

@@ -2,7 +2,7 @@
  *   theta = pi v (from +Y), phi = 2 pi u, d = (sin theta sin phi, cos theta, -sin theta cos phi)
  * rotated about +Y by the light's rotation, piecewise constant per texel, importance-
  * sampled from a 2D piecewise-constant distribution over the same texels (weights
- * luminance x sin theta, built by host/render/environment.cpp). */
+ * luminance x sin theta, built by host/compile/environment.cpp). */
 #include "features.h"
 #include "kernel_data.cl"
 #include "util/atan.cl"

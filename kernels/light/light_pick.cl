@@ -1,5 +1,5 @@
 /* Picking one light for a shadow ray in proportion to its power, through the alias table
- * of the light distribution (O(1); built by host/render/light_distribution.cpp). The
+ * of the light distribution (O(1); built by host/compile/light_distribution.cpp). The
  * probability that a light is picked is its distribution entry's pmf, which MIS needs
  * for BSDF-found hits on lights too. */
 #include "kernel_data.cl"

@@ -1,6 +1,6 @@
 /* How a light is picked, written once for the kernel that picks (light/light_pick.cl)
  * and the host that gives every light the exact probability of being picked
- * (host/render/light_distribution.cpp). The slot and the alias coin are each an integer
+ * (host/compile/light_distribution.cpp). The slot and the alias coin are each an integer
  * on a grid of LIGHT_PICK_GRID = 2^24 steps, so every sampler's numbers fall on it the
  * same way: step k of the slot grid picks slot (k n) >> 24 of n slots. */
 #ifndef PATHCL_LIGHT_LIGHT_PICK_H

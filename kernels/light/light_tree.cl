@@ -1,5 +1,5 @@
 /* --light-sampler tree (PATHCL_LIGHT_TREE): next event estimation's light picked by a
- * descent of the light tree (host/render/light_tree.cpp), each step taking one of a node's
+ * descent of the light tree (host/compile/light_tree.cpp), each step taking one of a node's
  * eight children with probability in proportion to its importance at the shading point,
  * all eight weighed by one float8 computation (Conty Estevez and Kulla 2018, section 4.2).
  * The probability of any light at a point is computed exactly along its leaf's trail, as

@@ -1,5 +1,5 @@
 /* glTF sampler wrap modes (TEXTURE_WRAP_*), written once for the kernels' lookups
- * (texture/lookup.cl) and the host's nearest-texel estimates (host/render/texture_lookup.cpp). */
+ * (texture/lookup.cl) and the host's nearest-texel estimates (host/compile/texture_lookup.cpp). */
 #ifndef PATHCL_TEXTURE_WRAP_H
 #define PATHCL_TEXTURE_WRAP_H
 

@@ -5,9 +5,9 @@
 #include <random>
 
 #include "features.h"
-#include "render/layer_albedo.h"
 #include "support/device_fixture.h"
 #include "support/reference_bsdf.h"
+#include "tables/layer_albedo.h"
 
 namespace pathcl::test {
 

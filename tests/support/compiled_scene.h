@@ -2,8 +2,8 @@
 // look at the arrays the kernels get.
 #pragma once
 
-#include "render/compile_scene.h"
-#include "render/kernel_features.h"
+#include "compile/compile_scene.h"
+#include "compile/kernel_features.h"
 
 namespace pathcl::test {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 
 namespace pathcl::test {
 

@@ -1,7 +1,7 @@
 // Shared access to OpenCL device 0 for the device tests: test programs assembled from
 // tests/kernels/*.cl (each includes the kernel files it tests), built with a typed feature
 // mask, and the scene arrays uploaded and bound exactly as a render does it
-// (render/device_arrays.h).
+// (compile/device_arrays.h).
 #pragma once
 
 #include <cstdint>
@@ -12,8 +12,8 @@
 
 #include "cl/cl_runtime.h"
 #include "cl/kernel_args.h"
+#include "compile/device_arrays.h"
 #include "features.h"
-#include "render/device_arrays.h"
 #include "types.h"
 
 namespace pathcl::test {

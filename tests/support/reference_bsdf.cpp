@@ -1,6 +1,6 @@
 #include "support/reference_bsdf.h"
 
-#include "render/layer_albedo.h"
+#include "tables/layer_albedo.h"
 
 #include <algorithm>
 #include <cmath>

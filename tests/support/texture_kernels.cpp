@@ -1,6 +1,6 @@
 #include "support/texture_kernels.h"
 
-#include "render/texture_lookup.h"
+#include "compile/texture_lookup.h"
 #include "support/device_fixture.h"
 
 namespace pathcl::test {

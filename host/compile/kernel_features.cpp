@@ -1,8 +1,8 @@
-#include "render/kernel_features.h"
+#include "compile/kernel_features.h"
 
 #include <algorithm>
 
-#include "render/light_tree.h"
+#include "compile/light_tree.h"
 #include "render/wavefront.h"
 #include "scene/alpha_cutouts.h"
 

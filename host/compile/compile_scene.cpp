@@ -1,10 +1,10 @@
-#include "render/compile_scene.h"
+#include "compile/compile_scene.h"
 
 #include <algorithm>
 #include <chrono>
 
-#include "render/light_distribution.h"
-#include "render/light_tree.h"
+#include "compile/light_distribution.h"
+#include "compile/light_tree.h"
 
 namespace pathcl {
 

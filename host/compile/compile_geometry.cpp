@@ -15,7 +15,7 @@
 
 #include "bvh/triangle_blocks.h"
 #include "common/error.h"
-#include "render/compile_scene.h"
+#include "compile/compile_scene.h"
 #include "scene/alpha_cutouts.h"
 
 namespace pathcl {

@@ -1,4 +1,4 @@
-#include "render/texture_lookup.h"
+#include "compile/texture_lookup.h"
 
 #include <cmath>
 

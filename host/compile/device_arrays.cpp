@@ -1,4 +1,4 @@
-#include "render/device_arrays.h"
+#include "compile/device_arrays.h"
 
 #include <algorithm>
 #include <cstdio>

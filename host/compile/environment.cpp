@@ -1,4 +1,4 @@
-#include "render/environment.h"
+#include "compile/environment.h"
 
 #include <cmath>
 #include <numbers>

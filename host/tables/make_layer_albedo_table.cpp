@@ -1,4 +1,4 @@
-// Build-time generator of the dielectric layer's albedo table (host/render/layer_albedo.h):
+// Build-time generator of the dielectric layer's albedo table (host/tables/layer_albedo.h):
 // writes a C++ source defining pathcl::layer_albedo_table(). Run by CMake; takes about ten
 // seconds on two cores (most of it the anisotropic table), which every render would
 // otherwise pay on its first glossy material.
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "render/layer_albedo.h"
+#include "tables/layer_albedo.h"
 
 int main(int argc, char** argv)
 {
@@ -19,8 +19,8 @@ int main(int argc, char** argv)
     std::string tmp = std::string(argv[1]) + ".tmp";
     {
         std::ofstream out(tmp);
-        out << "// Generated at build time by tools/make_layer_albedo_table.cpp; do not edit.\n"
-               "#include \"render/layer_albedo.h\"\n\nnamespace pathcl {\nnamespace {\nconst float kTable[] = {\n";
+        out << "// Generated at build time by host/tables/make_layer_albedo_table.cpp; do not edit.\n"
+               "#include \"tables/layer_albedo.h\"\n\nnamespace pathcl {\nnamespace {\nconst float kTable[] = {\n";
         char buf[32];
         for (std::size_t i = 0; i < table.size(); ++i) {
             std::snprintf(buf, sizeof buf, "%.9ef,%s", static_cast<double>(table[i]), i % 8 == 7 ? "\n" : " ");

@@ -1,8 +1,8 @@
 // Materials for the device: one Material record per scene material (factors; the texture
 // slots are filled by compile_textures), and the layer albedo tables when a material has
 // a specular layer, transmission, a clear coat, a sheen or anisotropy.
-#include "render/compile_scene.h"
-#include "render/layer_albedo.h"
+#include "compile/compile_scene.h"
+#include "tables/layer_albedo.h"
 
 #include "closure/layer_table.h"
 

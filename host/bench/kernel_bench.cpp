@@ -1,6 +1,6 @@
-#include "render/kernel_bench.h"
+#include "bench/kernel_bench.h"
 
-#include "render/light_tree.h"
+#include "compile/light_tree.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,9 +8,9 @@
 
 #include "cl/cl_runtime.h"
 #include "common/error.h"
-#include "render/compile_scene.h"
-#include "render/device_arrays.h"
-#include "render/kernel_features.h"
+#include "compile/compile_scene.h"
+#include "compile/device_arrays.h"
+#include "compile/kernel_features.h"
 #include "render/renderer.h"
 #include "sampling/samplers.h"
 

@@ -1,4 +1,4 @@
-// The scene compiled for the device: every array the kernels read (render/device_arrays.h),
+// The scene compiled for the device: every array the kernels read (compile/device_arrays.h),
 // built by small named steps, one concept per file (LuxCore's compile*.cpp):
 //   compile_geometry.cpp   BVH (two levels with instances), triangles in leaf order with their
 //                          shading data, tangents, colours
@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "bvh/bvh_builder.h"
-#include "render/device_arrays.h"
-#include "render/kernel_features.h"
+#include "compile/device_arrays.h"
+#include "compile/kernel_features.h"
 #include "render/render_options.h"
 #include "scene/scene.h"
 
@@ -33,7 +33,7 @@ struct CompiledScene {
     // lights, and the environment last (environment_light; -1 if none).
     std::size_t sphere_count = 0;
     int environment_light = -1;
-    // The light tree (FEATURE_LIGHT_TREE; render/light_tree.h): how often the infinite
+    // The light tree (FEATURE_LIGHT_TREE; compile/light_tree.h): how often the infinite
     // lights (arrays.light_tree_infinite) are picked, the tree's depth and build time.
     double infinite_pick = 0.0;
     std::uint32_t light_tree_depth = 0;

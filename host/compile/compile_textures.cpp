@@ -7,8 +7,8 @@
 
 #include "common/error.h"
 #include "common/memory_limits.h"
-#include "render/compile_scene.h"
-#include "render/texture_lookup.h"
+#include "compile/compile_scene.h"
+#include "compile/texture_lookup.h"
 #include "scene/texture_slots.h"
 
 namespace pathcl {

@@ -2,7 +2,7 @@
 // reflection with the normalized exact-Fresnel curve of kernels/closure/fresnel.h), tabulated over
 // cos theta, roughness and ior for the kernels' albedo scaling of the diffuse base. The
 // layout is defined in kernels/closure/layer_table.h (LAYER_*). The table is computed at build
-// time by tools/make_layer_albedo_table.cpp, which calls compute_layer_albedo_table.
+// time by host/tables/make_layer_albedo_table.cpp, which calls compute_layer_albedo_table.
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-#include "render/layer_albedo.h"
+#include "tables/layer_albedo.h"
 
 #include <algorithm>
 #include <cmath>

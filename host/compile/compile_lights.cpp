@@ -1,14 +1,14 @@
 // Lights for the device: one Light record per light with its per-type data, in the order
 // CompiledScene documents, and the power that sets how often each is picked (luminance,
-// W; render/light_distribution.h). Also marks every emissive triangle's shading record
+// W; compile/light_distribution.h). Also marks every emissive triangle's shading record
 // with its light.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "render/compile_scene.h"
-#include "render/environment.h"
-#include "render/texture_lookup.h"
+#include "compile/compile_scene.h"
+#include "compile/environment.h"
+#include "compile/texture_lookup.h"
 
 namespace pathcl {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/light_distribution.h"
+#include "compile/light_distribution.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/light_tree.h"
+#include "compile/light_tree.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 // The camera for the device, for one image size.
 #include <cmath>
 
-#include "render/compile_scene.h"
+#include "compile/compile_scene.h"
 
 namespace pathcl {
 
