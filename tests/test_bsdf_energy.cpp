@@ -107,11 +107,13 @@ TEST(BsdfEnergy, GltfOwnDiffuseWeightGainsEnergyAndIsCaught)
     // glTF appendix B weights the diffuse base by 1 - max(F(wo.h)). Patched in on purpose,
     // a white rough plastic reflects 1.30 times what it receives at cos 0.05: the energy
     // tests above must see that.
-    const KernelPatch gltf_diffuse_weight{"closure/bsdf_eval.cl",
-                                          "            e.f_cos = p->diffuse_scale * k * wi.z;\n",
-                                          R"(            float3 hf = normalize(wo + wi);
+    const KernelPatch gltf_diffuse_weight{"closure/bsdf_eval.cl", "        diffuse_eval(p, wi, &e);\n",
+                                          R"(        diffuse_eval(p, wi, &e);
+        if (!p->inside) {
+            float3 hf = normalize(wo + wi);
             e.f_cos = p->base_color * ((1.0f - p->metallic) * (1.0f - p->transmission) *
                                        (1.0f - max3(fresnel_specular_layer(p, fabs(dot(wo, hf))))) * INV_PI * wi.z);
+        }
 )"};
     static cl::Program faulty =
         test::build_test_program("bsdf_test_kernels.cl", FEATURE_GLOSSY | FEATURE_TRANSMISSION, {gltf_diffuse_weight});
@@ -224,7 +226,7 @@ TEST(BsdfEnergy, SheenAsWrittenGainsEnergyAndIsCaught)
     // The extension's lobe without the division by max(1, E_s), patched in on purpose: a
     // white sheen of roughness 0.05 reflects about 3x what it receives at cos 0.01 (the
     // quadrature's E_s is 3.15), which the bound above must see.
-    const KernelPatch undivided{"closure/bsdf_eval.cl",
+    const KernelPatch undivided{"closure/sheen.cl",
                                 "    e->f_cos += p->sheen * (f / fmax(fmax(p->sheen_e_o, e_i), 1.0f));\n",
                                 "    e->f_cos += p->sheen * f;\n"};
     static cl::Program faulty = test::build_test_program(

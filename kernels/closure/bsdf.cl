@@ -1,5 +1,7 @@
 /* The material model: glTF's metallic-roughness BSDF at a shading point (bsdf_params),
- * evaluated by closure/bsdf_eval.cl and sampled by closure/bsdf_sample.cl.
+ * evaluated by closure/bsdf_eval.cl and sampled by closure/bsdf_sample.cl, which dispatch
+ * to one file per lobe: diffuse, conductor, specular (the GGX reflection the conductor and
+ * the dielectric layer share), dielectric, sheen and coat.
  *
  * Directions are world-space unit vectors; wo points away from the surface, towards the
  * previous vertex. The shading point has ng and ns on wo's side. A direction is reflected

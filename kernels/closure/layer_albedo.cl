@@ -250,7 +250,7 @@ static inline float sheen_albedo(const BsdfParams* p, float mu)
 
 /* What the sheen leaves the base lobes between wo and wi: 1 - max3(sheen) min(1,
  * max(E_s(cos_o), E_s(|cos_i|))), the extension's reciprocal albedo scaling with the albedo
- * capped at 1 (the lobe itself is divided by max(1, ...), see closure/bsdf_eval.cl). */
+ * capped at 1 (the lobe itself is divided by max(1, ...), see closure/sheen.cl). */
 static inline float sheen_base_scale(const BsdfParams* p, float e_i)
 {
     return 1.0f - p->sheen_max * fmin(fmax(p->sheen_e_o, e_i), 1.0f);

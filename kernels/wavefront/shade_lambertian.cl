@@ -202,7 +202,7 @@ PATHCL_KERNEL void wavefront_shade(PATHCL_KERNEL_PARAMS FrameParams frame, __glo
         }
     }
 
-    /* The cosine-weighted bounce (closure/bsdf_sample.cl's Lambertian case). */
+    /* The cosine-weighted bounce (closure/diffuse.cl's Lambertian case). */
     Lane3 wi_local = lane_cosine_hemisphere(LANES_F(s, u_bsdf0), LANES_F(s, u_bsdf1));
     Lane3 wi = lane_to_world(wi_local, sp.ns);
     LaneF bsdf_pdf = wi_local.z * INV_PI;
