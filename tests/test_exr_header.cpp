@@ -172,6 +172,27 @@ TEST_F(ExrHeader, RefusesAnAttributeLongerThanTheFile)
     EXPECT_NE(error_of(p).find("attribute \"note\" claims 2147418112 bytes"), std::string::npos);
 }
 
+// OpenEXR reads a box2i's 16 bytes whatever byte count it declares, then the next
+// attribute from there: 1040 declared bytes hid a string attribute of 2 GB from a walk
+// that skipped them (found by tools/fuzz.sh partial).
+TEST_F(ExrHeader, RefusesAFixedSizeValueOfAnotherByteCount)
+{
+    const Bytes box = le32(0) + le32(0) + le32(7) + le32(0);
+    const Bytes hidden = Bytes("note") + '\0' + "string" + '\0' + le32(0x7fff0000) + "x";
+    const std::string e = error_of(file("box.exr", exr(2, attribute("window", "box2i", box + hidden))));
+    const std::string claims = "claims " + std::to_string(box.size() + hidden.size()) + " bytes (the type has 16)";
+    EXPECT_NE(e.find("attribute \"window\" of type \"box2i\" " + claims), std::string::npos) << e;
+    EXPECT_EQ(error_of(file("box-good.exr", exr(2, attribute("window", "box2i", box)))), "");
+}
+
+// OpenEXR reads a channel list up to its empty name, and the next attribute from there.
+TEST_F(ExrHeader, RefusesAChannelListThatEndsBeforeItsByteCount)
+{
+    const Bytes list = Bytes("B") + '\0' + le32(2) + Bytes(4, '\0') + le32(1) + le32(1) + '\0';
+    const std::string e = error_of(file("list.exr", exr(2, attribute("more", "chlist", list + "abcd"))));
+    EXPECT_NE(e.find("a channel list ends 4 bytes before its byte count"), std::string::npos) << e;
+}
+
 TEST_F(ExrHeader, RefusesAStringVectorWhoseStringsOverrunIt)
 {
     const Bytes good = le32(3) + "abc" + le32(0);
