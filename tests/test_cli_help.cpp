@@ -239,6 +239,13 @@ TEST_F(CliHelp, AMisspeltFlagGetsTheNearestFlags)
         EXPECT_EQ(run(render + args), 2) << args;
         EXPECT_EQ(one_line_error(), "pathcl: error: " + message + "\n");
     }
+    // Reported before the missing required flag, which may be the misspelt one.
+    EXPECT_EQ(run("render " + kCornell + kTiny + " --outptu out.exr"), 2);
+    EXPECT_EQ(one_line_error(), "pathcl: error: --outptu: render has no such flag; did you mean --output?\n");
+    EXPECT_EQ(run("render --sp 4 " + kCornell), 2);
+    EXPECT_EQ(one_line_error(), "pathcl: error: --sp: render has no such flag; did you mean --spp?\n");
+    EXPECT_EQ(run("render " + kCornell), 2);
+    EXPECT_EQ(one_line_error(), "pathcl: error: --output is required\n");
     EXPECT_EQ(run("bench " + kCornell + " --run 3" + kTiny), 2);
     EXPECT_EQ(one_line_error(), "pathcl: error: --run: bench has no such flag; did you mean --runs?\n");
     EXPECT_EQ(run("--verison"), 2);

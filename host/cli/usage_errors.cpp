@@ -125,7 +125,10 @@ std::string did_you_mean(const std::vector<std::string>& names)
 
 std::string usage_error(const CLI::App& app, const CLI::ParseError& error)
 {
-    if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
+    // CLI11 checks required options before it reports the arguments it did not expect, but
+    // a misspelt flag is the better report: it is often the required one (--outptu).
+    const bool extras_error = dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr;
+    if (extras_error || (dynamic_cast<const CLI::RequiredError*>(&error) && !app.remaining(true).empty())) {
         const std::vector<std::string> extras = app.remaining(true);
         const CLI::App& command = innermost_command(app);
         const std::string name = command.get_parent() ? command.get_name() : "pathcl";
