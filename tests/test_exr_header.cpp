@@ -223,6 +223,23 @@ TEST_F(ExrHeader, RefusesAChunkCountTheFileCannotHold)
     EXPECT_NE(e.find("a chunk count of 268435456"), std::string::npos) << e;
 }
 
+// Only the OpenEXR, Radiance HDR, PNG and JPEG readers are ever asked: OpenImageIO 2.4
+// tries every reader it has on a file its extension's reader refuses, and its RLA reader
+// aborted on a .exr file whose magic number a fuzzer had changed (tools/fuzz.sh partial).
+TEST_F(ExrHeader, AFileOfAnotherFormatIsRefusedByItsFirstBytes)
+{
+    Bytes rla = exr();
+    rla.replace(0, 4, Bytes("\x00\x00\x00\x00", 4));
+    const std::string p = file("not-exr.exr", rla);
+    EXPECT_FALSE(is_exr_file(p));
+    try {
+        (void)read_image(p);
+        ADD_FAILURE() << "read";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), p + ": not an OpenEXR, Radiance HDR, PNG or JPEG image");
+    }
+}
+
 TEST_F(ExrHeader, RefusesAHeaderCutShort)
 {
     const Bytes whole = exr();

@@ -1304,6 +1304,38 @@ def service_cases():
     case("merge-found-box2i-hides-attribute", "-", "error",
          "a partial render whose dataWindow declares 1040 bytes, inside which a string attribute claims 1.9 GB",
          args="merge {FILES}/findings/box2i-hides-attribute.exr -o {CWD}/m.exr", names="box2i-hides-attribute.exr")
+    # And after those: a partial render with unknown version flags, which OpenEXR refuses,
+    # after which OpenImageIO 2.4 tried every reader it has, and its RLA reader aborted.
+    write("findings/abort-rla-reader.exr", base64.b64decode(
+        "di8xAQIQc3EuRy4yAAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMwAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9z"
+        "cS5HLjQAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy41tJbwW9HXoq+F32LQTXVNdW+x0DMynfa9waCb6mSfbPTHpAGv"
+        "prW+AQAAAAAAAAC7AAAAeF5jaBgK+EBTHQTOyHYvMQECEAAAY2FwRGF0ZQBzdHJpbmcAEwAAADIwMjY6MTE6MjggMjA6MTg6NTJj"
+        "aGFubmVscwBjaAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuNbSW8FvR16Kvhd9i0E11TXVvsdAzMp32vcGgm+pkn2z0x6QB"
+        "r6a1vgEAAAAAAAAAuwAAAHheY2gYCvhAUx0Ezsh2LzEBAhAAAGNhcERhdGUAc3RyaW5nABMAAAAyMDI2OjExOjI4IDIwOjE4OjUy"
+        "Y2hhbm5lbHMAY2hsaQAAY2FwRGF0ZQBzdHJpbmcAEwAAADIwMjY6MTE6MjggMjA6MzY6NDVjaGFubmVscwBjaGxpc3QAiAAAAEIA"
+        "AgAAAAAAAAABAAAAAQAAAEcAAgAAAAAAAAABAAAAAQAAAFIAAgAAAAAAAAABAAAAAQAAAHZhcmlhbmNlLkIAAgAAAAAAAAABAAAA"
+        "AQAAAHZhcmlhbmNlLkcAAgAAAAAAAAABAAAAAQAAAHZhcmlhbmNlLlIAAgAAAAAAAAABAAAAAQAAAABjaHVua0NvdW50AGludAAE"
+        "AAAAAQAAAGNvbXByZXNzaW9uAGNvbXByZXNzaW9uAAEAAAADZGF0YVdpbmRvdwBib3gyaQAQAAAAAAAAAAAAAAADAAAAAwAAAGRp"
+        "c3BsYXlXaW5kb3cAYm94MmkAEAAAAAAAAAAAAAAAAwAAAAMAAABsaW5lT3JkZXIAbGluZU9yZGVyAAEAAAAAbmFtZQBzdHJpbmcA"
+        "BQAAAGltYWdlcGF0aGNsOmJhdGNoX3NwcABzdHJpbmcAAgAAADU2cGF0aGNsOmJhdGNNTU1NaGVzAHN0cmluZwABAAAAMnBhdGhj"
+        "bDpmaWxtX2JhZF9zYW1wbGVzAHN0cmluZwABAAAAMHBhOjI4IDIwOjM2OjQ1Y2hhbkFlbHMAY2hsaXN0AKcIAABiYXRjaF9tZWFu"
+        "X3NxLkIsMAAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5CLjEAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi4y"
+        "AAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkIuMwAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5CLjQAAAAAAAAA"
+        "AAABAAAAAQAAAGJhdGNoX21lYW5fc3EuQi41AAAAAAAAAAAAAQAAAAEAAABiYXRjaF9tZWFuX3NxLkcuMAAAAAAAAAAAAAEAAAAB"
+        "AAAAYmF0Y2hfbWVhbl9zcS5HLjEAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5fc3EuRy4yAAAAAAAAAAAAAQAAAAEAAABiYXRj"
+        "aF9tZWFuX3NxLkcuMwAAAAAAAAAAAAEAAAABAAAAYmF0Y2hfbWVhbl9zcS5HLjQAAAAAAAAAAAABAAAAAQAAAGJhdGNoX21lYW5f"
+        "c3EuRy41tJbwW9HXoq+F32LQTXVNdW+x0DMynfa9waCb6mSfbPTHpAGvprW+AQAAAAAAAAC7AAAAeF5jaBgK+EBTHQTOyHYvMQEC"
+        "EAAAY2FwRGF0ZQBzdHJpbmcAEwAAADIwMjY6MTE6MjggMjA6MTg6NTJjaGFubmVscwBjaAAAAAAAAQAAAAEAAABiYXRjaF9tZWFu"
+        "X3NxLkcuNbSW8FvR16Kvhd9i0E11TXVvsdAzMp32vcGgm+pkn2z0x6QBr6a1vgEAAAAAAAAAuwAAAHheY2gYCvhAUx0Ezsh2LzEB"
+        "AhAAAGNhcERhdGUAc3RyaW5nABMAAAAyMDI2OjExOjI4IDIwOjE4OjUyY2hhbm5lbHMAY2hsaXN0AIgAAABCAAIAAAAAAAAAAQAA"
+        "AAEAAABHAAIAAAAAAAAAAQAAAAEAAABSAAIAAAAAAAAAAQAAAAEAAAB2YXJpYW5jZS5CAAIAAAAAAAAAAQAAAAEAAAB2YXJpYW5j"
+        "ZS5HAAIAAAAAAAAAAQAAAAEAAAB2YXJpYW5jZS5SAAIAAAAAAAAAAQAAAAEAAAAAY2h1bmtDb3VudABpbnQABAAAAAEAAABjb21w"
+        "cmVzc2lvbgBjb21wcmVzc2lvbgABAAAAA2RhdGFXaW5kb3cAYm94MmkAEAAAAIBAdPmGhsZ6dBH8YKSpHwXIgHB66irrLkUXwwdG"
+        "mvrGetJS4PBWTyg9NdZPy5qWhc8EVDDS1I8CVEAoAAAAAAAAAAADAAAAAwAAAGRpc3BsYXlXaW5kb3cAYm/19fX19T011XWVdZYT"
+        "H74jSD1RipAA9fX19fX19fX19fX19fX19a3VTyhA"))
+    case("merge-found-abort-rla-reader", "-", "error",
+         "a partial render with unknown EXR version flags (OpenImageIO's RLA reader aborted on it)",
+         args="merge {FILES}/findings/abort-rla-reader.exr -o {CWD}/m.exr", names="abort-rla-reader.exr")
     case("merge-not-partial", "-", "error", "merge of an EXR that is no partial render (an environment map)",
          args="merge {FILES}/env/valid.exr -o {CWD}/m.exr", names="valid.exr")
     case("merge-output-is-input", "-", "error", "merge whose output is one of its inputs, spelled otherwise",
