@@ -55,25 +55,16 @@ bool written_completely(const std::string& file, int width, int height, int part
     return ok;
 }
 
-// The OpenImageIO reader for a file's first bytes: OpenEXR, Radiance HDR, PNG or JPEG;
-// nullptr for anything else. Given any other file, ImageInput::open tries every reader it
-// has, and some abort the process on a bad file (the RLA reader's "Invalid colour channel
-// type", found by tools/fuzz.sh partial on a .exr file that was not one).
+// The reader for a file's first bytes (image_format_of). Given any other file,
+// ImageInput::open tries every reader it has, and some abort the process on a bad file
+// (the RLA reader's "Invalid colour channel type", found by tools/fuzz.sh partial on a
+// .exr file that was not one).
 const char* readable_format(const std::string& path)
 {
     unsigned char b[8] = {};
     std::ifstream in(path, std::ios::binary);
     in.read(reinterpret_cast<char*>(b), sizeof b);
-    const std::size_t n = static_cast<std::size_t>(in.gcount());
-    if (n >= 4 && b[0] == 0x76 && b[1] == 0x2f && b[2] == 0x31 && b[3] == 0x01)
-        return "openexr";
-    if (n >= 2 && b[0] == '#' && b[1] == '?')
-        return "hdr";
-    if (n >= 8 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0)
-        return "png";
-    if (n >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
-        return "jpeg";
-    return nullptr;
+    return image_format_of(b, static_cast<std::size_t>(in.gcount()));
 }
 
 // Opens an image to be read whole: a regular file (a FIFO would block) of at most
@@ -90,7 +81,7 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path)
     const char* format = readable_format(path);
     if (!format)
         throw Error(path + ": not an OpenEXR, Radiance HDR, PNG or JPEG image");
-    if (is_exr_file(path))
+    if (std::strcmp(format, "openexr") == 0)
         check_exr_headers(path); // what OpenEXR and OpenImageIO would trust (image/exr_header.h)
     // That format's reader alone, never OpenImageIO's search through all of them.
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(format);
@@ -179,6 +170,20 @@ void write_exr(const std::string& file, const std::string& path, const Image& im
 }
 
 } // namespace
+
+const char* image_format_of(const unsigned char* b, std::size_t size)
+{
+    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 4 && b[0] == 0x76 && b[1] == 0x2f && b[2] == 0x31 && b[3] == 0x01)
+        return "openexr";
+    if (size >= 2 && b[0] == '#' && b[1] == '?')
+        return "hdr";
+    if (size >= 8 && std::memcmp(b, png, 8) == 0)
+        return "png";
+    if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
+        return "jpeg";
+    return nullptr;
+}
 
 void check_output_path(const std::string& path)
 {

@@ -34,6 +34,10 @@ constexpr std::size_t kMaxImagePixels = std::size_t(1) << 27;
 constexpr std::size_t kMaxImageRowBytes = std::size_t(1) << 20;
 constexpr std::size_t kMaxImageBytes = std::size_t(1) << 31;
 
+// The OpenImageIO format plugin an image's first bytes name: "openexr", "hdr" (Radiance),
+// "png" or "jpeg"; nullptr for anything else. The only readers pathcl lets OpenImageIO use.
+const char* image_format_of(const unsigned char* bytes, std::size_t size);
+
 // Reads an EXR written by write_image (variance channels optional: zero if absent), or
 // any image OpenImageIO reads, from a regular file of at most kMaxImagePixels pixels.
 // The film part of a partial render is not read (read_film_part).

@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "common/muted_stderr.h"
+#include "image/image_io.h"
 
 namespace pathcl {
 namespace {
@@ -22,12 +23,8 @@ constexpr std::size_t kMaxTexels = std::size_t(1) << 27;
 // The format plugin for the bytes' signature: glTF 2.0 images are PNG or JPEG.
 const char* image_format(const unsigned char* b, std::size_t size)
 {
-    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (size >= 8 && std::memcmp(b, png, 8) == 0)
-        return "png";
-    if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
-        return "jpeg";
-    return nullptr;
+    const char* format = image_format_of(b, size);
+    return format && (std::strcmp(format, "png") == 0 || std::strcmp(format, "jpeg") == 0) ? format : nullptr;
 }
 
 void check_size(std::size_t width, std::size_t height, const std::string& what)
