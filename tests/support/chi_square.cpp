@@ -58,10 +58,15 @@ double adaptive(const F& f, double a, double b, double whole, double tol, int de
 
 // Starts from a few panels so that a lobe narrower than the cell is less likely to fall
 // between the first nodes and be missed.
+constexpr int first_panels = 4;
+// A cell whose first integral is 0 but that a sample fell in is integrated again from this
+// many panels: a sliver of a light's silhouette across its corner can fall between the
+// first nodes.
+constexpr int sliver_panels = 64;
+
 template <class F>
-double integrate(const F& f, double a, double b, double tol)
+double integrate(const F& f, double a, double b, double tol, int panels)
 {
-    constexpr int panels = 4;
     double s = 0.0;
     for (int k = 0; k < panels; ++k) {
         double pa = a + (b - a) * k / panels, pb = k + 1 == panels ? b : a + (b - a) * (k + 1) / panels;
@@ -73,7 +78,8 @@ double integrate(const F& f, double a, double b, double tol)
 // Integral of the pdf over one cell, in (cos theta, phi) where d(solid angle) = du dphi.
 // tol bounds the error of the result; each inner phi integral gets a tenth of the
 // matching share so its error does not drive the outer refinement.
-double integrate_cell(const std::function<double(const glm::dvec3&)>& pdf, const Grid& g, int t, int p, double tol)
+double integrate_cell(const std::function<double(const glm::dvec3&)>& pdf, const Grid& g, int t, int p, double tol,
+                      int panels = first_panels)
 {
     double u0 = std::cos((t + 1) * g.dtheta()), u1 = std::cos(t * g.dtheta());
     double phi0 = p * g.dphi(), phi1 = (p + 1) * g.dphi();
@@ -81,9 +87,9 @@ double integrate_cell(const std::function<double(const glm::dvec3&)>& pdf, const
     auto over_phi = [&](double u) {
         double s = std::sqrt(std::max(0.0, 1.0 - u * u));
         auto f = [&](double phi) { return pdf(glm::dvec3(s * std::cos(phi), s * std::sin(phi), u)); };
-        return integrate(f, phi0, phi1, inner_tol);
+        return integrate(f, phi0, phi1, inner_tol, panels);
     };
-    return integrate(over_phi, u0, u1, tol);
+    return integrate(over_phi, u0, u1, tol, panels);
 }
 
 std::string cell_name(const Grid& g, int cell)
@@ -197,6 +203,15 @@ ChiSquareResult chi_square_directions(const std::vector<glm::dvec3>& sample_dire
         }
         observed[cell] += 1.0;
     }
+
+    for (int c = 0; c < g.cells(); ++c)
+        if (expected[c] == 0.0 && observed[c] > 0.0) {
+            const double integral = integrate_cell(pdf, g, c / phi_res, c % phi_res, 0.5 / n, sliver_panels);
+            if (std::isfinite(integral) && integral > 0.0) {
+                r.pdf_integral += integral;
+                expected[c] = integral * n;
+            }
+        }
 
     // Samples where the pdf is zero: no statistics needed.
     int empty_hit = -1;
