@@ -99,9 +99,9 @@ TEST(RenderTextures, ConstantTexturesRenderTheCornellBoxReference)
 }
 
 // A smooth-shaded coarse sphere (normals from the centre, texture coordinates u around,
-// v down) on a floor under an emissive quad; with a 1 x 1 normal texture `normal_texel`
-// on the sphere when given.
-Scene sphere_scene(const std::vector<std::uint8_t>& normal_texel)
+// v down) on a floor under an emissive quad; with a 1 x 1 16-bit normal texture
+// `normal_texel` on the sphere when given.
+Scene sphere_scene(const std::vector<std::uint16_t>& normal_texel)
 {
     test::GltfBuilder b;
     std::vector<glm::vec3> p, n;
@@ -134,7 +134,7 @@ Scene sphere_scene(const std::vector<std::uint8_t>& normal_texel)
                             b.add_normals(n));
     b.set_attribute(sphere, "TEXCOORD_0", b.add_texcoords(uv));
     if (!normal_texel.empty())
-        b.model.materials.back().normalTexture.index = b.add_texture(b.add_png_image(1, 1, normal_texel));
+        b.model.materials.back().normalTexture.index = b.add_texture(b.add_png_image16(1, 1, normal_texel));
     b.add_root(b.add_node(sphere, {}, {0.0, 1.0, 0.0}));
     int floor_mat = b.add_material(glm::vec3(0.6f));
     int floor = b.add_quad_mesh({{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}}, floor_mat);
@@ -148,12 +148,14 @@ Scene sphere_scene(const std::vector<std::uint8_t>& normal_texel)
 
 TEST(RenderTextures, FlatNormalMapMatchesNoNormalMap)
 {
-    // Texel (128, 128, 255) is the flat normal up to 1/255 (0.3 degrees): the coarse
-    // smooth-shaded sphere must render as without a normal map. Broken variants seen to
-    // fail: the tangent frame built around the geometric normal (facets appear); the
-    // bitangent and normal swapped.
+    // The 16-bit texel (32768, 32768, 65535) is the flat normal up to 2^-15 (0.002
+    // degrees): the coarse smooth-shaded sphere must render as without a normal map. (The
+    // 8-bit (128, 128, 255) tilts it by 0.3 degrees, which brightens this image by 0.5 %:
+    // a real difference, seen at 512 spp.) Broken variants seen to fail: the tangent frame
+    // built around the geometric normal (facets appear); the bitangent and normal swapped
+    // (also with the 16-bit texel).
     Scene plain = sphere_scene({});
-    Scene mapped = sphere_scene({128, 128, 255, 255});
+    Scene mapped = sphere_scene({32768, 32768, 65535, 65535});
     RenderResult a = render(plain, small_options(48, 128, 1));
     RenderResult b = render(mapped, small_options(48, 128, 2));
     EXPECT_EQ(a.stats.bad_samples, 0u);
