@@ -34,8 +34,9 @@
 #define FEATURE_SHEEN (1u << 19)             /* a material with a KHR_materials_sheen colour above 0 */
 #define FEATURE_ANISOTROPY (1u << 20)        /* a material with KHR_materials_anisotropy strength above 0 */
 /* Model options added later. */
-#define FEATURE_LIGHT_TREE (1u << 21) /* --light-sampler tree: lights picked by the light tree */
-#define FEATURE_ALL ((1u << 22) - 1u)
+#define FEATURE_LIGHT_TREE (1u << 21)            /* --light-sampler tree: lights picked by the light tree */
+#define FEATURE_SOLID_ANGLE_TRIANGLES (1u << 22) /* --triangle-sampling solid-angle */
+#define FEATURE_ALL ((1u << 23) - 1u)
 
 #ifdef __OPENCL_C_VERSION__
 
@@ -109,8 +110,14 @@
 #if PATHCL_FEATURES & FEATURE_LIGHT_TREE
 #define PATHCL_LIGHT_TREE
 #endif
+#if (PATHCL_FEATURES & FEATURE_SOLID_ANGLE_TRIANGLES) && (PATHCL_FEATURES & FEATURE_AREA_LIGHTS)
+#define PATHCL_SOLID_ANGLE_TRIANGLES
+#endif
 
 /* Derived guards. */
+#if defined(PATHCL_LIGHT_TREE) || defined(PATHCL_SOLID_ANGLE_TRIANGLES)
+#define PATHCL_KEEPS_PREV_REF /* a path keeps the point and normal it left from (integrator/path_state.cl) */
+#endif
 #if PATHCL_FEATURES & (FEATURE_AREA_LIGHTS | FEATURE_POINT_LIGHTS | FEATURE_SPOT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS | \
                        FEATURE_SPHERE_LIGHTS | FEATURE_ENVIRONMENT)
 #define PATHCL_HAS_LIGHTS /* next event estimation */

@@ -8,6 +8,7 @@
 
 #include "compile/light_distribution.h"
 #include "light/light_pick.h"
+#include "light/triangle_sampling.h"
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
 
@@ -15,7 +16,7 @@ namespace pathcl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kTests = 4; // chi-square tests in this file (Šidák correction)
+constexpr int kTests = 6; // chi-square tests in this file (Šidák correction)
 
 const cl::Program& light_program()
 {
@@ -116,6 +117,46 @@ TEST(LightSampling, FromInsideASphereThereIsNoSample)
         ASSERT_EQ(v.w, 0.0f);
 }
 
+Light triangle_light(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2)
+{
+    Light l{};
+    l.type = LIGHT_TRIANGLE;
+    l.data.triangle.v0 = {p0.x, p0.y, p0.z, 0};
+    l.data.triangle.v1 = {p1.x, p1.y, p1.z, 0};
+    l.data.triangle.v2 = {p2.x, p2.y, p2.z, 0};
+    l.data.triangle.area = 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
+    l.data.triangle.texture = TEXTURE_NONE;
+    l.radiance = {1, 1, 1, 0};
+    return l;
+}
+
+// Where the ray from the origin along w meets the front of triangle p0 p1 p2 (emission
+// leaves the front only): its distance, or 0.
+double front_hit_distance(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& w)
+{
+    const glm::dvec3 nn = glm::cross(p1 - p0, p2 - p0), n = glm::normalize(nn);
+    const double denom = glm::dot(w, n);
+    if (!(denom < 0.0))
+        return 0.0; // facing away
+    const double t = glm::dot(p0, n) / denom;
+    const glm::dvec3 p = t * w;
+    const glm::dvec3 c0 = glm::cross(p1 - p0, p - p0), c1 = glm::cross(p2 - p1, p - p1),
+                     c2 = glm::cross(p0 - p2, p - p2);
+    if (t <= 0.0 || glm::dot(c0, nn) < 0.0 || glm::dot(c1, nn) < 0.0 || glm::dot(c2, nn) < 0.0)
+        return 0.0;
+    return t;
+}
+
+// Solid-angle pdf of uniform area sampling seen from the origin: t^2 / (A cos).
+double triangle_area_pdf(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& w)
+{
+    const double t = front_hit_distance(p0, p1, p2, w);
+    if (t == 0.0)
+        return 0.0;
+    const glm::dvec3 nn = glm::cross(p1 - p0, p2 - p0);
+    return t * t / (0.5 * glm::length(nn) * -glm::dot(w, glm::normalize(nn)));
+}
+
 TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
 {
     // Selection (equal power: pmf 1/3 each) times each light's own solid-angle pdf. A
@@ -123,41 +164,150 @@ TEST(LightSampling, TwoTrianglesAndASphereByAreaAndCone)
     glm::vec3 a0(-1, -1, 2), a1(1, -1, 2), a2(0, 1, 2.5f); // faces -z... towards ref? see below
     glm::vec3 b0(1, 2, -1), b1(2, 2, 1), b2(1, 3, 0);
     glm::vec3 sc(-1.5f, 0.0f, -1.0f);
-    auto tri = [](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
-        Light l{};
-        l.type = LIGHT_TRIANGLE;
-        l.data.triangle.v0 = {p0.x, p0.y, p0.z, 0};
-        l.data.triangle.v1 = {p1.x, p1.y, p1.z, 0};
-        l.data.triangle.v2 = {p2.x, p2.y, p2.z, 0};
-        l.data.triangle.area = 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
-        l.data.triangle.texture = TEXTURE_NONE;
-        l.radiance = {1, 1, 1, 0};
-        return l;
-    };
-    auto triangle_pdf = [](glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, const glm::dvec3& w) {
-        // Solid-angle pdf of uniform area sampling: t^2 / (A cos), front side only.
-        glm::dvec3 e1 = p1 - p0, e2 = p2 - p0, n = glm::cross(e1, e2);
-        double area = 0.5 * glm::length(n);
-        n = glm::normalize(n);
-        double denom = glm::dot(w, n);
-        if (!(denom < 0.0))
-            return 0.0; // facing away (emission leaves the front only)
-        double t = glm::dot(p0, n) / denom;
-        glm::dvec3 p = t * w;
-        glm::dvec3 c0 = glm::cross(p1 - p0, p - p0), c1 = glm::cross(p2 - p1, p - p1), c2 = glm::cross(p0 - p2, p - p2);
-        glm::dvec3 nn = glm::cross(e1, e2);
-        if (t <= 0.0 || glm::dot(c0, nn) < 0.0 || glm::dot(c1, nn) < 0.0 || glm::dot(c2, nn) < 0.0)
-            return 0.0;
-        return t * t / (area * -denom);
-    };
     auto sphere = sphere_cone_pdf(sc, 0.5, glm::dvec3(0.0));
     auto pdf = [&](const glm::dvec3& w) {
-        return (triangle_pdf(a0, a1, a2, w) + triangle_pdf(b0, b1, b2, w) + sphere(w)) / 3.0;
+        return (triangle_area_pdf(a0, a1, a2, w) + triangle_area_pdf(b0, b1, b2, w) + sphere(w)) / 3.0;
     };
-    auto s = sample_lights({sphere_light(sc, 0.5f), tri(a0, a1, a2), tri(b0, b1, b2)}, glm::vec3(0.0f), 1000000);
+    auto s = sample_lights({sphere_light(sc, 0.5f), triangle_light(a0, a1, a2), triangle_light(b0, b1, b2)},
+                           glm::vec3(0.0f), 1000000);
     test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
     EXPECT_TRUE(r.passed) << r.summary();
     EXPECT_LT(r.pdf_integral, 1.0) << "one triangle faces away, so some samples must fail";
+}
+
+// The solid angle of triangle p0 p1 p2 seen from the origin (Van Oosterom and Strackee).
+double solid_angle(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2)
+{
+    const glm::dvec3 a = glm::normalize(p0), b = glm::normalize(p1), c = glm::normalize(p2);
+    return 2.0 *
+           std::atan2(std::fabs(glm::dot(a, glm::cross(b, c))), 1.0 + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a));
+}
+
+// A program with --triangle-sampling solid-angle, its source changed by `patches`.
+cl::Program solid_angle_program(const std::vector<KernelPatch>& patches = {})
+{
+    return test::build_test_program("trace_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_SOLID_ANGLE_TRIANGLES,
+                                    patches);
+}
+
+// A triangle facing the origin, large seen from there (area / distance^2 to its centroid
+// about 5, far above TRIANGLE_SOLID_ANGLE_MIN), moved away by `shift` along z.
+struct NearTriangle {
+    glm::dvec3 p0, p1, p2;
+};
+NearTriangle near_triangle(double shift)
+{
+    return {{-0.6, -0.5, 0.4 + shift}, {0.1, 0.8, 0.3 + shift}, {0.7, -0.4, 0.5 + shift}};
+}
+
+// What the kernel compares with TRIANGLE_SOLID_ANGLE_MIN: area over the squared distance
+// from the origin to the centroid.
+double area_over_distance2(const NearTriangle& t)
+{
+    const glm::dvec3 centroid = (t.p0 + t.p1 + t.p2) / 3.0;
+    return 0.5 * glm::length(glm::cross(t.p1 - t.p0, t.p2 - t.p0)) / glm::dot(centroid, centroid);
+}
+
+TEST(LightSampling, ANearTriangleIsSampledUniformlyWithinItsSolidAngle)
+{
+    // Arvo's construction (light/spherical_triangle.cl), seen from a point without a
+    // normal (the cosine warp then weighs every corner alike): every direction within the
+    // spherical triangle with pdf 1 / omega, none outside. Broken variants seen to fail:
+    // the arc's cosine drawn with u.y squared (below), and Arvo's formulas as written,
+    // whose sine of the arc from a to c' (a square root of 1 - cos) put 26 of these 10^6
+    // samples outside the triangle (the pdf check).
+    const NearTriangle t = near_triangle(0.0);
+    const double omega = solid_angle(t.p0, t.p1, t.p2);
+    ASSERT_GT(area_over_distance2(t), TRIANGLE_SOLID_ANGLE_MIN);
+    ASSERT_LT(omega, TRIANGLE_SOLID_ANGLE_MAX);
+    auto pdf = [&](const glm::dvec3& w) { return front_hit_distance(t.p0, t.p1, t.p2, w) > 0.0 ? 1.0 / omega : 0.0; };
+    std::vector<pcl_float4> radiance;
+    auto s = test::sample_lights_on_device(solid_angle_program(), equal_power({triangle_light(t.p0, t.p1, t.p2)}),
+                                           glm::vec3(0.0f), 1234u, 1000000, &radiance);
+    test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
+    EXPECT_TRUE(r.passed) << r.summary();
+    EXPECT_NEAR(r.pdf_integral, 1.0, 1e-3);
+    expect_kernel_pdf_matches(s, pdf);
+    for (std::size_t i = 0; i < s.size(); i += 997)
+        EXPECT_EQ(radiance[i].x, s[i].w > 0.0f ? 1.0f : 0.0f) << "sample " << i;
+
+    const std::vector<KernelPatch> broken = {{"light/spherical_triangle.cl",
+                                              "float one_minus_z = u.y * 0.5f * dot(d, d);",
+                                              "float one_minus_z = u.y * u.y * 0.5f * dot(d, d);"}};
+    auto b = test::sample_lights_on_device(solid_angle_program(broken), equal_power({triangle_light(t.p0, t.p1, t.p2)}),
+                                           glm::vec3(0.0f), 1234u, 1000000);
+    EXPECT_FALSE(test::chi_square_directions(test::to_directions(b), pdf, 10, 20, 0.01, kTests).passed);
+}
+
+// The pdf of solid-angle sampling warped by the cosine at the origin (normal n), from
+// the host's own inversion of Arvo's map: c' where the great circle from b through w
+// meets the arc a c, u = (area(a b c') / omega, |w - b|^2 / |c' - b|^2), and the bilinear
+// density of u with the corners' cosines (at least 0.01) as weights.
+double warped_solid_angle_pdf(const NearTriangle& t, const glm::dvec3& n, const glm::dvec3& w)
+{
+    if (front_hit_distance(t.p0, t.p1, t.p2, w) == 0.0)
+        return 0.0;
+    const glm::dvec3 a = glm::normalize(t.p0), b = glm::normalize(t.p1), c = glm::normalize(t.p2);
+    const double omega = solid_angle(a, b, c);
+    glm::dvec3 cp = glm::normalize(glm::cross(glm::cross(b, w), glm::cross(c, a)));
+    if (glm::dot(cp, a + c) < 0.0)
+        cp = -cp;
+    const double x = solid_angle(a, b, cp) / omega;
+    const double y = glm::dot(w - b, w - b) / glm::dot(cp - b, cp - b);
+    const double wb = std::max(0.01, std::fabs(glm::dot(n, b))), wa = std::max(0.01, std::fabs(glm::dot(n, a))),
+                 wc = std::max(0.01, std::fabs(glm::dot(n, c)));
+    const double bilinear = (1.0 - y) * wb + y * ((1.0 - x) * wa + x * wc);
+    return 4.0 * bilinear / (2.0 * wb + wa + wc) / omega;
+}
+
+TEST(LightSampling, ANearTriangleIsSampledByTheCosineAtThePoint)
+{
+    // With a shading normal the spherical triangle is warped towards where the cosine at
+    // the point is large (light/triangle.cl, cosine_warp_weights). The normal makes the
+    // corners' cosines 0.18 to 0.96. Broken variant seen to fail (below): the weights of a
+    // and c swapped.
+    const NearTriangle t = near_triangle(0.0);
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0.8, -0.2, 0.5));
+    auto pdf = [&](const glm::dvec3& w) { return warped_solid_angle_pdf(t, n, w); };
+    auto sample = [&](const std::vector<KernelPatch>& patches) {
+        return test::sample_lights_on_device(solid_angle_program(patches),
+                                             equal_power({triangle_light(t.p0, t.p1, t.p2)}), glm::vec3(0.0f), 4321u,
+                                             1000000, nullptr, glm::vec3(n));
+    };
+    auto s = sample({});
+    test::ChiSquareResult r = test::chi_square_directions(test::to_directions(s), pdf, 10, 20, 0.01, kTests);
+    EXPECT_TRUE(r.passed) << r.summary();
+    EXPECT_NEAR(r.pdf_integral, 1.0, 1e-3);
+    expect_kernel_pdf_matches(s, pdf);
+
+    const std::vector<KernelPatch> broken = {
+        {"light/triangle.cl",
+         "    return (float4)(at_b, at_b, fmax(0.01f, fabs(dot(n, s->a))), fmax(0.01f, fabs(dot(n, s->c))));",
+         "    return (float4)(at_b, at_b, fmax(0.01f, fabs(dot(n, s->c))), fmax(0.01f, fabs(dot(n, s->a))));"}};
+    EXPECT_FALSE(test::chi_square_directions(test::to_directions(sample(broken)), pdf, 10, 20, 0.01, kTests).passed);
+}
+
+TEST(LightSampling, AFarTriangleIsSampledByAreaUnderSolidAngleSampling)
+{
+    // The same triangle 3 units further: area / distance^2 about 0.07, below
+    // TRIANGLE_SOLID_ANGLE_MIN, so its samples keep the area pdf t^2 / (A cos).
+    const NearTriangle t = near_triangle(3.0);
+    ASSERT_LT(area_over_distance2(t), TRIANGLE_SOLID_ANGLE_MIN);
+    auto pdf = [&](const glm::dvec3& w) { return triangle_area_pdf(t.p0, t.p1, t.p2, w); };
+    auto s = test::sample_lights_on_device(solid_angle_program(), equal_power({triangle_light(t.p0, t.p1, t.p2)}),
+                                           glm::vec3(0.0f), 1234u, 200000);
+    expect_kernel_pdf_matches(s, pdf);
+    // And the near one's samples do not (the pdf is a property of the strategy, not only
+    // of the direction).
+    const NearTriangle n = near_triangle(0.0);
+    auto near = test::sample_lights_on_device(solid_angle_program(), equal_power({triangle_light(n.p0, n.p1, n.p2)}),
+                                              glm::vec3(0.0f), 1234u, 1000);
+    std::size_t area_like = 0;
+    for (const pcl_float4& v : near)
+        if (v.w > 0.0f && std::fabs(v.w - triangle_area_pdf(n.p0, n.p1, n.p2,
+                                                            glm::normalize(glm::dvec3(v.x, v.y, v.z)))) <= 1e-3 * v.w)
+            ++area_like;
+    EXPECT_LT(area_like, near.size() / 10);
 }
 
 // light_pick on the device (tests/kernels/trace_test_kernels.cl) for each of `u`, with one

@@ -8,6 +8,10 @@
 #
 #   sh tools/bit_identity.sh [BASE]      BASE: a git revision (default HEAD)
 #
+# PATHCL_BIT_NEW_OPTIONS adds render options to the working tree's side only: a new option
+# whose one setting must reproduce BASE's default (PATHCL_BIT_NEW_OPTIONS="--triangle-sampling
+# area" against a BASE from before that option).
+#
 # BASE is checked out with `git worktree` and built once per commit under
 # ${PATHCL_BIT_DIR:-/tmp/pathcl-bit-identity}; the working tree is built in build/.
 # Prints one line per case and exits 1 if any case differs.
@@ -52,10 +56,11 @@ render() {
     case "$*" in *--spp*) spp="" ;; esac
     for side in old new; do
         bin=$OLD
-        [ $side = new ] && bin=$NEW
+        extra=""
+        [ $side = new ] && bin=$NEW && extra=${PATHCL_BIT_NEW_OPTIONS:-}
         # shellcheck disable=SC2086
         PATHCL_CACHE_DIR=$WORK/cache-$side "$bin" render "$ROOT/scenes/$scene.gltf" -o "$OUT/$side/$name.exr" \
-            $size $spp "$@" >/dev/null
+            $size $spp "$@" $extra >/dev/null
     done
     if "$NEW" compare --bitwise "$OUT/old/$name.exr" "$OUT/new/$name.exr" >"$OUT/$name.txt"; then
         echo "identical  $name"

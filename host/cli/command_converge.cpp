@@ -238,9 +238,11 @@ Command add_converge_command(CLI::App& app, int argc, char** argv)
     CLI::App* c = app.add_subcommand("converge", "Error against time for every setting of the knobs you vary");
     c->add_option("scene", rq->scene_path, "glTF 2.0 scene (.gltf or .glb)")->required();
     c->add_option("-o,--output", rq->out_dir, "directory for convergence.csv, summary.md and the plots")->required();
-    c->add_option("--vary", rq->vary,
-                  "KNOB=V1,V2,... (repeatable: the product); knobs: sampler, strategy, max-bounces, "
-                  "stratified-bounces, batch-spp, fast-math, specialization, adaptive, light-sampler, integrator")
+    c->add_option(
+         "--vary", rq->vary,
+         "KNOB=V1,V2,... (repeatable: the product); knobs: sampler, strategy, max-bounces, "
+         "stratified-bounces, batch-spp, fast-math, specialization, adaptive, light-sampler, triangle-sampling, "
+         "integrator")
         ->required();
     c->add_option("--spp-ladder", rq->ladder_text, "samples per pixel to render each setting at, rising (S1,S2,...)")
         ->capture_default_str();

@@ -114,6 +114,15 @@ void add_render_options(CLI::App* command, RenderOptions& options, std::string& 
                     "distance and orientation at the shading point), uniform, or auto (the tree where three or "
                     "more lights are spread over a quarter of the scene, else power)")
         ->group(kSamplingGroup);
+    const std::vector<std::pair<std::string, TriangleSampling>> triangle_samplings = {
+        {"auto", TriangleSampling::Auto},
+        {"area", TriangleSampling::Area},
+        {"solid-angle", TriangleSampling::SolidAngle}};
+    add_enum_option(command, "--triangle-sampling", options.triangle_sampling, triangle_samplings,
+                    "how a light sample finds a point on an emissive triangle: area (uniform by area), solid-angle "
+                    "(uniform within the solid angle it subtends, where that exceeds 3e-4 sr), or auto (solid-angle, "
+                    "but area with the wavefront integrator)")
+        ->group(kSamplingGroup);
     add_sampler_option(command, options.sampler)->group(kSamplingGroup);
     command
         ->add_option("--stratified-bounces", options.stratified_bounces,

@@ -49,9 +49,12 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     set(FEATURE_THIN_LENS, scene.camera.aperture > 0.0);
     set(FEATURE_INSTANCES, !scene.instances.empty());
     if (options.specialization == Specialization::All)
-        f.mask |= FEATURE_ALL & ~(FEATURE_SINGLE_SCATTERING | FEATURE_LIGHT_TREE); // model options, not scene features
+        f.mask |= FEATURE_ALL & ~(FEATURE_SINGLE_SCATTERING | FEATURE_LIGHT_TREE |
+                                  FEATURE_SOLID_ANGLE_TRIANGLES); // model options, not scene features
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
     set(FEATURE_LIGHT_TREE, resolve_light_sampler(scene, options) == LightSampler::Tree);
+    set(FEATURE_SOLID_ANGLE_TRIANGLES,
+        f.has(FEATURE_AREA_LIGHTS) && resolve_triangle_sampling(options) == TriangleSampling::SolidAngle);
     return f;
 }
 
@@ -87,8 +90,9 @@ std::vector<std::string> feature_names(std::uint32_t mask)
                                         "instances",
                                         "sheen",
                                         "anisotropy",
-                                        "light-tree"};
-    static_assert(sizeof(names) / sizeof(names[0]) == 22 && FEATURE_ALL == (1u << 22) - 1u);
+                                        "light-tree",
+                                        "solid-angle-triangles"};
+    static_assert(sizeof(names) / sizeof(names[0]) == 23 && FEATURE_ALL == (1u << 23) - 1u);
     std::vector<std::string> out;
     for (std::uint32_t b = 0; b < sizeof(names) / sizeof(names[0]); ++b)
         if (mask & (1u << b))

@@ -70,6 +70,15 @@ const std::map<std::string, Apply>& appliers()
                  }
              throw Error("--vary light-sampler: unknown light sampler '" + v + "' (power, tree, uniform, auto)");
          }},
+        {"triangle-sampling",
+         [](RenderOptions& o, const std::string& v) {
+             for (TriangleSampling s : {TriangleSampling::Area, TriangleSampling::SolidAngle, TriangleSampling::Auto})
+                 if (v == triangle_sampling_name(s)) {
+                     o.triangle_sampling = s;
+                     return;
+                 }
+             throw Error("--vary triangle-sampling: unknown triangle sampling '" + v + "' (area, solid-angle, auto)");
+         }},
         {"integrator",
          [](RenderOptions& o, const std::string& v) {
              if (v != "megakernel" && v != "wavefront")

@@ -66,6 +66,27 @@ inline const char* light_sampler_name(LightSampler s)
     return "unknown";
 }
 
+// How an emissive triangle is sampled for next event estimation (--triangle-sampling).
+enum class TriangleSampling : std::uint32_t {
+    Area,       // uniformly by area
+    SolidAngle, // uniformly within the solid angle it subtends, where that is large enough
+    Auto,       // solid-angle with the megakernel, area with the wavefront (which has only area)
+};
+
+// "area", "solid-angle" or "auto".
+inline const char* triangle_sampling_name(TriangleSampling s)
+{
+    switch (s) {
+    case TriangleSampling::Area:
+        return "area";
+    case TriangleSampling::SolidAngle:
+        return "solid-angle";
+    case TriangleSampling::Auto:
+        return "auto";
+    }
+    return "unknown";
+}
+
 // How a pass is run on the device (kernels/integrator/megakernel.cl,
 // kernels/wavefront/wavefront.cl); both render the same image.
 enum class Integrator : std::uint32_t {
@@ -82,6 +103,7 @@ struct RenderOptions {
     std::uint32_t seed = 0;
     Strategy strategy = Strategy::Mis;
     LightSampler light_sampler = LightSampler::Auto;
+    TriangleSampling triangle_sampling = TriangleSampling::Auto;
     // Owen-scrambled Sobol': the most efficient sampler on the committed scenes
     // (docs/accuracy.md, "On the committed scenes"). spp is rounded as sampler_spp() says.
     SamplerType sampler = SamplerType::Sobol;
@@ -132,5 +154,13 @@ struct RenderOptions {
     // that prove a render test fails on a deliberately broken kernel.
     std::vector<KernelPatch> kernel_patches;
 };
+
+// The triangle sampling a render uses: auto decided by the integrator.
+inline TriangleSampling resolve_triangle_sampling(const RenderOptions& options)
+{
+    if (options.triangle_sampling != TriangleSampling::Auto)
+        return options.triangle_sampling;
+    return options.integrator == Integrator::Wavefront ? TriangleSampling::Area : TriangleSampling::SolidAngle;
+}
 
 } // namespace pathcl

@@ -123,6 +123,7 @@ struct Renderer::Impl {
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
         options.light_sampler = resolve_light_sampler(scene, opt); // Auto decided once
+        options.triangle_sampling = resolve_triangle_sampling(opt);
         check_options(opt);
         default_plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
@@ -429,6 +430,8 @@ struct Renderer::Impl {
             key += "; integrator wavefront";
         if (opt.light_sampler != LightSampler::Power)
             key += std::string("; light sampler ") + light_sampler_name(opt.light_sampler);
+        if (compiled.features.has(FEATURE_SOLID_ANGLE_TRIANGLES)) // a scene without emissive triangles: no change
+            key += "; triangle sampling solid-angle";
         return key;
     }
 

@@ -17,9 +17,10 @@ typedef struct {
 #ifdef PATHCL_HAS_UNLIT
     bool specular_chain; /* every bounce so far was a delta lobe: unlit surfaces are seen */
 #endif
-#ifdef PATHCL_LIGHT_TREE
+#ifdef PATHCL_KEEPS_PREV_REF
     float3 prev_ref, prev_n; /* the point and shading normal the ray left from: the light tree's
-                              * pmf for a light the ray hits is the one a pick there had */
+                              * pmf and a triangle's solid-angle pdf for a light the ray hits
+                              * are the ones a light sample there had */
 #endif
 } PathState;
 
@@ -41,7 +42,7 @@ static inline PathState path_state_start(Ray ray)
 #ifdef PATHCL_HAS_UNLIT
     ps.specular_chain = true;
 #endif
-#ifdef PATHCL_LIGHT_TREE
+#ifdef PATHCL_KEEPS_PREV_REF
     ps.prev_ref = ps.prev_n = (float3)(0.0f); /* read only after a non-delta bounce */
 #endif
     return ps;

@@ -43,7 +43,7 @@ static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 w
 #ifdef PATHCL_HAS_UNLIT
     ps->specular_chain = ps->specular_chain && bs.delta;
 #endif
-#ifdef PATHCL_LIGHT_TREE
+#ifdef PATHCL_KEEPS_PREV_REF
     ps->prev_ref = light_sample_origin(&s->sp);
     ps->prev_n = s->sp.ns;
 #endif
