@@ -116,7 +116,7 @@
 
 /* Derived guards. */
 #if defined(PATHCL_LIGHT_TREE) || defined(PATHCL_SOLID_ANGLE_TRIANGLES)
-#define PATHCL_KEEPS_PREV_REF /* a path keeps the point and normal it left from (integrator/path_state.cl) */
+#define PATHCL_KEEPS_PREV_REF /* a path keeps the point it left from (integrator/path_state.cl) */
 #endif
 #if PATHCL_FEATURES & (FEATURE_AREA_LIGHTS | FEATURE_POINT_LIGHTS | FEATURE_SPOT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS | \
                        FEATURE_SPHERE_LIGHTS | FEATURE_ENVIRONMENT)

@@ -45,7 +45,7 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
                                 float3 wo, bool technique_light, const LightChoice* choice)
 {
     const SurfacePoint* sp = &s->sp;
-    LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp), sp->ns);
+    LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp));
     if (!(ls.pdf > 0.0f))
         return;
     BsdfEval e = bsdf_eval(&s->bsdf, sp, wo, ls.wi);

@@ -18,9 +18,11 @@ typedef struct {
     bool specular_chain; /* every bounce so far was a delta lobe: unlit surfaces are seen */
 #endif
 #ifdef PATHCL_KEEPS_PREV_REF
-    float3 prev_ref, prev_n; /* the point and shading normal the ray left from: the light tree's
-                              * pmf and a triangle's solid-angle pdf for a light the ray hits
-                              * are the ones a light sample there had */
+    float3 prev_ref; /* the point the ray left from: the light tree's pmf and a triangle's solid
+                      * angle for a light the ray hits are the ones a light sample there had */
+#endif
+#ifdef PATHCL_LIGHT_TREE
+    float3 prev_n; /* and its shading normal, which the light tree weighs */
 #endif
 } PathState;
 
@@ -43,7 +45,10 @@ static inline PathState path_state_start(Ray ray)
     ps.specular_chain = true;
 #endif
 #ifdef PATHCL_KEEPS_PREV_REF
-    ps.prev_ref = ps.prev_n = (float3)(0.0f); /* read only after a non-delta bounce */
+    ps.prev_ref = (float3)(0.0f); /* read only after a non-delta bounce */
+#endif
+#ifdef PATHCL_LIGHT_TREE
+    ps.prev_n = (float3)(0.0f);
 #endif
     return ps;
 }

@@ -52,8 +52,7 @@ static inline void shade_surface_emission(const KernelData* kd, const FrameParam
             float pmf = kd->light_distribution[s->sp.emitter].pmf;
 #endif
 #ifdef PATHCL_KEEPS_PREV_REF
-            float light_pdf =
-                triangle_light_pdf_from(&light, pmf, ps->prev_ref, ps->prev_n, ps->dir, hit.t, dot(s->sp.ng, wo));
+            float light_pdf = triangle_light_pdf_from(&light, pmf, ps->prev_ref, hit.t, dot(s->sp.ng, wo));
 #else
             float light_pdf = triangle_light_pdf(&light, pmf, hit.t, dot(s->sp.ng, wo));
 #endif

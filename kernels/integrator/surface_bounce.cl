@@ -45,6 +45,8 @@ static inline bool surface_bounce(PathState* ps, const ShadingPoint* s, float3 w
 #endif
 #ifdef PATHCL_KEEPS_PREV_REF
     ps->prev_ref = light_sample_origin(&s->sp);
+#endif
+#ifdef PATHCL_LIGHT_TREE
     ps->prev_n = s->sp.ns;
 #endif
     return true;

@@ -63,8 +63,8 @@ static inline LightChoice light_choose(const KernelData* kd, const FrameParams* 
     return c;
 }
 
-/* The chosen light's sample seen from ref (shading normal n). */
-static inline LightSample light_sample_chosen(const KernelData* kd, const LightChoice* c, float3 ref, float3 n)
+/* The chosen light's sample seen from ref. */
+static inline LightSample light_sample_chosen(const KernelData* kd, const LightChoice* c, float3 ref)
 {
     LightSample ls;
     ls.pdf = 0.0f;
@@ -107,7 +107,7 @@ static inline LightSample light_sample_chosen(const KernelData* kd, const LightC
     }
 #endif
 #ifdef PATHCL_HAS_AREA_LIGHTS
-    sample_triangle_light(kd, &light, pmf, ref, n, u, &ls);
+    sample_triangle_light(kd, &light, pmf, ref, u, &ls);
 #endif
     return ls;
 }
@@ -117,5 +117,5 @@ static inline LightSample light_sample(const KernelData* kd, const FrameParams* 
                                        SamplerState* sampler)
 {
     LightChoice c = light_choose(kd, frame, ref, n, sampler);
-    return light_sample_chosen(kd, &c, ref, n);
+    return light_sample_chosen(kd, &c, ref);
 }

@@ -44,7 +44,7 @@ static inline float spherical_triangle_solid_angle(const SphericalTriangle* s)
  * outside the triangle). With s, t = sin, cos(A - alpha) and Arvo's u = t - cos alpha,
  * v = s + sin alpha cos(a b), the cosine q of the arc from a to c' has
  * 1 - q = 2 sin^2(A/2) (1 + a.b) / (v s + u t), and u = 2 sin(A/2) sin(alpha - A/2). */
-static inline float3 sample_spherical_triangle(const SphericalTriangle* s, float omega, float2 u)
+PATHCL_NOINLINE static float3 sample_spherical_triangle(const SphericalTriangle* s, float omega, float2 u)
 {
     float3 a = s->a, b = s->b, c = s->c;
     float cos_ab = dot(a, b);
@@ -104,25 +104,4 @@ static inline bool triangle_barycentrics_along(float3 p, float3 w, float3 v0, fl
     *b1 = x;
     *b2 = y;
     return true;
-}
-
-/* The numbers u that sample_spherical_triangle maps to the unit direction w within the
- * spherical triangle of solid angle omega: c' is where the great circle from b through w
- * meets the arc from a to c, u.x the sub-triangle a b c' as a share of omega, and
- * u.y = (1 - b.w) / (1 - b.c') = |w - b|^2 / |c' - b|^2. (At w = b every u.x gives w.) */
-static inline float2 invert_spherical_triangle_sample(const SphericalTriangle* s, float omega, float3 w)
-{
-    float3 c_prime = cross(cross(s->b, w), cross(s->c, s->a));
-    float len = length(c_prime);
-    if (!(len > 0.0f) || !(omega > 0.0f))
-        return (float2)(0.5f, 0.0f);
-    c_prime /= len;
-    if (dot(c_prime, s->a + s->c) < 0.0f) /* the intersection on the arc, not opposite it */
-        c_prime = -c_prime;
-    SphericalTriangle sub = {s->a, s->b, c_prime};
-    float3 wb = w - s->b, cb = c_prime - s->b;
-    float cb2 = dot(cb, cb);
-    float ux = spherical_triangle_solid_angle(&sub) / omega;
-    float uy = cb2 > 0.0f ? dot(wb, wb) / cb2 : 0.0f;
-    return (float2)(fmin(fmax(ux, 0.0f), 1.0f), fmin(fmax(uy, 0.0f), 1.0f));
 }

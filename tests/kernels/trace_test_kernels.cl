@@ -89,20 +89,19 @@ PATHCL_KERNEL void test_spawned_ray_hits(__global const BvhNode* nodes, __global
 }
 
 /* Light sampling through the real light_sample (kernels/light/): one sample per work-item
- * from `ref` with shading normal `normal` (which the light tree and the cosine warp of
- * triangles read; zero: none) over the scene arrays' lights; writes the direction and pdf, or a zero vector
+ * from `ref` over the scene arrays' lights; writes the direction and pdf, or a zero vector
  * when there is no sample (the chi-square harness counts those as failures of the
  * sampler), and the radiance the sample carries (so weight = radiance / pdf can be
  * checked). Environment and emissive-texture lookups read the same arrays. */
-PATHCL_KERNEL void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, float4 normal, uint seed,
-                                     __global float4* out, __global float4* radiance_out)
+PATHCL_KERNEL void test_light_sample(PATHCL_KERNEL_PARAMS uint count, float4 ref, uint seed, __global float4* out,
+                                     __global float4* radiance_out)
 {
     PATHCL_KERNEL_DATA;
     uint i = get_global_id(0);
     SamplerState s = sampler_start(i, 0u, seed, 0u);
     FrameParams frame = {0};
     frame.light_count = count;
-    LightSample ls = light_sample(&kd, &frame, ref.xyz, normal.xyz, &s);
+    LightSample ls = light_sample(&kd, &frame, ref.xyz, (float3)(0.0f), &s);
     out[i] = (ls.pdf > 0.0f) ? (float4)(ls.wi, ls.pdf) : (float4)(0.0f);
     radiance_out[i] = (ls.pdf > 0.0f) ? (float4)(ls.radiance, 0.0f) : (float4)(0.0f);
 }

@@ -38,16 +38,15 @@ cl::Program build_test_program(const std::string& file, std::uint32_t features, 
 }
 
 std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const SceneArrays& arrays, glm::vec3 ref,
-                                                std::uint32_t seed, std::size_t n, std::vector<pcl_float4>* radiance,
-                                                glm::vec3 normal)
+                                                std::uint32_t seed, std::size_t n, std::vector<pcl_float4>* radiance)
 {
     ClDevice& dev = test_device();
     DeviceArrays a = upload_arrays(dev, arrays, 1);
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Buffer radiance_out(dev.context, CL_MEM_WRITE_ONLY, n * sizeof(pcl_float4));
     cl::Kernel k(program, "test_light_sample");
-    bind_kernel(k, a, static_cast<cl_uint>(arrays.lights.size()), pcl_float4{ref.x, ref.y, ref.z, 0.0f},
-                pcl_float4{normal.x, normal.y, normal.z, 0.0f}, seed, out, radiance_out);
+    bind_kernel(k, a, static_cast<cl_uint>(arrays.lights.size()), pcl_float4{ref.x, ref.y, ref.z, 0.0f}, seed, out,
+                radiance_out);
     dev.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
     if (radiance)
         *radiance = read_back<pcl_float4>(radiance_out, n);

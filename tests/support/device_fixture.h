@@ -49,13 +49,12 @@ std::vector<T> read_back(const cl::Buffer& buffer, std::size_t n)
 }
 
 // Runs test_light_sample (tests/kernels/trace_test_kernels.cl, built into `program`) once
-// per sample: light_sample from `ref` with shading normal `normal` (zero: none) over the
-// lights of `arrays` (with their light distribution, environment and emissive textures).
-// Each result is (direction, pdf), or zero when there was no sample; the radiance each
-// sample carries goes to `radiance` if given.
+// per sample: light_sample from `ref` over the lights of `arrays` (with their light
+// distribution, environment and emissive textures). Each result is (direction, pdf), or
+// zero when there was no sample; the radiance each sample carries goes to `radiance` if
+// given.
 std::vector<pcl_float4> sample_lights_on_device(const cl::Program& program, const SceneArrays& arrays, glm::vec3 ref,
                                                 std::uint32_t seed, std::size_t n,
-                                                std::vector<pcl_float4>* radiance = nullptr,
-                                                glm::vec3 normal = glm::vec3(0.0f));
+                                                std::vector<pcl_float4>* radiance = nullptr);
 
 } // namespace pathcl::test
