@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/error.h"
+#include "common/fnv1a.h"
 #include "compile/compile_scene.h"
 #include "compile/light_tree.h"
 #include "scene/gltf_loader.h"
@@ -47,8 +48,7 @@ glm::dvec3 random_direction(std::mt19937_64& rng)
 void random_lights(std::size_t n, std::uint64_t seed, std::vector<Light>& lights, std::vector<double>& power)
 {
     std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> position(-50.0, 50.0), size(0.001, 0.5), decades(-2.0, 2.0),
-        unit(0.0, 1.0);
+    std::uniform_real_distribution<double> position(-50.0, 50.0), size(0.001, 0.5), decades(-2.0, 2.0), unit(0.0, 1.0);
     lights.assign(n, Light{});
     power.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -85,15 +85,6 @@ void random_lights(std::size_t n, std::uint64_t seed, std::vector<Light>& lights
         }
         power[i] = std::pow(10.0, decades(rng));
     }
-}
-
-// FNV-1a over the bytes.
-std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t h = 1469598103934665603ull)
-{
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i)
-        h = (h ^ p[i]) * 1099511628211ull;
-    return h;
 }
 
 // The tree as bytes: its node array, the trails, the depth.
@@ -148,7 +139,7 @@ int main(int argc, char** argv)
         const std::string bytes = tree_bytes(tree);
         std::printf("%zu lights (%zu infinite): %zu nodes, %u levels, hash %016llx\n", lights.size(),
                     tree.infinite.size(), tree.nodes.size(), tree.depth,
-                    static_cast<unsigned long long>(fnv1a(bytes.data(), bytes.size())));
+                    static_cast<unsigned long long>(fnv1a64(bytes.data(), bytes.size())));
         std::printf("build ms min / median / max: %.1f / %.1f / %.1f | Mlights/s: %.3f / %.3f / %.3f\n",
                     seconds.front() * 1e3, seconds[seconds.size() / 2] * 1e3, seconds.back() * 1e3,
                     n / seconds.back() * 1e-6, n / seconds[seconds.size() / 2] * 1e-6, n / seconds.front() * 1e-6);
