@@ -74,4 +74,32 @@ void SharedWork::work()
     }
 }
 
+namespace {
+
+// fn over [begin, end), `piece` elements at a time, sharing half of what is left whenever
+// a thread waits for work.
+void pieces(SharedWork& work, std::size_t begin, std::size_t end, std::size_t piece,
+            const std::function<void(std::size_t, std::size_t)>& fn)
+{
+    while (begin < end) {
+        if (end - begin > 2 * piece && work.wanted()) {
+            const std::size_t mid = begin + (end - begin) / 2;
+            work.share([&work, mid, end, piece, &fn] { pieces(work, mid, end, piece, fn); });
+            end = mid;
+        }
+        const std::size_t stop = std::min(end, begin + piece);
+        fn(begin, stop);
+        begin = stop;
+    }
+}
+
+} // namespace
+
+void SharedWork::for_pieces(std::size_t count, std::size_t piece, unsigned threads,
+                            const std::function<void(std::size_t, std::size_t)>& fn)
+{
+    SharedWork work(threads);
+    work.run([&] { pieces(work, 0, count, std::max<std::size_t>(1, piece), fn); });
+}
+
 } // namespace pathcl

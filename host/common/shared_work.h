@@ -1,11 +1,15 @@
 // Recursive work on every core, for a divide-and-conquer build whose pieces differ in size
 // (the light tree's subtrees): a task hands a piece of its work to another thread only
 // while one is waiting for work, so that no thread idles while another still has a
-// large piece, and no piece is split off that a busy thread would rather do itself.
+// large piece, and no piece is split off that a busy thread would rather do itself. Its
+// threads are its own and sleep while they wait: OpenImageIO's pool (common/parallel.h)
+// keeps its threads spinning for a while after a loop, which slowed a light tree built
+// next to it from 0.65 to 1.1 s on a 2-core machine.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
+#include <cstddef>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -28,6 +32,12 @@ public:
     // Hands `task` to a waiting thread (or, if none takes it first, to the next thread
     // that finishes its task).
     void share(std::function<void()> task);
+
+    // Calls fn(begin, end) on consecutive pieces of at most `piece` elements that cover
+    // [0, count), on `threads` threads (0: one a core): a loop whose elements are
+    // independent.
+    static void for_pieces(std::size_t count, std::size_t piece, unsigned threads,
+                           const std::function<void(std::size_t begin, std::size_t end)>& fn);
 
 private:
     void work();
