@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <mutex>
 #include <numbers>
+#include <type_traits>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -54,6 +58,10 @@ struct Cone {
     Cone(const glm::dvec3& a, double theta, const Cone& spread)
         : axis(a), cos_o(std::cos(theta)), sin_o(std::sin(theta)), theta_o(theta), cos_e(spread.cos_e),
           theta_e(spread.theta_e)
+    {}
+    // Every field given (a LightRecord's).
+    Cone(const glm::dvec3& a, double cos_o_, double sin_o_, double theta_o_, double cos_e_, double theta_e_)
+        : axis(a), cos_o(cos_o_), sin_o(sin_o_), theta_o(theta_o_), cos_e(cos_e_), theta_e(theta_e_)
     {}
     LightCone light_cone() const { return {axis, cos_o, cos_e}; }
 };
@@ -123,14 +131,28 @@ struct Box {
 };
 
 // A light as the build reads it. The records are kept in the order the partitions leave
-// them, so that each pass over a node's lights walks contiguous memory.
-struct LightRecord {
+// them, so that each pass over a node's lights walks contiguous memory, two cache lines a
+// record. It holds its cone as Cone's fields, not a Cone, so that a record has no default
+// values: the records are made on every core, each page first written by the core that
+// fills it (page faults on 128 MB took 50 ms on one core of the 2-core VM).
+struct alignas(64) LightRecord {
+    glm::dvec3 axis;
+    double cos_o, sin_o, theta_o, cos_e, theta_e;
     glm::dvec3 lo, hi;
-    Cone cone;
-    double phi = 0.0;
-    std::uint32_t light = 0;
-    bool two_sided = false;
+    double phi;
+    std::uint32_t light;
+    bool two_sided;
+
+    LightRecord() {} // NOLINT(modernize-use-equals-default): no values, see above
+    LightRecord(const LightBounds& b, std::uint32_t l) : LightRecord(b, Cone(b.cone), l) {}
+    Cone cone() const { return {axis, cos_o, sin_o, theta_o, cos_e, theta_e}; }
     glm::dvec3 centroid() const { return (lo + hi) * 0.5; }
+
+private:
+    LightRecord(const LightBounds& b, const Cone& c, std::uint32_t l)
+        : axis(c.axis), cos_o(c.cos_o), sin_o(c.sin_o), theta_o(c.theta_o), cos_e(c.cos_e), theta_e(c.theta_e),
+          lo(b.lo), hi(b.hi), phi(b.phi), light(l), two_sided(b.two_sided)
+    {}
 };
 
 // A node's bounds while building: box, power, cone (and whether any light is two-sided).
@@ -144,7 +166,7 @@ struct Bounds {
     {
         box.extend(r.lo, r.hi);
         phi += r.phi;
-        cone = any ? unite(cone, r.cone) : r.cone;
+        cone = any ? unite(cone, r.cone()) : r.cone();
         two_sided = two_sided || r.two_sided;
         any = true;
     }
@@ -186,11 +208,30 @@ constexpr std::size_t kParallelLights = 4096;
 constexpr std::size_t kShareLights = 1024;
 
 // A node of the binary tree the eight-wide one is collapsed from. A child is a node or,
-// with kLeaf set, a light: the position of its record.
+// with kLeaf set, a light: the position of its record. Every field is set when the node
+// is built (no default values, as in LightRecord).
 struct BinaryNode {
-    std::array<std::uint32_t, 2> child{};
-    std::uint32_t lights = 0; // below it
-    bool pending = false;     // its bounds wait for a subtree built on another thread
+    std::array<std::uint32_t, 2> child;
+    std::uint32_t lights; // below it
+    bool pending;         // its bounds wait for a subtree built on another thread
+    BinaryNode() {}       // NOLINT(modernize-use-equals-default)
+};
+
+// A node's Bounds, stored without default values (as in LightRecord).
+class StoredBounds {
+public:
+    StoredBounds() {} // NOLINT(modernize-use-equals-default)
+    void set(const Bounds& b) { std::memcpy(bytes_, &b, sizeof(Bounds)); }
+    Bounds get() const
+    {
+        Bounds b;
+        std::memcpy(&b, bytes_, sizeof(Bounds));
+        return b;
+    }
+
+private:
+    static_assert(std::is_trivially_copyable_v<Bounds>);
+    alignas(Bounds) unsigned char bytes_[sizeof(Bounds)];
 };
 
 constexpr std::uint32_t kLeaf = 1u << 31;
@@ -208,12 +249,12 @@ Bounds light_bounds(const LightRecord& r)
 // laying out the eight-wide tree reads only the nodes) and the lights' records.
 struct BinaryTree {
     std::vector<BinaryNode> nodes;
-    std::vector<Bounds> bounds; // by node
+    std::vector<StoredBounds> bounds; // by node
     std::vector<LightRecord> records;
 
     Bounds of(std::uint32_t child) const
     {
-        return child & kLeaf ? light_bounds(records[child & ~kLeaf]) : bounds[child];
+        return child & kLeaf ? light_bounds(records[child & ~kLeaf]) : bounds[child].get();
     }
 };
 
@@ -226,11 +267,27 @@ public:
             std::vector<pcl_ulong>& trails)
         : work_(order.size() > kParallelLights ? 0 : 1), trails_(trails)
     {
-        records_.reserve(order.size());
-        for (std::uint32_t l : order) {
-            const LightBounds& b = lights[l];
-            records_.push_back({b.lo, b.hi, Cone(b.cone), b.phi, l, b.two_sided});
-        }
+        const std::size_t n = order.size();
+        records_.resize(n);
+        nodes_.resize(n - 1);
+        tree_.bounds.resize(n - 1);
+        // The centroids' box of each piece, merged in the order of the pieces: the box one
+        // pass over all would make, down to which of +0 and -0 it holds.
+        std::mutex mutex;
+        std::vector<std::pair<std::size_t, Box>> boxes;
+        SharedWork::for_pieces(n, kShareLights, n > kParallelLights ? 0 : 1, [&](std::size_t begin, std::size_t end) {
+            Box box;
+            for (std::size_t i = begin; i < end; ++i) {
+                records_[i] = LightRecord(lights[order[i]], order[i]);
+                const glm::dvec3 c = records_[i].centroid();
+                box.extend(c, c);
+            }
+            const std::lock_guard<std::mutex> lock(mutex);
+            boxes.emplace_back(begin, box);
+        });
+        std::sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [begin, box] : boxes)
+            centroids_.extend(box.lo, box.hi);
     }
 
     // Builds the tree; returns its root.
@@ -240,9 +297,7 @@ public:
             trails_[records_[0].light] = 0;
             return kLeaf;
         }
-        nodes_.resize(records_.size() - 1);
-        tree_.bounds.resize(records_.size() - 1);
-        work_.run([this] { subtree(0, 0, records_.size(), 0, 0, centroid_box(0, records_.size())); });
+        work_.run([this] { subtree(0, 0, records_.size(), 0, 0, centroids_); });
         finish(0);
         return 0;
     }
@@ -281,7 +336,7 @@ private:
         n.lights = static_cast<std::uint32_t>(end - begin);
         n.pending = !complete;
         if (complete)
-            tree_.bounds[index] = child_bounds(n);
+            tree_.bounds[index].set(child_bounds(n));
         return complete;
     }
 
@@ -307,7 +362,7 @@ private:
         for (std::uint32_t c : n.child)
             if (!(c & kLeaf))
                 finish(c);
-        tree_.bounds[index] = child_bounds(n);
+        tree_.bounds[index].set(child_bounds(n));
         n.pending = false;
     }
 
@@ -420,7 +475,7 @@ private:
         Bins bins;
         std::array<Bounds, kBuckets>& buckets = bins.buckets;
         std::array<glm::dvec3, kBuckets> axes{};
-        std::array<const Cone*, kBuckets> spread{}; // the first of the widest emission spread
+        std::array<const LightRecord*, kBuckets> spread{}; // the first of the widest emission spread
         const double lo = centroids.lo[axis], scale = kBuckets / extent[axis];
         for (std::size_t i = begin; i < end; ++i) {
             const LightRecord& r = records_[i];
@@ -431,9 +486,9 @@ private:
             b.phi += r.phi;
             b.two_sided = b.two_sided || r.two_sided;
             b.any = true;
-            axes[k] += r.cone.axis;
-            if (!spread[k] || r.cone.cos_e < spread[k]->cos_e)
-                spread[k] = &r.cone;
+            axes[k] += r.axis;
+            if (!spread[k] || r.cos_e < spread[k]->cos_e)
+                spread[k] = &r;
             bins.centroids[k].extend(c, c);
         }
         std::array<double, kBuckets> cos_o;
@@ -446,24 +501,23 @@ private:
         for (std::size_t i = begin; i < end; ++i) {
             const LightRecord& r = records_[i];
             const int k = bucket_of(r, axis, lo, scale);
-            const Cone& c = r.cone;
             if (cos_o[k] <= -1.0)
                 continue;
             // cos(theta_d + theta_l): the farthest direction of the light's cone from the mean.
-            const double cos_d = std::clamp(glm::dot(mean[k], c.axis), -1.0, 1.0);
-            if (c.cos_o <= -1.0 || cos_d < -c.cos_o) { // theta_d + theta_l > pi
+            const double cos_d = std::clamp(glm::dot(mean[k], r.axis), -1.0, 1.0);
+            if (r.cos_o <= -1.0 || cos_d < -r.cos_o) { // theta_d + theta_l > pi
                 cos_o[k] = -1.0;
                 continue;
             }
             const double sin_d = std::sqrt(1.0 - cos_d * cos_d);
-            cos_o[k] = std::min(cos_o[k], cos_d * c.cos_o - sin_d * c.sin_o);
+            cos_o[k] = std::min(cos_o[k], cos_d * r.cos_o - sin_d * r.sin_o);
         }
         for (int k = 0; k < kBuckets; ++k) {
             if (!buckets[k].any)
                 continue;
+            const Cone s = spread[k]->cone();
             const double cos_k = std::max(-1.0, cos_o[k] - 1e-12); // rounding, on the safe side
-            buckets[k].cone =
-                with_spread(cos_k <= -1.0 ? Cone() : Cone(mean[k], std::acos(cos_k), *spread[k]), *spread[k]);
+            buckets[k].cone = with_spread(cos_k <= -1.0 ? Cone() : Cone(mean[k], std::acos(cos_k), s), s);
         }
         return bins;
     }
@@ -480,6 +534,7 @@ private:
 
     SharedWork work_;
     BinaryTree tree_;
+    Box centroids_;                                     // of every light
     std::vector<LightRecord>& records_ = tree_.records; // in the order the partitions leave them
     std::vector<BinaryNode>& nodes_ = tree_.nodes;
     std::vector<pcl_ulong>& trails_;
@@ -518,10 +573,14 @@ public:
     // a light).
     void collapse(std::uint32_t root)
     {
+        lanes_.reserve(binary_.nodes.size() + 1); // at most one node for each binary one
         lay_out(root, 0);
         tree_.nodes.resize(lanes_.size());
-        SharedWork work(lanes_.size() > kParallelNodes ? 0 : 1);
-        work.run([&] { write(work, 0, lanes_.size()); });
+        SharedWork::for_pieces(lanes_.size(), kShareNodes, lanes_.size() > kParallelNodes ? 0 : 1,
+                               [this](std::size_t begin, std::size_t end) {
+                                   for (std::size_t i = begin; i < end; ++i)
+                                       write(i);
+                               });
     }
 
 private:
@@ -576,18 +635,6 @@ private:
         return index;
     }
 
-    // Writes nodes [begin, end), sharing half of them while a thread waits for work.
-    void write(SharedWork& work, std::size_t begin, std::size_t end)
-    {
-        while (end - begin > kShareNodes && work.wanted()) {
-            const std::size_t mid = begin + (end - begin) / 2;
-            work.share([=, this, &work] { write(work, mid, end); });
-            end = mid;
-        }
-        for (std::size_t i = begin; i < end; ++i)
-            write(i);
-    }
-
     void write(std::size_t index)
     {
         const Lanes& l = lanes_[index];
@@ -606,13 +653,12 @@ private:
         LightTreeNode& node = tree_.nodes[index];
         const glm::dvec3 centre = (b.box.lo + b.box.hi) * 0.5;
         const glm::vec3 c(centre);
-        double radius2 = 0.0; // of the sphere around the float centre that holds the box
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 p((corner & 1) ? b.box.hi.x : b.box.lo.x, (corner & 2) ? b.box.hi.y : b.box.lo.y,
-                               (corner & 4) ? b.box.hi.z : b.box.lo.z);
-            const glm::dvec3 d = p - glm::dvec3(c);
-            radius2 = std::max(radius2, glm::dot(d, d));
-        }
+        // Of the sphere around the float centre that holds the box: the farthest corner's
+        // squared distance, (dx^2 + dy^2) + dz^2, from the farther side on each axis (the
+        // rounded sums grow with their terms, so this is the largest of the eight).
+        const glm::dvec3 to_lo = b.box.lo - glm::dvec3(c), to_hi = b.box.hi - glm::dvec3(c);
+        const glm::dvec3 d2 = glm::max(to_lo * to_lo, to_hi * to_hi);
+        const double radius2 = std::max(0.0, d2.x + d2.y + d2.z);
         node.centre_x.s[k] = c.x;
         node.centre_y.s[k] = c.y;
         node.centre_z.s[k] = c.z;
@@ -633,6 +679,59 @@ private:
     std::vector<Lanes> lanes_; // by node
 };
 
+LightBounds bounds_of(const Light& l, double power)
+{
+    LightBounds b;
+    b.phi = power;
+    switch (l.type) {
+    case LIGHT_TRIANGLE: {
+        const glm::dvec3 v0 = xyz(l.data.triangle.v0), v1 = xyz(l.data.triangle.v1), v2 = xyz(l.data.triangle.v2);
+        b.lo = glm::min(v0, glm::min(v1, v2));
+        b.hi = glm::max(v0, glm::max(v1, v2));
+        const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
+        const double len = glm::length(n);
+        // Front face only, as a Lambertian emitter: every direction within pi/2 of the
+        // normal. A degenerate triangle gets the whole sphere.
+        b.cone = len > 0.0 ? LightCone{n / len, 1.0, 0.0} : whole_sphere(0.0);
+        break;
+    }
+    case LIGHT_SPHERE: {
+        const glm::dvec3 c = xyz(l.data.sphere.centre);
+        const double r = l.data.sphere.radius;
+        b.lo = c - glm::dvec3(r);
+        b.hi = c + glm::dvec3(r);
+        b.cone = whole_sphere(0.0);
+        break;
+    }
+    case LIGHT_POINT:
+        b.lo = b.hi = xyz(l.data.point.position);
+        b.cone = whole_sphere(0.0);
+        break;
+    case LIGHT_SPOT: {
+        b.lo = b.hi = xyz(l.data.spot.position);
+        const double theta = std::acos(std::clamp(static_cast<double>(l.data.spot.cos_outer), -1.0, 1.0));
+        b.cone = {glm::normalize(xyz(l.data.spot.axis)), std::cos(std::min(theta + kConeSlack, kPi)),
+                  std::cos(kConeSlack)};
+        break;
+    }
+    case LIGHT_RECT_SPOT: {
+        b.lo = b.hi = xyz(l.data.rect_spot.position);
+        const double th = l.data.rect_spot.tan_half_h, tv = l.data.rect_spot.tan_half_v;
+        const double corner = std::atan(std::sqrt(th * th + tv * tv)); // the frustum's widest direction
+        b.cone = {glm::normalize(xyz(l.data.rect_spot.axis)), std::cos(std::min(corner + kConeSlack, kPi)),
+                  std::cos(kConeSlack)};
+        break;
+    }
+    default: // LIGHT_DIRECTIONAL, LIGHT_ENVIRONMENT
+        b.infinite = true;
+        break;
+    }
+    return b;
+}
+
+// Lights are bounded on every core in lists longer than this.
+constexpr std::size_t kParallelBounds = 16384;
+
 } // namespace
 
 LightCone cone_union(const LightCone& a, const LightCone& b)
@@ -643,54 +742,11 @@ LightCone cone_union(const LightCone& a, const LightCone& b)
 std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const std::vector<double>& power)
 {
     std::vector<LightBounds> out(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const Light& l = lights[i];
-        LightBounds& b = out[i];
-        b.phi = power[i];
-        switch (l.type) {
-        case LIGHT_TRIANGLE: {
-            const glm::dvec3 v0 = xyz(l.data.triangle.v0), v1 = xyz(l.data.triangle.v1), v2 = xyz(l.data.triangle.v2);
-            b.lo = glm::min(v0, glm::min(v1, v2));
-            b.hi = glm::max(v0, glm::max(v1, v2));
-            const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
-            const double len = glm::length(n);
-            // Front face only, as a Lambertian emitter: every direction within pi/2 of the
-            // normal. A degenerate triangle gets the whole sphere.
-            b.cone = len > 0.0 ? LightCone{n / len, 1.0, 0.0} : whole_sphere(0.0);
-            break;
-        }
-        case LIGHT_SPHERE: {
-            const glm::dvec3 c = xyz(l.data.sphere.centre);
-            const double r = l.data.sphere.radius;
-            b.lo = c - glm::dvec3(r);
-            b.hi = c + glm::dvec3(r);
-            b.cone = whole_sphere(0.0);
-            break;
-        }
-        case LIGHT_POINT:
-            b.lo = b.hi = xyz(l.data.point.position);
-            b.cone = whole_sphere(0.0);
-            break;
-        case LIGHT_SPOT: {
-            b.lo = b.hi = xyz(l.data.spot.position);
-            const double theta = std::acos(std::clamp(static_cast<double>(l.data.spot.cos_outer), -1.0, 1.0));
-            b.cone = {glm::normalize(xyz(l.data.spot.axis)), std::cos(std::min(theta + kConeSlack, kPi)),
-                      std::cos(kConeSlack)};
-            break;
-        }
-        case LIGHT_RECT_SPOT: {
-            b.lo = b.hi = xyz(l.data.rect_spot.position);
-            const double th = l.data.rect_spot.tan_half_h, tv = l.data.rect_spot.tan_half_v;
-            const double corner = std::atan(std::sqrt(th * th + tv * tv)); // the frustum's widest direction
-            b.cone = {glm::normalize(xyz(l.data.rect_spot.axis)), std::cos(std::min(corner + kConeSlack, kPi)),
-                      std::cos(kConeSlack)};
-            break;
-        }
-        default: // LIGHT_DIRECTIONAL, LIGHT_ENVIRONMENT
-            b.infinite = true;
-            break;
-        }
-    }
+    SharedWork::for_pieces(lights.size(), kParallelBounds / 4, lights.size() > kParallelBounds ? 0 : 1,
+                           [&](std::size_t begin, std::size_t end) {
+                               for (std::size_t i = begin; i < end; ++i)
+                                   out[i] = bounds_of(lights[i], power[i]);
+                           });
     return out;
 }
 
