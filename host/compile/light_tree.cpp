@@ -202,8 +202,9 @@ constexpr int kBuckets = 12;
 // of fewer than 2^32 lights is deeper than 62, so every light's path fits one bit a level
 // in 64.
 constexpr std::uint32_t kMedianDepth = 30;
-// Trees of more lights than this are built on every core (SharedWork), and subtrees of
-// more than kShareLights are handed to a core that has nothing left to build.
+// Trees of more lights than this are built on every core (SharedWork): subtrees of more
+// than kShareLights are handed to a core that has nothing left to build, and the records
+// are made that many at a time.
 constexpr std::size_t kParallelLights = 4096;
 constexpr std::size_t kShareLights = 1024;
 
