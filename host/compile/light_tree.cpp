@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <exception>
+#include <cstring>
+#include <mutex>
 #include <numbers>
-#include <thread>
+#include <type_traits>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
 #include "common/error.h"
+#include "common/shared_work.h"
 
 namespace pathcl {
 namespace {
@@ -55,6 +58,10 @@ struct Cone {
     Cone(const glm::dvec3& a, double theta, const Cone& spread)
         : axis(a), cos_o(std::cos(theta)), sin_o(std::sin(theta)), theta_o(theta), cos_e(spread.cos_e),
           theta_e(spread.theta_e)
+    {}
+    // Every field given (a LightRecord's).
+    Cone(const glm::dvec3& a, double cos_o_, double sin_o_, double theta_o_, double cos_e_, double theta_e_)
+        : axis(a), cos_o(cos_o_), sin_o(sin_o_), theta_o(theta_o_), cos_e(cos_e_), theta_e(theta_e_)
     {}
     LightCone light_cone() const { return {axis, cos_o, cos_e}; }
 };
@@ -123,6 +130,31 @@ struct Box {
     }
 };
 
+// A light as the build reads it. The records are kept in the order the partitions leave
+// them, so that each pass over a node's lights walks contiguous memory, two cache lines a
+// record. It holds its cone as Cone's fields, not a Cone, so that a record has no default
+// values: the records are made on every core, each page first written by the core that
+// fills it (page faults on 128 MB took 50 ms on one core of the 2-core VM).
+struct alignas(64) LightRecord {
+    glm::dvec3 axis;
+    double cos_o, sin_o, theta_o, cos_e, theta_e;
+    glm::dvec3 lo, hi;
+    double phi;
+    std::uint32_t light;
+    bool two_sided;
+
+    LightRecord() {} // NOLINT(modernize-use-equals-default): no values, see above
+    LightRecord(const LightBounds& b, std::uint32_t l) : LightRecord(b, Cone(b.cone), l) {}
+    Cone cone() const { return {axis, cos_o, sin_o, theta_o, cos_e, theta_e}; }
+    glm::dvec3 centroid() const { return (lo + hi) * 0.5; }
+
+private:
+    LightRecord(const LightBounds& b, const Cone& c, std::uint32_t l)
+        : axis(c.axis), cos_o(c.cos_o), sin_o(c.sin_o), theta_o(c.theta_o), cos_e(c.cos_e), theta_e(c.theta_e),
+          lo(b.lo), hi(b.hi), phi(b.phi), light(l), two_sided(b.two_sided)
+    {}
+};
+
 // A node's bounds while building: box, power, cone (and whether any light is two-sided).
 struct Bounds {
     Box box;
@@ -130,13 +162,12 @@ struct Bounds {
     Cone cone;
     bool any = false;
     bool two_sided = false;
-    // A light of bounds b and cone c.
-    void extend(const LightBounds& b, const Cone& c)
+    void extend(const LightRecord& r)
     {
-        box.extend(b.lo, b.hi);
-        phi += b.phi;
-        cone = any ? unite(cone, c) : c;
-        two_sided = two_sided || b.two_sided;
+        box.extend(r.lo, r.hi);
+        phi += r.phi;
+        cone = any ? unite(cone, r.cone()) : r.cone();
+        two_sided = two_sided || r.two_sided;
         any = true;
     }
     void extend(const Bounds& b)
@@ -171,167 +202,295 @@ constexpr int kBuckets = 12;
 // of fewer than 2^32 lights is deeper than 62, so every light's path fits one bit a level
 // in 64.
 constexpr std::uint32_t kMedianDepth = 30;
-// Subtrees of more lights than this are built on a thread of their own (two cores halve
-// the build of a large tree).
+// Trees of more lights than this are built on every core (SharedWork): subtrees of more
+// than kShareLights are handed to a core that has nothing left to build, and the records
+// are made that many at a time.
 constexpr std::size_t kParallelLights = 4096;
+constexpr std::size_t kShareLights = 1024;
 
-// A node of the binary tree the eight-wide one is collapsed from; the nodes of a subtree
-// built apart are appended with their indices shifted.
+// A node of the binary tree the eight-wide one is collapsed from. A child is a node or,
+// with kLeaf set, a light: the position of its record. Every field is set when the node
+// is built (no default values, as in LightRecord).
 struct BinaryNode {
-    Bounds bounds;
-    std::uint32_t first = 0, second = 0; // the children
-    std::int64_t light = -1;             // a leaf's light
-    std::uint32_t lights = 1;            // below it
+    std::array<std::uint32_t, 2> child;
+    std::uint32_t lights; // below it
+    bool pending;         // its bounds wait for a subtree built on another thread
+    BinaryNode() {}       // NOLINT(modernize-use-equals-default)
 };
 
-class Builder {
+// A node's Bounds, stored without default values (as in LightRecord).
+class StoredBounds {
 public:
-    Builder(const std::vector<LightBounds>& lights, std::vector<pcl_ulong>& trails) : lights_(lights), trails_(trails)
+    StoredBounds() {} // NOLINT(modernize-use-equals-default)
+    void set(const Bounds& b) { std::memcpy(bytes_, &b, sizeof(Bounds)); }
+    Bounds get() const
     {
-        cones_.reserve(lights.size());
-        centroids_.reserve(lights.size());
-        for (const LightBounds& b : lights) {
-            cones_.emplace_back(b.cone);
-            centroids_.push_back((b.lo + b.hi) * 0.5);
-        }
-    }
-
-    // Builds the subtree over order[begin, end), reached from the root by `trail` (bit k:
-    // the child taken at depth k) at `depth`, into `nodes`; returns its node.
-    std::uint32_t build(std::vector<BinaryNode>& nodes, std::vector<std::uint32_t>& order, std::size_t begin,
-                        std::size_t end, std::uint32_t depth, pcl_ulong trail)
-    {
-        const auto index = static_cast<std::uint32_t>(nodes.size());
-        nodes.emplace_back();
-        if (end - begin == 1) {
-            nodes[index].light = order[begin];
-            nodes[index].bounds.extend(lights_[order[begin]], cones_[order[begin]]);
-            trails_[order[begin]] = trail;
-            return index;
-        }
-        const std::size_t mid = split(order, begin, end, depth);
-        const pcl_ulong second_trail = trail | (pcl_ulong(1) << depth);
-        std::uint32_t first = 0, second = 0;
-        if (end - begin > kParallelLights && depth < 2) {
-            // The second subtree on another thread, into nodes of its own.
-            std::vector<BinaryNode> apart;
-            std::exception_ptr failure;
-            std::thread worker([&] {
-                try {
-                    build(apart, order, mid, end, depth + 1, second_trail);
-                } catch (...) {
-                    failure = std::current_exception();
-                }
-            });
-            first = build(nodes, order, begin, mid, depth + 1, trail);
-            worker.join();
-            if (failure)
-                std::rethrow_exception(failure);
-            second = static_cast<std::uint32_t>(nodes.size());
-            for (BinaryNode n : apart) {
-                if (n.light < 0) {
-                    n.first += second;
-                    n.second += second;
-                }
-                nodes.push_back(n);
-            }
-        } else {
-            first = build(nodes, order, begin, mid, depth + 1, trail);
-            second = build(nodes, order, mid, end, depth + 1, second_trail);
-        }
-        Bounds b = nodes[first].bounds;
-        b.extend(nodes[second].bounds);
-        nodes[index].bounds = b;
-        nodes[index].first = first;
-        nodes[index].second = second;
-        nodes[index].lights = nodes[first].lights + nodes[second].lights;
-        return index;
+        Bounds b;
+        std::memcpy(&b, bytes_, sizeof(Bounds));
+        return b;
     }
 
 private:
-    const glm::dvec3& centroid(std::uint32_t light) const { return centroids_[light]; }
+    static_assert(std::is_trivially_copyable_v<Bounds>);
+    alignas(Bounds) unsigned char bytes_[sizeof(Bounds)];
+};
 
-    // Partitions order[begin, end) and returns where the second child starts.
-    std::size_t split(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, std::uint32_t depth)
+constexpr std::uint32_t kLeaf = 1u << 31;
+
+// A leaf's bounds: those of its light.
+Bounds light_bounds(const LightRecord& r)
+{
+    Bounds b;
+    b.extend(r);
+    return b;
+}
+
+// The binary tree: its nodes, depth first (a node over n lights is followed by the n - 2
+// nodes of its subtrees, the first child's before the second's), their bounds (apart:
+// laying out the eight-wide tree reads only the nodes) and the lights' records.
+struct BinaryTree {
+    std::vector<BinaryNode> nodes;
+    std::vector<StoredBounds> bounds; // by node
+    std::vector<LightRecord> records;
+
+    Bounds of(std::uint32_t child) const
     {
-        Box centroids;
-        for (std::size_t i = begin; i < end; ++i) {
-            const glm::dvec3 c = centroid(order[i]);
-            centroids.extend(c, c);
+        return child & kLeaf ? light_bounds(records[child & ~kLeaf]) : bounds[child].get();
+    }
+};
+
+// Builds the binary tree. A subtree's nodes have their place before it is built (the
+// depth-first layout), so that subtrees built on different threads need no merging.
+class Builder {
+public:
+    // Over the lights of `order` (finite, every one of them), in that order.
+    Builder(const std::vector<LightBounds>& lights, const std::vector<std::uint32_t>& order,
+            std::vector<pcl_ulong>& trails)
+        : work_(order.size() > kParallelLights ? 0 : 1), trails_(trails)
+    {
+        const std::size_t n = order.size();
+        records_.resize(n);
+        nodes_.resize(n - 1);
+        tree_.bounds.resize(n - 1);
+        // The centroids' box of each piece, merged in the order of the pieces: the box one
+        // pass over all would make, down to which of +0 and -0 it holds.
+        std::mutex mutex;
+        std::vector<std::pair<std::size_t, Box>> boxes;
+        SharedWork::for_pieces(n, kShareLights, n > kParallelLights ? 0 : 1, [&](std::size_t begin, std::size_t end) {
+            Box box;
+            for (std::size_t i = begin; i < end; ++i) {
+                records_[i] = LightRecord(lights[order[i]], order[i]);
+                const glm::dvec3 c = records_[i].centroid();
+                box.extend(c, c);
+            }
+            const std::lock_guard<std::mutex> lock(mutex);
+            boxes.emplace_back(begin, box);
+        });
+        std::sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [begin, box] : boxes)
+            centroids_.extend(box.lo, box.hi);
+    }
+
+    // Builds the tree; returns its root.
+    std::uint32_t build()
+    {
+        if (records_.size() == 1) {
+            trails_[records_[0].light] = 0;
+            return kLeaf;
         }
+        work_.run([this] { subtree(0, 0, records_.size(), 0, 0, centroids_); });
+        finish(0);
+        return 0;
+    }
+
+    const BinaryTree& tree() const { return tree_; }
+
+private:
+    // Where the second child starts, and the boxes of the children's centroids.
+    struct Split {
+        std::size_t mid;
+        Box first, second;
+    };
+
+    // The subtree over records_[begin, end), whose centroids `centroids` bounds, reached
+    // from the root by `trail` (bit k: the child taken at depth k) at `depth`: a light, or
+    // the node at nodes_[index] and those below it. Returns whether its bounds are set
+    // (not while a part of it is being built on another thread).
+    bool subtree(std::size_t index, std::size_t begin, std::size_t end, std::uint32_t depth, pcl_ulong trail,
+                 const Box& centroids)
+    {
+        if (end - begin == 1) {
+            trails_[records_[begin].light] = trail;
+            return true;
+        }
+        const Split s = split(begin, end, depth, centroids);
+        const pcl_ulong second_trail = trail | (pcl_ulong(1) << depth);
+        const std::size_t first = index + 1, second = index + (s.mid - begin);
+        const bool shared = end - s.mid > kShareLights && work_.wanted();
+        if (shared)
+            work_.share([=, this] { subtree(second, s.mid, end, depth + 1, second_trail, s.second); });
+        const bool first_set = subtree(first, begin, s.mid, depth + 1, trail, s.first);
+        const bool second_set = !shared && subtree(second, s.mid, end, depth + 1, second_trail, s.second);
+        const bool complete = first_set && second_set;
+        BinaryNode& n = nodes_[index];
+        n.child = {reference(first, begin, s.mid), reference(second, s.mid, end)};
+        n.lights = static_cast<std::uint32_t>(end - begin);
+        n.pending = !complete;
+        if (complete)
+            tree_.bounds[index].set(child_bounds(n));
+        return complete;
+    }
+
+    // The child over records_[begin, end) whose node (if it is one) is nodes_[index].
+    static std::uint32_t reference(std::size_t index, std::size_t begin, std::size_t end)
+    {
+        return static_cast<std::uint32_t>(end - begin == 1 ? kLeaf | begin : index);
+    }
+
+    Bounds child_bounds(const BinaryNode& n) const
+    {
+        Bounds b = tree_.of(n.child[0]);
+        b.extend(tree_.of(n.child[1]));
+        return b;
+    }
+
+    // Sets the bounds the threads left pending, below the subtrees they built.
+    void finish(std::uint32_t index)
+    {
+        BinaryNode& n = nodes_[index];
+        if (!n.pending)
+            return;
+        for (std::uint32_t c : n.child)
+            if (!(c & kLeaf))
+                finish(c);
+        tree_.bounds[index].set(child_bounds(n));
+        n.pending = false;
+    }
+
+    Box centroid_box(std::size_t begin, std::size_t end) const
+    {
+        Box box;
+        for (std::size_t i = begin; i < end; ++i) {
+            const glm::dvec3 c = records_[i].centroid();
+            box.extend(c, c);
+        }
+        return box;
+    }
+
+    // Partitions records_[begin, end).
+    Split split(std::size_t begin, std::size_t end, std::uint32_t depth, const Box& centroids)
+    {
         const glm::dvec3 extent = centroids.hi - centroids.lo;
-        double best_cost = INFINITY;
-        int best_axis = -1, best_bucket = 0;
         // Binned along the centroids' longest axis only: a third of the work of trying all
         // three, which the build's speed needs.
         int axis = 0;
         for (int a = 1; a < 3; ++a)
             if (extent[a] > extent[axis])
                 axis = a;
+        const auto first = records_.begin() + static_cast<std::ptrdiff_t>(begin);
+        const auto last = records_.begin() + static_cast<std::ptrdiff_t>(end);
+        if (end - begin == 2) {
+            // Whatever the costs, two lights end up ordered along the axis, the first
+            // kept first where they tie (as the partition and the halving by count below
+            // leave them).
+            if (last[-1].centroid()[axis] < first->centroid()[axis])
+                std::iter_swap(first, last - 1);
+            const glm::dvec3 a = first->centroid(), b = last[-1].centroid();
+            return {begin + 1, {a, a}, {b, b}};
+        }
         if (depth < kMedianDepth && extent[axis] > 0.0) {
-            std::array<Bounds, kBuckets> buckets = bin(order, begin, end, axis, centroids, extent);
-            // Costs of splitting after bucket k: a sweep from each side.
-            std::array<double, kBuckets - 1> cost{};
-            Bounds below;
-            for (int k = 0; k < kBuckets - 1; ++k) {
-                below.extend(buckets[k]);
-                cost[k] = saoh_cost(below);
-            }
-            Bounds above;
-            for (int k = kBuckets - 1; k > 0; --k) {
-                above.extend(buckets[k]);
-                cost[k - 1] += saoh_cost(above);
-            }
-            for (int k = 0; k < kBuckets - 1; ++k) {
-                if (cost[k] < best_cost) {
-                    best_cost = cost[k];
-                    best_axis = axis;
-                    best_bucket = k;
+            const Bins bins = bin(begin, end, axis, centroids, extent);
+            const int best = best_bucket(bins.buckets);
+            if (best >= 0) {
+                const double lo = centroids.lo[axis], scale = kBuckets / extent[axis];
+                const std::size_t mid = static_cast<std::size_t>(
+                    std::partition(first, last,
+                                   [&](const LightRecord& r) { return bucket_of(r, axis, lo, scale) <= best; }) -
+                    records_.begin());
+                if (mid != begin && mid != end) {
+                    Split s{mid, {}, {}};
+                    for (int k = 0; k < kBuckets; ++k) {
+                        Box& side = k <= best ? s.first : s.second;
+                        side.extend(bins.centroids[k].lo, bins.centroids[k].hi);
+                    }
+                    return s;
                 }
             }
         }
-        std::size_t mid = begin;
-        if (best_axis >= 0) {
-            auto first = order.begin() + static_cast<std::ptrdiff_t>(begin);
-            auto last = order.begin() + static_cast<std::ptrdiff_t>(end);
-            mid = static_cast<std::size_t>(std::partition(first, last,
-                                                          [&](std::uint32_t l) {
-                                                              return bucket_of(l, best_axis, centroids, extent) <=
-                                                                     best_bucket;
-                                                          }) -
-                                           order.begin());
-        }
-        if (mid == begin || mid == end) { // no split of the centroids: halves by count, along the widest axis
-            mid = begin + (end - begin) / 2;
-            std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                             order.begin() + static_cast<std::ptrdiff_t>(mid),
-                             order.begin() + static_cast<std::ptrdiff_t>(end),
-                             [&](std::uint32_t a, std::uint32_t b) { return centroid(a)[axis] < centroid(b)[axis]; });
-        }
-        return mid;
+        // No split of the centroids: halves by count, along the widest axis.
+        const std::size_t mid = begin + (end - begin) / 2;
+        std::nth_element(
+            first, records_.begin() + static_cast<std::ptrdiff_t>(mid), last,
+            [&](const LightRecord& a, const LightRecord& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+        return {mid, centroid_box(begin, mid), centroid_box(mid, end)};
     }
 
-    // The lights of order[begin, end) in kBuckets buckets along `axis`: each bucket's box,
-    // power and cone. A bucket's cone is the one around its lights' mean axis that holds
-    // all of their cones: two passes of dot products and square roots, where uniting the
-    // lights' cones one by one would take their angles.
-    std::array<Bounds, kBuckets> bin(const std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end,
-                                     int axis, const Box& centroids, const glm::dvec3& extent) const
+    // The bucket after which a split costs least, -1 if none has a cost below infinity.
+    static int best_bucket(const std::array<Bounds, kBuckets>& buckets)
     {
+        // Costs of splitting after bucket k: a sweep from each side; an empty bucket leaves
+        // the cost as it was.
+        std::array<double, kBuckets - 1> cost{};
+        Bounds below;
+        double below_cost = 0.0;
+        for (int k = 0; k < kBuckets - 1; ++k) {
+            if (buckets[k].any) {
+                below.extend(buckets[k]);
+                below_cost = saoh_cost(below);
+            }
+            cost[k] = below_cost;
+        }
+        Bounds above;
+        double above_cost = 0.0;
+        for (int k = kBuckets - 1; k > 0; --k) {
+            if (buckets[k].any) {
+                above.extend(buckets[k]);
+                above_cost = saoh_cost(above);
+            }
+            cost[k - 1] += above_cost;
+        }
+        double best_cost = INFINITY;
+        int best = -1;
+        for (int k = 0; k < kBuckets - 1; ++k) {
+            if (cost[k] < best_cost) {
+                best_cost = cost[k];
+                best = k;
+            }
+        }
+        return best;
+    }
+
+    // The lights of a range in kBuckets buckets: each bucket's box, power and cone, and the
+    // box of its lights' centroids.
+    struct Bins {
         std::array<Bounds, kBuckets> buckets;
+        std::array<Box, kBuckets> centroids;
+    };
+
+    // The lights of records_[begin, end) in kBuckets buckets along `axis`. A bucket's cone
+    // is the one around its lights' mean axis that holds all of their cones: two passes of
+    // dot products and square roots, where uniting the lights' cones one by one would take
+    // their angles.
+    Bins bin(std::size_t begin, std::size_t end, int axis, const Box& centroids, const glm::dvec3& extent) const
+    {
+        Bins bins;
+        std::array<Bounds, kBuckets>& buckets = bins.buckets;
         std::array<glm::dvec3, kBuckets> axes{};
-        std::array<const Cone*, kBuckets> spread{};
+        std::array<const LightRecord*, kBuckets> spread{}; // the first of the widest emission spread
+        const double lo = centroids.lo[axis], scale = kBuckets / extent[axis];
         for (std::size_t i = begin; i < end; ++i) {
-            const std::uint32_t l = order[i];
-            const int k = bucket_of(l, axis, centroids, extent);
+            const LightRecord& r = records_[i];
+            const glm::dvec3 c = r.centroid();
+            const int k = bucket_of(c[axis], lo, scale);
             Bounds& b = buckets[k];
-            b.box.extend(lights_[l].lo, lights_[l].hi);
-            b.phi += lights_[l].phi;
-            b.two_sided = b.two_sided || lights_[l].two_sided;
+            b.box.extend(r.lo, r.hi);
+            b.phi += r.phi;
+            b.two_sided = b.two_sided || r.two_sided;
             b.any = true;
-            axes[k] += cones_[l].axis;
-            if (!spread[k] || cones_[l].cos_e < spread[k]->cos_e)
-                spread[k] = &cones_[l];
+            axes[k] += r.axis;
+            if (!spread[k] || r.cos_e < spread[k]->cos_e)
+                spread[k] = &r;
+            bins.centroids[k].extend(c, c);
         }
         std::array<double, kBuckets> cos_o;
         std::array<glm::dvec3, kBuckets> mean;
@@ -341,39 +500,44 @@ private:
             cos_o[k] = len > 1e-9 ? 1.0 : -1.0;
         }
         for (std::size_t i = begin; i < end; ++i) {
-            const std::uint32_t l = order[i];
-            const int k = bucket_of(l, axis, centroids, extent);
-            const Cone& c = cones_[l];
+            const LightRecord& r = records_[i];
+            const int k = bucket_of(r, axis, lo, scale);
             if (cos_o[k] <= -1.0)
                 continue;
             // cos(theta_d + theta_l): the farthest direction of the light's cone from the mean.
-            const double cos_d = std::clamp(glm::dot(mean[k], c.axis), -1.0, 1.0);
-            if (c.cos_o <= -1.0 || cos_d < -c.cos_o) { // theta_d + theta_l > pi
+            const double cos_d = std::clamp(glm::dot(mean[k], r.axis), -1.0, 1.0);
+            if (r.cos_o <= -1.0 || cos_d < -r.cos_o) { // theta_d + theta_l > pi
                 cos_o[k] = -1.0;
                 continue;
             }
             const double sin_d = std::sqrt(1.0 - cos_d * cos_d);
-            cos_o[k] = std::min(cos_o[k], cos_d * c.cos_o - sin_d * c.sin_o);
+            cos_o[k] = std::min(cos_o[k], cos_d * r.cos_o - sin_d * r.sin_o);
         }
         for (int k = 0; k < kBuckets; ++k) {
             if (!buckets[k].any)
                 continue;
+            const Cone s = spread[k]->cone();
             const double cos_k = std::max(-1.0, cos_o[k] - 1e-12); // rounding, on the safe side
-            buckets[k].cone =
-                with_spread(cos_k <= -1.0 ? Cone() : Cone(mean[k], std::acos(cos_k), *spread[k]), *spread[k]);
+            buckets[k].cone = with_spread(cos_k <= -1.0 ? Cone() : Cone(mean[k], std::acos(cos_k), s), s);
         }
-        return buckets;
+        return bins;
     }
 
-    int bucket_of(std::uint32_t light, int axis, const Box& centroids, const glm::dvec3& extent) const
+    static int bucket_of(double centroid, double lo, double scale)
     {
-        const double scale = kBuckets / extent[axis]; // hoisted out of the callers' loops by inlining
-        return std::clamp(static_cast<int>((centroid(light)[axis] - centroids.lo[axis]) * scale), 0, kBuckets - 1);
+        return std::clamp(static_cast<int>((centroid - lo) * scale), 0, kBuckets - 1);
     }
 
-    const std::vector<LightBounds>& lights_;
-    std::vector<Cone> cones_;
-    std::vector<glm::dvec3> centroids_;
+    static int bucket_of(const LightRecord& r, int axis, double lo, double scale)
+    {
+        return bucket_of(r.centroid()[axis], lo, scale);
+    }
+
+    SharedWork work_;
+    BinaryTree tree_;
+    Box centroids_;                                     // of every light
+    std::vector<LightRecord>& records_ = tree_.records; // in the order the partitions leave them
+    std::vector<BinaryNode>& nodes_ = tree_.nodes;
     std::vector<pcl_ulong>& trails_;
 };
 
@@ -396,65 +560,106 @@ float float_up(double x)
 // binary node it stands for: starting from its two children, the lane over the most
 // lights is replaced by its two children until there are eight or only leaves. Each lane
 // keeps its code, the bits of the binary path from the node down to it (LIGHT_TREE_CODE),
-// by which a light's binary trail leads through the eight-wide nodes.
+// by which a light's binary trail leads through the eight-wide nodes. The nodes are laid
+// out depth first on one thread; their lanes' bounds are then set on every core (trees of
+// more than kParallelNodes nodes, in pieces of at least kShareNodes).
+constexpr std::size_t kParallelNodes = 1024;
+constexpr std::size_t kShareNodes = 256;
+
 class Collapser {
 public:
-    Collapser(const std::vector<BinaryNode>& binary, LightTree& tree) : binary_(binary), tree_(tree) {}
+    Collapser(const BinaryTree& binary, LightTree& tree) : binary_(binary), tree_(tree) {}
 
-    // Writes the eight-wide node for binary node b at `depth` and everything below it;
+    // Writes the eight-wide tree under binary node `root` (Builder's reference: a node or
+    // a light).
+    void collapse(std::uint32_t root)
+    {
+        lanes_.reserve(binary_.nodes.size() + 1); // at most one node for each binary one
+        lay_out(root, 0);
+        tree_.nodes.resize(lanes_.size());
+        SharedWork::for_pieces(lanes_.size(), kShareNodes, lanes_.size() > kParallelNodes ? 0 : 1,
+                               [this](std::size_t begin, std::size_t end) {
+                                   for (std::size_t i = begin; i < end; ++i)
+                                       write(i);
+                               });
+    }
+
+private:
+    // A node's lanes: the binary node (or light) each stands for, its code, its child node.
+    struct Lanes {
+        std::array<std::uint32_t, LIGHT_TREE_WIDTH> binary;
+        std::array<pcl_int, LIGHT_TREE_WIDTH> code, child;
+        std::uint32_t count = 0;
+    };
+
+    // Lays out the eight-wide node for binary node b at `depth` and everything below it;
     // returns its index.
-    std::uint32_t node(std::uint32_t b, std::uint32_t depth)
+    std::uint32_t lay_out(std::uint32_t b, std::uint32_t depth)
     {
         struct Lane {
             std::uint32_t binary, bits, length;
         };
-        std::vector<Lane> lanes;
-        if (binary_[b].light >= 0) {
-            lanes.push_back({b, 0, 0}); // a tree of one light
+        std::array<Lane, LIGHT_TREE_WIDTH> lanes;
+        std::size_t count = 0;
+        if (b & kLeaf) {
+            lanes[count++] = {b, 0, 0}; // a tree of one light
         } else {
-            lanes = {{binary_[b].first, 0, 1}, {binary_[b].second, 1, 1}};
-            while (lanes.size() < LIGHT_TREE_WIDTH) {
-                std::size_t widest = lanes.size();
-                for (std::size_t k = 0; k < lanes.size(); ++k)
-                    if (binary_[lanes[k].binary].light < 0 &&
-                        (widest == lanes.size() ||
-                         binary_[lanes[k].binary].lights > binary_[lanes[widest].binary].lights))
+            lanes[count++] = {binary_.nodes[b].child[0], 0, 1};
+            lanes[count++] = {binary_.nodes[b].child[1], 1, 1};
+            while (count < LIGHT_TREE_WIDTH) {
+                std::size_t widest = count;
+                for (std::size_t k = 0; k < count; ++k)
+                    if (!(lanes[k].binary & kLeaf) &&
+                        (widest == count ||
+                         binary_.nodes[lanes[k].binary].lights > binary_.nodes[lanes[widest].binary].lights))
                         widest = k;
-                if (widest == lanes.size())
+                if (widest == count)
                     break;
                 const Lane w = lanes[widest];
-                const BinaryNode& n = binary_[w.binary];
-                lanes[widest] = {n.first, w.bits, w.length + 1};
-                lanes.push_back({n.second, w.bits | (1u << w.length), w.length + 1});
+                const BinaryNode& n = binary_.nodes[w.binary];
+                lanes[widest] = {n.child[0], w.bits, w.length + 1};
+                lanes[count++] = {n.child[1], w.bits | (1u << w.length), w.length + 1};
             }
         }
-        const auto index = static_cast<std::uint32_t>(tree_.nodes.size());
-        tree_.nodes.emplace_back();
+        const auto index = static_cast<std::uint32_t>(lanes_.size());
+        lanes_.emplace_back();
         tree_.depth = std::max(tree_.depth, depth + 1);
-        for (std::size_t k = 0; k < lanes.size(); ++k) {
-            const BinaryNode& n = binary_[lanes[k].binary];
-            set_lane(index, k, n.bounds);
-            tree_.nodes[index].code.s[k] = static_cast<pcl_int>(lanes[k].bits | (lanes[k].length << 8));
-            const pcl_int child = n.light >= 0 ? -1 - static_cast<pcl_int>(n.light)
-                                               : static_cast<pcl_int>(node(lanes[k].binary, depth + 1));
-            tree_.nodes[index].child.s[k] = child;
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t lane = lanes[k].binary;
+            const pcl_int child = lane & kLeaf ? 0 : static_cast<pcl_int>(lay_out(lane, depth + 1));
+            Lanes& l = lanes_[index];
+            l.binary[k] = lane;
+            l.code[k] = static_cast<pcl_int>(lanes[k].bits | (lanes[k].length << 8));
+            l.child[k] = child;
+            l.count = static_cast<std::uint32_t>(k + 1);
         }
         return index;
     }
 
+    void write(std::size_t index)
+    {
+        const Lanes& l = lanes_[index];
+        for (std::size_t k = 0; k < l.count; ++k) {
+            const std::uint32_t lane = l.binary[k];
+            set_lane(index, k, binary_.of(lane));
+            tree_.nodes[index].code.s[k] = l.code[k];
+            tree_.nodes[index].child.s[k] =
+                lane & kLeaf ? -1 - static_cast<pcl_int>(binary_.records[lane & ~kLeaf].light) : l.child[k];
+        }
+    }
+
 private:
-    void set_lane(std::uint32_t index, std::size_t k, const Bounds& b)
+    void set_lane(std::size_t index, std::size_t k, const Bounds& b)
     {
         LightTreeNode& node = tree_.nodes[index];
         const glm::dvec3 centre = (b.box.lo + b.box.hi) * 0.5;
         const glm::vec3 c(centre);
-        double radius2 = 0.0; // of the sphere around the float centre that holds the box
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 p((corner & 1) ? b.box.hi.x : b.box.lo.x, (corner & 2) ? b.box.hi.y : b.box.lo.y,
-                               (corner & 4) ? b.box.hi.z : b.box.lo.z);
-            const glm::dvec3 d = p - glm::dvec3(c);
-            radius2 = std::max(radius2, glm::dot(d, d));
-        }
+        // Of the sphere around the float centre that holds the box: the farthest corner's
+        // squared distance, (dx^2 + dy^2) + dz^2, from the farther side on each axis (the
+        // rounded sums grow with their terms, so this is the largest of the eight).
+        const glm::dvec3 to_lo = b.box.lo - glm::dvec3(c), to_hi = b.box.hi - glm::dvec3(c);
+        const glm::dvec3 d2 = glm::max(to_lo * to_lo, to_hi * to_hi);
+        const double radius2 = std::max(0.0, d2.x + d2.y + d2.z);
         node.centre_x.s[k] = c.x;
         node.centre_y.s[k] = c.y;
         node.centre_z.s[k] = c.z;
@@ -470,9 +675,63 @@ private:
         node.two_sided.s[k] = b.two_sided ? -1 : 0;
     }
 
-    const std::vector<BinaryNode>& binary_;
+    const BinaryTree& binary_;
     LightTree& tree_;
+    std::vector<Lanes> lanes_; // by node
 };
+
+LightBounds bounds_of(const Light& l, double power)
+{
+    LightBounds b;
+    b.phi = power;
+    switch (l.type) {
+    case LIGHT_TRIANGLE: {
+        const glm::dvec3 v0 = xyz(l.data.triangle.v0), v1 = xyz(l.data.triangle.v1), v2 = xyz(l.data.triangle.v2);
+        b.lo = glm::min(v0, glm::min(v1, v2));
+        b.hi = glm::max(v0, glm::max(v1, v2));
+        const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
+        const double len = glm::length(n);
+        // Front face only, as a Lambertian emitter: every direction within pi/2 of the
+        // normal. A degenerate triangle gets the whole sphere.
+        b.cone = len > 0.0 ? LightCone{n / len, 1.0, 0.0} : whole_sphere(0.0);
+        break;
+    }
+    case LIGHT_SPHERE: {
+        const glm::dvec3 c = xyz(l.data.sphere.centre);
+        const double r = l.data.sphere.radius;
+        b.lo = c - glm::dvec3(r);
+        b.hi = c + glm::dvec3(r);
+        b.cone = whole_sphere(0.0);
+        break;
+    }
+    case LIGHT_POINT:
+        b.lo = b.hi = xyz(l.data.point.position);
+        b.cone = whole_sphere(0.0);
+        break;
+    case LIGHT_SPOT: {
+        b.lo = b.hi = xyz(l.data.spot.position);
+        const double theta = std::acos(std::clamp(static_cast<double>(l.data.spot.cos_outer), -1.0, 1.0));
+        b.cone = {glm::normalize(xyz(l.data.spot.axis)), std::cos(std::min(theta + kConeSlack, kPi)),
+                  std::cos(kConeSlack)};
+        break;
+    }
+    case LIGHT_RECT_SPOT: {
+        b.lo = b.hi = xyz(l.data.rect_spot.position);
+        const double th = l.data.rect_spot.tan_half_h, tv = l.data.rect_spot.tan_half_v;
+        const double corner = std::atan(std::sqrt(th * th + tv * tv)); // the frustum's widest direction
+        b.cone = {glm::normalize(xyz(l.data.rect_spot.axis)), std::cos(std::min(corner + kConeSlack, kPi)),
+                  std::cos(kConeSlack)};
+        break;
+    }
+    default: // LIGHT_DIRECTIONAL, LIGHT_ENVIRONMENT
+        b.infinite = true;
+        break;
+    }
+    return b;
+}
+
+// Lights are bounded on every core in lists longer than this.
+constexpr std::size_t kParallelBounds = 16384;
 
 } // namespace
 
@@ -484,54 +743,11 @@ LightCone cone_union(const LightCone& a, const LightCone& b)
 std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const std::vector<double>& power)
 {
     std::vector<LightBounds> out(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const Light& l = lights[i];
-        LightBounds& b = out[i];
-        b.phi = power[i];
-        switch (l.type) {
-        case LIGHT_TRIANGLE: {
-            const glm::dvec3 v0 = xyz(l.data.triangle.v0), v1 = xyz(l.data.triangle.v1), v2 = xyz(l.data.triangle.v2);
-            b.lo = glm::min(v0, glm::min(v1, v2));
-            b.hi = glm::max(v0, glm::max(v1, v2));
-            const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
-            const double len = glm::length(n);
-            // Front face only, as a Lambertian emitter: every direction within pi/2 of the
-            // normal. A degenerate triangle gets the whole sphere.
-            b.cone = len > 0.0 ? LightCone{n / len, 1.0, 0.0} : whole_sphere(0.0);
-            break;
-        }
-        case LIGHT_SPHERE: {
-            const glm::dvec3 c = xyz(l.data.sphere.centre);
-            const double r = l.data.sphere.radius;
-            b.lo = c - glm::dvec3(r);
-            b.hi = c + glm::dvec3(r);
-            b.cone = whole_sphere(0.0);
-            break;
-        }
-        case LIGHT_POINT:
-            b.lo = b.hi = xyz(l.data.point.position);
-            b.cone = whole_sphere(0.0);
-            break;
-        case LIGHT_SPOT: {
-            b.lo = b.hi = xyz(l.data.spot.position);
-            const double theta = std::acos(std::clamp(static_cast<double>(l.data.spot.cos_outer), -1.0, 1.0));
-            b.cone = {glm::normalize(xyz(l.data.spot.axis)), std::cos(std::min(theta + kConeSlack, kPi)),
-                      std::cos(kConeSlack)};
-            break;
-        }
-        case LIGHT_RECT_SPOT: {
-            b.lo = b.hi = xyz(l.data.rect_spot.position);
-            const double th = l.data.rect_spot.tan_half_h, tv = l.data.rect_spot.tan_half_v;
-            const double corner = std::atan(std::sqrt(th * th + tv * tv)); // the frustum's widest direction
-            b.cone = {glm::normalize(xyz(l.data.rect_spot.axis)), std::cos(std::min(corner + kConeSlack, kPi)),
-                      std::cos(kConeSlack)};
-            break;
-        }
-        default: // LIGHT_DIRECTIONAL, LIGHT_ENVIRONMENT
-            b.infinite = true;
-            break;
-        }
-    }
+    SharedWork::for_pieces(lights.size(), kParallelBounds / 4, lights.size() > kParallelBounds ? 0 : 1,
+                           [&](std::size_t begin, std::size_t end) {
+                               for (std::size_t i = begin; i < end; ++i)
+                                   out[i] = bounds_of(lights[i], power[i]);
+                           });
     return out;
 }
 
@@ -563,10 +779,9 @@ LightTree build_light_tree(const std::vector<LightBounds>& lights)
                 ? 1.0
                 : (infinite_power + bounded_power > 0.0 ? infinite_power / (infinite_power + bounded_power) : 0.5);
     if (!order.empty()) {
-        std::vector<BinaryNode> binary;
-        binary.reserve(2 * order.size() - 1);
-        Builder(lights, tree.trails).build(binary, order, 0, order.size(), 0, 0);
-        Collapser(binary, tree).node(0, 0);
+        Builder builder(lights, order, tree.trails);
+        const std::uint32_t root = builder.build();
+        Collapser(builder.tree(), tree).collapse(root);
     }
     return tree;
 }
