@@ -5,6 +5,7 @@
  * squared over the cosine at the light, which varies without bound across a triangle seen
  * from close by. */
 #include "util/atan.cl"
+#include "util/compat.h"
 #include "util/math.cl"
 #include "util/sincos.cl"
 
