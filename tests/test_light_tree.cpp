@@ -73,6 +73,23 @@ TEST(LightTree, UnionOfTwoConesHoldsBoth)
     }
 }
 
+// Coplanar triangles' normals agree to rounding: their cones' union must stay as narrow
+// (a whole-sphere cone there sends picks to emitters facing away).
+TEST(LightTree, UnionOfNearlyParallelConesIsNarrow)
+{
+    std::mt19937 rng(5);
+    for (int t = 0; t < 200; ++t) {
+        const glm::dvec3 a = random_direction(rng);
+        const double tilt = std::ldexp(1.0, -40 - t % 12); // 2^-40 .. 2^-51 radians
+        const glm::dvec3 b = glm::normalize(a + tilt * glm::normalize(glm::cross(a, random_direction(rng))));
+        const double cos_o = t % 2 == 0 ? 1.0 : std::cos(0.01);
+        const LightCone u = cone_union({a, cos_o, 0.0}, {b, cos_o, 0.0});
+        EXPECT_GE(u.cos_o, std::cos(0.01 + 1e-9)) << "case " << t << ": tilt " << tilt;
+        // acos near 1 resolves angles to about 1.5e-8 radians.
+        EXPECT_TRUE(in_cone(u, a, 1e-7) && in_cone(u, b, 1e-7)) << "case " << t;
+    }
+}
+
 std::vector<LightBounds> random_lights(std::size_t n, std::mt19937& rng)
 {
     std::uniform_real_distribution<double> u(-10.0, 10.0), size(0.0, 0.5), decades(-2.0, 2.0);

@@ -106,8 +106,14 @@ Cone unite(const Cone& a, const Cone& b)
         return with_spread(Cone(), spread);
     const glm::dvec3 w = glm::cross(a.axis, b.axis);
     const double w_len = glm::length(w);
-    if (!(w_len > 1e-12))
-        return with_spread(Cone(), spread);
+    if (!(w_len > 1e-12)) {
+        // Axes parallel to rounding (the normals of coplanar triangles): the wider cone
+        // widened by their angle holds both. Opposite axes: the whole sphere.
+        if (cos_d < 0.0)
+            return with_spread(Cone(), spread);
+        const Cone& wide = a.theta_o >= b.theta_o ? a : b;
+        return Cone(wide.axis, wide.theta_o + theta_d, spread);
+    }
     const glm::dvec3 k = w / w_len;
     const double turn = theta_o - a.theta_o;
     // Rodrigues: a.axis (orthogonal to k) turned by `turn` about k.
