@@ -263,5 +263,102 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     EXPECT_GT(behind, 1000u);
 }
 
+// The pmf light_tree_pmf gives each triangle of a glowing sphere (12,640 one-sided
+// triangles facing out; each quad's two are exactly coplanar), seen from points below and
+// beside it, against the ideal pmf q: each triangle's area times the cosines at both ends
+// over the squared distance. The second moment sum q^2 / p is the factor by which the
+// pick alone multiplies the light estimate's mean square (1: the ideal; the power table,
+// with half its picks facing away, gives 3.7 to 6.7 here). Measured: 1.64 to 1.94, mean
+// 1.79; children weighed by their upper bounds alone give a mean of 1.93; coplanar
+// neighbours' cones united into the whole sphere, 2.6 to 2.9 (a third of the picks end
+// where no triangle faces the point).
+TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
+{
+    const int stacks = 80, slices = 80;
+    const glm::dvec3 centre(2.0, 0.9, 2.0);
+    const double radius = 0.4;
+    auto vertex = [&](int i, int j) {
+        const double theta = std::numbers::pi * i / stacks, phi = 2.0 * std::numbers::pi * j / slices;
+        return centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                            std::sin(theta) * std::sin(phi));
+    };
+    std::vector<LightBounds> lights;
+    std::vector<glm::dvec3> centroid, normal;
+    std::vector<double> area;
+    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+        const glm::dvec3 cr = glm::cross(b - a, c - a);
+        LightBounds t;
+        t.lo = glm::min(a, glm::min(b, c));
+        t.hi = glm::max(a, glm::max(b, c));
+        t.phi = 0.5 * glm::length(cr);
+        t.cone = {glm::normalize(cr), 1.0, 0.0};
+        lights.push_back(t);
+        centroid.push_back((a + b + c) / 3.0);
+        normal.push_back(t.cone.axis);
+        area.push_back(t.phi);
+    };
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            // Wound outward: counter-clockwise seen from outside.
+            const glm::dvec3 a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+            if (i > 0)
+                add(a, d, b);
+            if (i < stacks - 1)
+                add(b, d, c);
+        }
+    ASSERT_GT(glm::dot(normal[0], centroid[0] - centre), 0.0) << "the triangles face outward";
+    LightTree tree = build_light_tree(lights);
+    SceneArrays arrays;
+    arrays.lights.resize(lights.size());
+    arrays.light_tree = tree.nodes;
+    arrays.light_tree_trail = tree.trails;
+    FrameParams frame{};
+    frame.light_count = static_cast<pcl_uint>(lights.size());
+    ClDevice& dev = test::test_device();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    DeviceArrays a = upload_arrays(dev, arrays, 1);
+    const std::vector<Shading> points = {{{2.6f, 0.0f, 2.3f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
+                                         {{2.0f, 0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
+                                         {{3.0f, 0.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
+                                         {{4.0f, 1.4f, 2.5f, 0.0f}, {-1.0f, 0.0f, 0.0f, 0.0f}}};
+    double mean_moment = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Shading& sp = points[k];
+        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
+        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+        bind_kernel(pmf_kernel, a, frame, sp.ref, sp.n, pmf_out);
+        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
+        const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
+        const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
+        std::vector<double> q(lights.size());
+        double q_sum = 0.0, area_sum = 0.0;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            const glm::dvec3 d = p - centroid[i];
+            const double d2 = glm::dot(d, d);
+            const glm::dvec3 w = d / std::sqrt(d2);
+            q[i] = area[i] * std::max(0.0, glm::dot(normal[i], w)) * std::max(0.0, -glm::dot(n, w)) / d2;
+            q_sum += q[i];
+            area_sum += area[i];
+        }
+        double moment = 0.0, power_moment = 0.0, unreached = 0.0;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            const double qi = q[i] / q_sum;
+            if (qi == 0.0)
+                continue;
+            if (pmf[i] > 0.0f)
+                moment += qi * qi / pmf[i];
+            else
+                unreached += qi;
+            power_moment += qi * qi / (area[i] / area_sum);
+        }
+        EXPECT_EQ(unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
+        EXPECT_LE(moment, 2.2) << "point " << k;
+        mean_moment += moment / static_cast<double>(points.size());
+        std::cout << "point " << k << ": second moment " << moment << " (power table " << power_moment << ")\n";
+    }
+    EXPECT_LE(mean_moment, 1.85);
+}
+
 } // namespace
 } // namespace pathcl

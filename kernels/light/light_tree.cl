@@ -32,14 +32,20 @@ static inline float8 sin_of_clamped_difference8(float8 cos_a, float8 sin_a, floa
 }
 
 /* The importance of each of a node's eight children at the point ref with shading normal
- * n (zero: none): a bound on how much of its power can reach the point,
+ * n (zero: none): the mean of an upper and a lower bound on how much of its power can
+ * reach the point. The upper bound (Conty Estevez and Kulla 2018) is
  *   phi cos(theta') / d^2, times cos(theta'_i) at a surface,
  * where d is the distance to its bounding sphere's centre (at least its radius), theta'
  * the smallest angle between the direction from it to the point and any direction its
  * lights emit along (their normals' cone widened by the sphere's angular radius theta_b),
  * and theta'_i the smallest angle between the normal (either side: transmission) and any
- * direction to the sphere. Zero where none of its lights can emit towards the point, and
- * in empty lanes. */
+ * direction to the sphere. The lower bound takes the largest angles instead,
+ * theta + theta_o + theta_b and theta_i + theta_b, and is 0 unless every light of the
+ * child emits towards every point of the sphere around the point's direction. Alone, the
+ * upper bound weighs a child that might face the point (a patch of a glowing sphere seen
+ * edge-on) like one that surely does; with the mean, the child that surely does counts up
+ * to twice as much (Cycles' light tree mixes the two bounds too). Zero where none of its
+ * lights can emit towards the point, and in empty lanes. */
 static inline float8 light_tree_importance(__global const LightTreeNode* node, float3 ref, float3 n)
 {
     float8 dx = (float8)(ref.x) - node->centre_x, dy = (float8)(ref.y) - node->centre_y,
@@ -57,17 +63,41 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     float8 sin2_b = radius2 / dist2;
     float8 cos_b = select((float8)(-1.0f), sqrt(fmax(0.0f, 1.0f - sin2_b)), outside);
     float8 sin_b = select((float8)(0.0f), sqrt(fmin(sin2_b, 1.0f)), outside);
-    float8 cos_x = cos_of_clamped_difference8(cos_w, sin_w, node->cos_o, node->sin_o);
-    float8 sin_x = sin_of_clamped_difference8(cos_w, sin_w, node->cos_o, node->sin_o);
+    float8 cos_o = node->cos_o, sin_o = node->sin_o, cos_e = node->cos_e;
+    float8 cos_x = cos_of_clamped_difference8(cos_w, sin_w, cos_o, sin_o);
+    float8 sin_x = sin_of_clamped_difference8(cos_w, sin_w, cos_o, sin_o);
     float8 cos_p = cos_of_clamped_difference8(cos_x, sin_x, cos_b, sin_b);
-    float8 importance = node->phi * cos_p / fmax(dist2, radius2);
+    float8 inv_d2 = 1.0f / fmax(dist2, radius2);
+    float8 importance = node->phi * cos_p * inv_d2;
+    /* The lower bound, where theta + theta_b + theta_o <= theta_e (angles of at most pi/2
+     * compared through their cosines). */
+    float8 cos_wb = cos_w * cos_b - sin_w * sin_b, sin_wb = sin_w * cos_b + cos_w * sin_b;
+    float8 sin_e = sqrt(fmax(0.0f, 1.0f - cos_e * cos_e));
+    int8 inside_e = (cos_w >= 0.0f) & (cos_b >= 0.0f) & (cos_e <= cos_o) & (cos_wb >= cos_e * cos_o + sin_e * sin_o);
+    float8 low = select((float8)(0.0f), node->phi * (cos_wb * cos_o - sin_wb * sin_o) * inv_d2, inside_e);
     if (any(n != 0.0f)) {
         float8 cos_i = fabs((float8)(n.x) * wx + (float8)(n.y) * wy + (float8)(n.z) * wz);
         float8 sin_i = sqrt(fmax(0.0f, 1.0f - cos_i * cos_i));
         importance *= cos_of_clamped_difference8(cos_i, sin_i, cos_b, sin_b);
+        low *= fmax(cos_i * cos_b - sin_i * sin_b, 0.0f);
     }
     int8 reaches = (cos_p >= node->cos_e) & (node->phi > 0.0f);
-    return select((float8)(0.0f), fmax(importance, 0.0f), reaches);
+    importance = select((float8)(0.0f), fmax(importance, 0.0f), reaches);
+    return 0.5f * (importance + fmin(fmax(low, 0.0f), importance));
+}
+
+static inline float light_tree_max8(float8 v)
+{
+    float4 m4 = fmax(v.lo, v.hi);
+    float2 m2 = fmax(m4.lo, m4.hi);
+    return fmax(m2.x, m2.y);
+}
+
+static inline float light_tree_sum8(float8 v)
+{
+    float4 s4 = v.lo + v.hi;
+    float2 s2 = s4.lo + s4.hi;
+    return s2.x + s2.y;
 }
 
 /* The weights of a node's children at (ref, n) in weight[] (the largest 1; a child of
@@ -85,10 +115,10 @@ static inline float light_tree_weights(const KernelData* kd, int node, float3 re
     float8 w = isinf(m) ? select((float8)(0.0f), (float8)(1.0f), isinf(importance)) : importance / m;
     vstore8(w, 0, weight);
     vstore8(nd->child, 0, child);
-    float total = 0.0f;
-    for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k)
-        total += weight[k];
-    return total;
+    /* Summed pairwise in registers, not lane after lane from the array just stored. */
+    float4 s4 = w.lo + w.hi;
+    float2 s2 = s4.lo + s4.hi;
+    return s2.x + s2.y;
 }
 
 /* Picks a light for the shading point ref with normal n by the number u; its probability
