@@ -52,15 +52,15 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
            dz = (float8)(ref.z) - node->centre_z;
     float8 dist2 = dx * dx + dy * dy + dz * dz;
     float8 radius2 = node->radius2;
-    float8 dist = sqrt(dist2);
+    float8 inv_dist = 1.0f / sqrt(dist2);
     int8 apart = dist2 > 0.0f;
-    float8 wx = select((float8)(0.0f), dx / dist, apart), wy = select((float8)(0.0f), dy / dist, apart),
-           wz = select((float8)(1.0f), dz / dist, apart);
+    float8 wx = select((float8)(0.0f), dx * inv_dist, apart), wy = select((float8)(0.0f), dy * inv_dist, apart),
+           wz = select((float8)(1.0f), dz * inv_dist, apart);
     float8 cos_w = node->axis_x * wx + node->axis_y * wy + node->axis_z * wz;
     cos_w = select(cos_w, fabs(cos_w), node->two_sided);
     float8 sin_w = sqrt(fmax(0.0f, 1.0f - cos_w * cos_w));
     int8 outside = dist2 > radius2; /* inside the sphere it subtends every direction */
-    float8 sin2_b = radius2 / dist2;
+    float8 sin2_b = radius2 * inv_dist * inv_dist; /* read where outside: inv_dist finite */
     float8 cos_b = select((float8)(-1.0f), sqrt(fmax(0.0f, 1.0f - sin2_b)), outside);
     float8 sin_b = select((float8)(0.0f), sqrt(fmin(sin2_b, 1.0f)), outside);
     float8 cos_o = node->cos_o, sin_o = node->sin_o, cos_e = node->cos_e;
@@ -69,12 +69,13 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     float8 cos_p = cos_of_clamped_difference8(cos_x, sin_x, cos_b, sin_b);
     float8 inv_d2 = 1.0f / fmax(dist2, radius2);
     float8 importance = node->phi * cos_p * inv_d2;
-    /* The lower bound, where theta + theta_b + theta_o <= theta_e (angles of at most pi/2
-     * compared through their cosines). */
+    /* The lower bound, where theta + theta_b + theta_o <= theta_e. With each of the three
+     * at most pi/2, their sum is at most pi where its sine is not negative, and there its
+     * cosine orders it. */
     float8 cos_wb = cos_w * cos_b - sin_w * sin_b, sin_wb = sin_w * cos_b + cos_w * sin_b;
-    float8 sin_e = sqrt(fmax(0.0f, 1.0f - cos_e * cos_e));
-    int8 inside_e = (cos_w >= 0.0f) & (cos_b >= 0.0f) & (cos_e <= cos_o) & (cos_wb >= cos_e * cos_o + sin_e * sin_o);
-    float8 low = select((float8)(0.0f), node->phi * (cos_wb * cos_o - sin_wb * sin_o) * inv_d2, inside_e);
+    float8 cos_wbo = cos_wb * cos_o - sin_wb * sin_o, sin_wbo = sin_wb * cos_o + cos_wb * sin_o;
+    int8 inside_e = (cos_w >= 0.0f) & (cos_b >= 0.0f) & (cos_o >= 0.0f) & (sin_wbo >= 0.0f) & (cos_wbo >= cos_e);
+    float8 low = select((float8)(0.0f), node->phi * cos_wbo * inv_d2, inside_e);
     if (any(n != 0.0f)) {
         float8 cos_i = fabs((float8)(n.x) * wx + (float8)(n.y) * wy + (float8)(n.z) * wz);
         float8 sin_i = sqrt(fmax(0.0f, 1.0f - cos_i * cos_i));
@@ -84,20 +85,6 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     int8 reaches = (cos_p >= node->cos_e) & (node->phi > 0.0f);
     importance = select((float8)(0.0f), fmax(importance, 0.0f), reaches);
     return 0.5f * (importance + fmin(fmax(low, 0.0f), importance));
-}
-
-static inline float light_tree_max8(float8 v)
-{
-    float4 m4 = fmax(v.lo, v.hi);
-    float2 m2 = fmax(m4.lo, m4.hi);
-    return fmax(m2.x, m2.y);
-}
-
-static inline float light_tree_sum8(float8 v)
-{
-    float4 s4 = v.lo + v.hi;
-    float2 s2 = s4.lo + s4.hi;
-    return s2.x + s2.y;
 }
 
 /* The weights of a node's children at (ref, n) in weight[] (the largest 1; a child of
