@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "compile/light_tree.h"
+#include "compile/near_emitters.h"
 #include "render/wavefront.h"
 #include "scene/alpha_cutouts.h"
 
@@ -54,7 +55,7 @@ KernelFeatures kernel_features(const Scene& scene, const RenderOptions& options)
     set(FEATURE_SINGLE_SCATTERING, options.single_scattering);
     set(FEATURE_LIGHT_TREE, resolve_light_sampler(scene, options) == LightSampler::Tree);
     set(FEATURE_SOLID_ANGLE_TRIANGLES,
-        f.has(FEATURE_AREA_LIGHTS) && resolve_triangle_sampling(options) == TriangleSampling::SolidAngle);
+        f.has(FEATURE_AREA_LIGHTS) && resolve_triangle_sampling(scene, options) == TriangleSampling::SolidAngle);
     return f;
 }
 

@@ -70,7 +70,7 @@ inline const char* light_sampler_name(LightSampler s)
 enum class TriangleSampling : std::uint32_t {
     Area,       // uniformly by area
     SolidAngle, // uniformly within the solid angle it subtends, where that is large enough
-    Auto,       // solid-angle with the megakernel, area with the wavefront (which has only area)
+    Auto,       // solid-angle where a surface is near an emitter (compile/near_emitters.h), else area
 };
 
 // "area", "solid-angle" or "auto".
@@ -154,13 +154,5 @@ struct RenderOptions {
     // that prove a render test fails on a deliberately broken kernel.
     std::vector<KernelPatch> kernel_patches;
 };
-
-// The triangle sampling a render uses: auto decided by the integrator.
-inline TriangleSampling resolve_triangle_sampling(const RenderOptions& options)
-{
-    if (options.triangle_sampling != TriangleSampling::Auto)
-        return options.triangle_sampling;
-    return options.integrator == Integrator::Wavefront ? TriangleSampling::Area : TriangleSampling::SolidAngle;
-}
 
 } // namespace pathcl

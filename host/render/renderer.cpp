@@ -13,6 +13,7 @@
 #include "compile/device_arrays.h"
 #include "compile/kernel_features.h"
 #include "compile/light_tree.h"
+#include "compile/near_emitters.h"
 #include "render/device_bands.h"
 #include "render/film.h"
 #include "render/film_channels.h"
@@ -123,7 +124,7 @@ struct Renderer::Impl {
     Impl(const Scene& scene, const RenderOptions& opt) : options(opt)
     {
         options.light_sampler = resolve_light_sampler(scene, opt); // Auto decided once
-        options.triangle_sampling = resolve_triangle_sampling(opt);
+        options.triangle_sampling = resolve_triangle_sampling(scene, opt);
         check_options(opt);
         default_plan = plan_batches(opt); // throws for an unknown sampler or a bad budget
         render_origin = scene.render_origin;
