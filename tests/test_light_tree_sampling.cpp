@@ -279,8 +279,8 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
     const double radius = 0.4;
     auto vertex = [&](int i, int j) {
         const double theta = std::numbers::pi * i / stacks, phi = 2.0 * std::numbers::pi * j / slices;
-        return centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                            std::sin(theta) * std::sin(phi));
+        return centre +
+               radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
     };
     std::vector<LightBounds> lights;
     std::vector<glm::dvec3> centroid, normal;

@@ -24,9 +24,11 @@ Scene panel_and_wall(float facing, float wall_z)
     b.add_root(b.add_node(b.add_quad_mesh({{-2, -2, wall_z}, {-2, 2, wall_z}, {2, 2, wall_z}, {2, -2, wall_z}}, grey)));
     const int light = b.add_material(glm::vec3(0.0f), glm::vec3(5.0f));
     if (facing > 0.0f)
-        b.add_root(b.add_node(b.add_quad_mesh({{-0.5f, 0, 0}, {0.5f, 0, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}}, light)));
+        b.add_root(
+            b.add_node(b.add_quad_mesh({{-0.5f, 0, 0}, {0.5f, 0, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}}, light)));
     else
-        b.add_root(b.add_node(b.add_quad_mesh({{-0.5f, 0, 0}, {-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}, {0.5f, 0, 0}}, light)));
+        b.add_root(
+            b.add_node(b.add_quad_mesh({{-0.5f, 0, 0}, {-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}, {0.5f, 0, 0}}, light)));
     b.add_camera_node(b.add_perspective_camera(1.0), {0.0, 0.0, -3.0});
     return import_gltf(b.model, "panel-and-wall");
 }

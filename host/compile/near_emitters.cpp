@@ -101,10 +101,10 @@ private:
             const glm::dvec3 extent = centre_hi - centre_lo;
             const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
             const std::size_t mid = t.begin + (t.end - t.begin) / 2;
-            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(t.begin),
-                             order_.begin() + static_cast<std::ptrdiff_t>(mid),
-                             order_.begin() + static_cast<std::ptrdiff_t>(t.end),
-                             [&](std::size_t a, std::size_t b) { return regions_[a].centre[axis] < regions_[b].centre[axis]; });
+            std::nth_element(
+                order_.begin() + static_cast<std::ptrdiff_t>(t.begin),
+                order_.begin() + static_cast<std::ptrdiff_t>(mid), order_.begin() + static_cast<std::ptrdiff_t>(t.end),
+                [&](std::size_t a, std::size_t b) { return regions_[a].centre[axis] < regions_[b].centre[axis]; });
             n.first = static_cast<std::uint32_t>(nodes_.size());
             nodes_[t.node] = n;
             nodes_.emplace_back();

@@ -59,7 +59,7 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     float8 cos_w = node->axis_x * wx + node->axis_y * wy + node->axis_z * wz;
     cos_w = select(cos_w, fabs(cos_w), node->two_sided);
     float8 sin_w = sqrt(fmax(0.0f, 1.0f - cos_w * cos_w));
-    int8 outside = dist2 > radius2; /* inside the sphere it subtends every direction */
+    int8 outside = dist2 > radius2;                /* inside the sphere it subtends every direction */
     float8 sin2_b = radius2 * inv_dist * inv_dist; /* read where outside: inv_dist finite */
     float8 cos_b = select((float8)(-1.0f), sqrt(fmax(0.0f, 1.0f - sin2_b)), outside);
     float8 sin_b = select((float8)(0.0f), sqrt(fmin(sin2_b, 1.0f)), outside);
