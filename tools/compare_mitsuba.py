@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
-"""pathcl against Mitsuba 3 at equal error: render time, RMSE and relMSE against a converged
-reference, and efficiency 1 / (error x time), for each renderer and sampler, in one run on
-one machine. Run it through tools/compare_mitsuba.sh, which makes the venv (Mitsuba 3 and
-Dr.Jit from PyPI) and finds Debian's libLLVM 19 for Dr.Jit's LLVM backend.
+"""pathcl against Mitsuba 3 and Blender's Cycles at equal error: render time, RMSE and
+relMSE against a converged reference, and efficiency 1 / (error x time), for each renderer
+and sampler, in one run on one machine. Run it through tools/compare_mitsuba.sh, which
+makes the venv (Mitsuba 3 and Dr.Jit from PyPI) and finds Debian's libLLVM 19 for Dr.Jit's
+LLVM backend, and, for Cycles, the bpy venv (tools/cycles_venv.sh).
 
     compare_mitsuba.py --pathcl BUILD/pathcl --out DIR SCENE.gltf [SCENE.gltf ...]
         [--size 256] [--spp 256] [--max-bounces 7] [--runs 3] [--reference-spp 16384]
         [--mitsuba-samplers independent,stratified,multijitter,ldsampler,orthogonal]
+        [--cycles BPY_VENV/bin/python]
 
 Per scene:
   * a flat-shaded copy (tools/strip_normals.py): tools/mitsuba_reference.py reads no
@@ -17,10 +19,21 @@ Per scene:
   * pathcl with the sobol and the independent sampler and Mitsuba's llvm_ad_rgb with each
     sampler: one warm-up render (kernel compilation), then --runs renders with seeds
     1..runs, render time only (pathcl's "render" figure; Mitsuba's mi.render to a numpy
-    array), errors against the reference.
+    array), errors against the reference;
+  * with --cycles: Cycles (CPU) with its light tree and without, through
+    tools/cycles_render.py (its docstring says what its seconds include: a warm-up
+    render with persistent data, then the render call per seed) run by the given
+    python as a subprocess: bpy 4.5 needs numpy < 2 and bundles its own TBB, OpenEXR and
+    Embree, so it gets a venv of its own rather than sharing Mitsuba's process.
+    Cycles' max_bounces is --max-bounces - 1 (see there), so --max-bounces must be >= 1;
+    a scene it does not translate (anything but Lambertian surfaces and emitters) gets
+    no Cycles rows.
+--mitsuba-samplers '' leaves Mitsuba out (then Mitsuba need not be installed: any python
+with numpy and OpenEXR runs this, the bpy venv's too).
 Errors: RMSE over all pixels and channels; relMSE = mean((x - r)^2 / (r^2 + 0.01)).
-Efficiency: 1 / (RMSE^2 t) and 1 / (relMSE t), t the median render seconds; the last two
-columns divide each by the best Mitsuba sampler's on that metric (> 1: pathcl better).
+Efficiency: 1 / (RMSE^2 t) and 1 / (relMSE t), t the median render seconds; the last
+columns divide each by the best Mitsuba sampler's and by Cycles' with its light tree, on
+each metric (> 1: that row better).
 """
 import argparse
 import os
@@ -86,6 +99,26 @@ def mitsuba_runs(mi, loaded, size, spp, bounces, sampler, runs):
     return spp, out
 
 
+def cycles_runs(python, flat, out, size, spp, bounces, runs, light_tree):
+    """Cycles' renders (tools/cycles_render.py under the bpy venv's python) with seeds
+    1..runs after its warm-up: Blender's version line and (seconds, RGB) per run."""
+    prefix = os.path.join(out, "cycles-run" + ("" if light_tree else "-no-tree"))
+    cmd = [python, os.path.join(TOOLS, "cycles_render.py"), flat, "--out", prefix, "--size", str(size),
+           "--spp", str(spp), "--max-bounces", str(bounces), "--warm-up",
+           "--seeds", ",".join(str(s) for s in range(1, runs + 1))] + ([] if light_tree else ["--no-light-tree"])
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode == 3:  # a scene it does not translate (not Lambertian): no rows
+        print(f"  cycles: skipped: {proc.stderr.strip()}", flush=True)
+        return None, []
+    if proc.returncode != 0:
+        sys.exit(f"compare_mitsuba.py: cycles_render.py failed:\n{proc.stdout[-3000:]}{proc.stderr[-3000:]}")
+    version = next(line for line in proc.stdout.splitlines() if line.startswith("Blender "))
+    found = re.findall(r"^seed \d+ render ([0-9.]+) s (.+\.exr)$", proc.stdout, re.M)
+    if len(found) != runs:
+        sys.exit(f"compare_mitsuba.py: cycles_render.py gave {len(found)} renders, not {runs}")
+    return version, [(float(t), read_rgb(path)) for t, path in found]
+
+
 def summarize(rows, label, secs, errs, spp, pixels):
     secs = sorted(secs)
     t = secs[len(secs) // 2]
@@ -108,15 +141,23 @@ def main():
     ap.add_argument("--max-bounces", type=int, default=7)
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--reference-spp", type=int, default=16384)
-    ap.add_argument("--mitsuba-samplers", default="independent,stratified,multijitter,ldsampler,orthogonal")
+    ap.add_argument("--mitsuba-samplers", default="independent,stratified,multijitter,ldsampler,orthogonal",
+                    help="comma-separated; '' for no Mitsuba rows")
+    ap.add_argument("--cycles", metavar="PYTHON", help="the bpy venv's python: adds Cycles rows")
     args = ap.parse_args()
+    samplers = [s for s in args.mitsuba_samplers.split(",") if s]
+    if args.cycles and args.max_bounces < 1:
+        ap.error("Cycles needs --max-bounces >= 1 (its max_bounces 0 is one scattering event)")
     os.makedirs(args.out, exist_ok=True)
     cache = os.path.join(args.out, "kernel-cache")
-    import mitsuba as mi
-    import drjit as dr
-    mr.pick_variant(mi, "llvm_ad_rgb")
-    print(f"Mitsuba {mi.__version__}, Dr.Jit {dr.__version__}; pathcl {args.pathcl}; {args.size}x{args.size}, "
-          f"{args.spp} spp, {args.max_bounces} bounces, {args.runs} runs; reference {args.reference_spp} spp sobol")
+    mi = None
+    if samplers:
+        import mitsuba as mi
+        import drjit as dr
+        mr.pick_variant(mi, "llvm_ad_rgb")
+        print(f"Mitsuba {mi.__version__}, Dr.Jit {dr.__version__}; ", end="")
+    print(f"pathcl {args.pathcl}; {args.size}x{args.size}, {args.spp} spp, {args.max_bounces} bounces, "
+          f"{args.runs} runs; reference {args.reference_spp} spp sobol")
     pixels = args.size * args.size
     tables = []
     for scene_path in args.scenes:
@@ -139,31 +180,43 @@ def main():
                                           sampler, seed, cache))
                 errs.append(errors(read_rgb(run_exr), ref))
             summarize(rows, f"pathcl {sampler}", secs, errs, args.spp, pixels)
-        prims, camera, lights = mr.load_scene(flat)
-        for sampler in args.mitsuba_samplers.split(","):
-            spp, runs = mitsuba_runs(mi, (prims, camera, lights), args.size, args.spp, args.max_bounces, sampler,
-                                     args.runs)
+        loaded = mr.load_scene(flat) if samplers else None
+        for sampler in samplers:
+            spp, runs = mitsuba_runs(mi, loaded, args.size, args.spp, args.max_bounces, sampler, args.runs)
             secs = [t for t, _ in runs]
             errs = [errors(img, ref) for _, img in runs]
             summarize(rows, f"mitsuba llvm {sampler}" + (f" ({spp} spp)" if spp != args.spp else ""), secs, errs,
                       spp, pixels)
+        for light_tree in (True, False) if args.cycles else ():
+            version, runs = cycles_runs(args.cycles, flat, args.out, args.size, args.spp, args.max_bounces,
+                                        args.runs, light_tree)
+            if not runs:
+                break
+            if light_tree:
+                print(f"  ({version})", flush=True)
+            summarize(rows, "cycles cpu " + ("light tree" if light_tree else "no light tree"),
+                      [t for t, _ in runs], [errors(img, ref) for _, img in runs], args.spp, pixels)
         tables.append((name, rows))
 
     print()
     for name, rows in tables:
+        # Ratio columns: against the best Mitsuba sampler, and against Cycles' light tree.
+        bases = []
         mits = [r for r in rows if r["label"].startswith("mitsuba")]
-        best_rmse = max(r["eff_rmse"] for r in mits)
-        best_rel = max(r["eff_rel"] for r in mits)
+        if mits:
+            bases.append(("vs best Mitsuba", max(r["eff_rmse"] for r in mits), max(r["eff_rel"] for r in mits)))
+        tree = [r for r in rows if r["label"] == "cycles cpu light tree"]
+        if tree:
+            bases.append(("vs Cycles light tree", tree[0]["eff_rmse"], tree[0]["eff_rel"]))
         print(f"{name} ({args.size}x{args.size}, {args.spp} spp, {args.max_bounces} bounces; median of {args.runs})")
-        print("| renderer, sampler | render s | Msamples/s | RMSE | relMSE | eff. (RMSE²) | eff. (relMSE) | "
-              "vs best Mitsuba (RMSE² / relMSE) |")
-        print("|---|---|---|---|---|---|---|---|")
+        print("| renderer, sampler | render s | Msamples/s | RMSE | relMSE | eff. (RMSE²) | eff. (relMSE) |" +
+              "".join(f" {b[0]} (RMSE² / relMSE) |" for b in bases))
+        print("|---|---|---|---|---|---|---|" + "---|" * len(bases))
         for r in rows:
             print(f"| {r['label']} | {r['t']:.3f} | {r['msps']:.2f} | {r['rmse']:.5f} | {r['rel']:.6f} | "
-                  f"{r['eff_rmse']:.0f} | {r['eff_rel']:.1f} | {r['eff_rmse'] / best_rmse:.2f} / "
-                  f"{r['eff_rel'] / best_rel:.2f} |")
+                  f"{r['eff_rmse']:.0f} | {r['eff_rel']:.1f} |" +
+                  "".join(f" {r['eff_rmse'] / b[1]:.2f} / {r['eff_rel'] / b[2]:.2f} |" for b in bases))
         print()
-
 
 if __name__ == "__main__":
     main()

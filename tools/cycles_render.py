@@ -11,9 +11,10 @@ float32, linear) and prints `seed SEED render SECONDS s PATH`.
 The scene is tools/mitsuba_reference.py's load_scene parse, built from numpy arrays, so
 that Cycles sees the triangles, materials, camera and lights Mitsuba sees (Blender's
 glTF importer is not used: its Principled BSDF is not exactly Lambertian). Only what
-tools/make_many_lights.py and the Cornell boxes use is supported: Lambertian materials
-with a constant base colour and emission, and no punctual lights; anything else is an
-error.
+tools/make_many_lights.py and the Lambertian Cornell box use is supported: Lambertian
+materials with a constant base colour and emission, and no punctual lights; anything
+else ends it with exit status 3 (tools/compare_mitsuba.py then leaves Cycles out of
+that scene's table).
 
 Conventions matched to pathcl:
   * Lambertian: Diffuse BSDF, roughness 0. glTF doubleSided false makes the back side
@@ -213,8 +214,9 @@ def main():
     args = ap.parse_args()
     try:
         scene = setup(args.scene, args.size, args.spp, args.max_bounces, not args.no_light_tree)
-    except ValueError as e:
-        sys.exit(f"cycles_render.py: {e}")
+    except ValueError as e:  # a scene this does not translate: exit status 3
+        print(f"cycles_render.py: {e}", file=sys.stderr)
+        sys.exit(3)
     print(f"Blender {bpy.app.version_string}, Cycles CPU, light tree "
           f"{'on' if scene.cycles.use_light_tree else 'off'}", flush=True)
     if args.warm_up:
