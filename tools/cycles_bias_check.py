@@ -6,6 +6,14 @@ noise of the mean) against K Cycles renders with different seeds (tools/cycles_r
 
     cycles_bias_check.py PATHCL.exr CYCLES-1.exr CYCLES-2.exr ... [--block 16]
 
+For example, on a flat-shaded copy (tools/strip_normals.py) of a scene:
+
+    pathcl render flat.gltf -o p.exr --width 128 --height 128 --spp 4096 --max-bounces 5 \
+        --sampler independent --seed 7
+    $CYCLES_PY tools/cycles_render.py flat.gltf --out c --size 128 --spp 512 \
+        --max-bounces 5 --seeds 1,2,3,4,5,6,7,8
+    $CYCLES_PY tools/cycles_bias_check.py p.exr c-1.exr c-2.exr ... c-8.exr
+
 Prints, per channel, the image mean ratio Cycles / pathcl with its standard error, and
 over blocks of --block x --block pixels the largest |z| of the block mean difference
 (z = difference / sqrt(both noise variances)) with the block's ratio. A systematic
@@ -71,11 +79,17 @@ def main():
     rb = np.stack([blocks(r, n) for r in runs])
     cb = rb.mean(0)
     cv_b = rb.var(0, ddof=1) / k
-    z = (cb - pb) / np.sqrt(pv_b + cv_b)
+    # Blocks without noise in either (all pixels on a directly seen emitter) have no z:
+    # their ratio is reported instead.
+    noisy = pv_b + cv_b > 0
+    z = np.where(noisy, (cb - pb) / np.sqrt(np.where(noisy, pv_b + cv_b, 1.0)), 0.0)
     j = np.unravel_index(np.argmax(np.abs(z)), z.shape)
     print(f"  {n}x{n} blocks: {z[..., 0].size} x 3 channels, largest |z| {abs(z[j]):.2f} at block "
           f"row {j[0]} col {j[1]} {'RGB'[j[2]]} (ratio {cb[j] / pb[j]:.4f}); "
-          f"|z| > 3: {int((np.abs(z) > 3).sum())}, RMS z {np.sqrt(np.mean(z * z)):.2f}")
+          f"|z| > 3: {int((np.abs(z) > 3).sum())}, RMS z {np.sqrt(np.mean(z[noisy] ** 2)):.2f}")
+    if not noisy.all():
+        flat = np.abs(cb[~noisy] / pb[~noisy] - 1.0)
+        print(f"  {int((~noisy).sum())} noiseless block channels: largest |ratio - 1| {flat.max():.2e}")
     ratio = cb / pb
     print(f"  block ratios: min {ratio.min():.4f} max {ratio.max():.4f} "
           f"(mean {ratio.mean():.4f})")
