@@ -131,7 +131,7 @@ double segment_distance2(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
 
 // Whether triangle v has a point in region r: the part of it in front of the plane
 // (x - centre) . normal = margin, clipped, within r.radius of the centre. The margin
-// (16 float ulps of the coordinates) keeps out neighbours that the rounding of float
+// (about 8 float ulps of the coordinates) keeps out neighbours that the rounding of float
 // vertices puts in front of a curved mesh's triangle.
 bool reaches_region(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
 {
