@@ -50,7 +50,7 @@ Conventions matched to pathcl:
 Timing: persistent data is on, so the warm-up render (--warm-up, seed 0, not written)
 builds the BVH, syncs the scene and loads the kernels; each timed figure is then the
 wall time of bpy.ops.render.render for one seed: Blender's scene update (the seed
-change only), Cycles' session reset and its sample loop, and writing the pixels into
+change only), Cycles' reset of its renderer and its sample loop, and writing the pixels into
 Blender's render result. Writing the EXR comes after the timed call.
 """
 import argparse
