@@ -270,8 +270,8 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
 // pick alone multiplies the light estimate's mean square (1: the ideal; the power table,
 // with half its picks facing away, gives 3.7 to 6.7 here). Measured: 1.64 to 1.94, mean
 // 1.79; children weighed by their upper bounds alone give a mean of 1.93; coplanar
-// neighbours' cones united into the whole sphere, 2.6 to 2.9 (a third of the picks end
-// where no triangle faces the point).
+// neighbours' cones united into the whole sphere, 2.6 to 2.9 (many picks end where no
+// triangle faces the point).
 TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
 {
     const int stacks = 80, slices = 80;
