@@ -10,10 +10,13 @@
 #           refuses them is as right as rendering them);
 # and for both: no signal, no timeout, within the memory limit.
 #
-#   tests/corpus_test.sh PATHCL_BINARY CORPUS_DIR [--asan] [CASE_PATTERN...]
+#   tests/corpus_test.sh PATHCL_BINARY CORPUS_DIR [--asan] [--jobs N] [CASE_PATTERN...]
 #
 # CORPUS_DIR is tests/corpus. Patterns (shell globs) pick cases by name. --asan (or
 # CORPUS_ASAN=1): the binary is built with AddressSanitizer, so no address-space limit.
+# --jobs N (or CORPUS_JOBS; default: the cores, at most 4): the cases are dealt to N
+# shards run at once, each in its own scratch directory (every case makes what it needs,
+# so none depends on another), and their reports are printed shard after shard.
 # Environment: CORPUS_TIMEOUT (seconds per error case, 60), CORPUS_RENDER_TIMEOUT (per
 # renders case, 300: it may build a kernel variant the cache lacks), CORPUS_MEMORY_LIMIT
 # (address space, 4G), CORPUS_KEEP=1 keeps the scratch directory. Each case runs in a
@@ -30,19 +33,61 @@ BIN=$(realpath "$1")
 CORPUS=$(realpath "$2")
 shift 2
 ASAN=${CORPUS_ASAN:-0}
+JOBS=${CORPUS_JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+[ "$JOBS" -gt 4 ] 2>/dev/null && JOBS=4
+SHARD= # K/N: run only the cases whose index (among those the patterns pick) is K modulo N
 PATTERNS=()
-for a in "$@"; do
-    case $a in
+while [ $# -gt 0 ]; do
+    case $1 in
     --asan) ASAN=1 ;;
-    *) PATTERNS+=("$a") ;;
+    --jobs) JOBS=${2:-} && shift ;;
+    --shard) SHARD=${2:-} && shift ;;
+    *) PATTERNS+=("$1") ;;
     esac
+    shift
 done
+case $JOBS in '' | *[!0-9]* | 0) echo "corpus: --jobs wants a positive number, not '$JOBS'" >&2 && exit 2 ;; esac
 TIMEOUT=${CORPUS_TIMEOUT:-60}
 RENDER_TIMEOUT=${CORPUS_RENDER_TIMEOUT:-300}
 MEMORY_LIMIT=${CORPUS_MEMORY_LIMIT:-4G}
 MANIFEST=$CORPUS/expected.tsv
 [ -x "$BIN" ] || { echo "corpus: $BIN is not an executable" >&2; exit 2; }
 [ -f "$MANIFEST" ] || { echo "corpus: no $MANIFEST" >&2; exit 2; }
+
+# The shards: this script again, once per shard, all at once; then their reports in order.
+if [ -z "$SHARD" ] && [ "$JOBS" -gt 1 ]; then
+    REPORTS=$(mktemp -d "${TMPDIR:-/tmp}/pathcl-corpus-reports.XXXXXX")
+    trap 'rm -rf "$REPORTS"' EXIT
+    flags=()
+    [ "$ASAN" = 1 ] && flags+=(--asan)
+    pids=()
+    for ((k = 0; k < JOBS; ++k)); do
+        bash "$0" "$BIN" "$CORPUS" "${flags[@]}" --shard "$k/$JOBS" "${PATTERNS[@]}" >"$REPORTS/$k" 2>&1 &
+        pids+=($!)
+    done
+    status=0
+    for pid in "${pids[@]}"; do
+        wait "$pid" || status=1
+    done
+    total=0 passed=0 failed=0
+    for ((k = 0; k < JOBS; ++k)); do
+        grep -v '^corpus: [0-9]* cases, ' "$REPORTS/$k"
+        read -r t p f < <(sed -n 's/^corpus: \([0-9]*\) cases, \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2 \3/p' "$REPORTS/$k")
+        [ -n "${t:-}" ] || { echo "corpus: shard $k/$JOBS ended without its summary" && status=1; }
+        total=$((total + ${t:-0})) passed=$((passed + ${p:-0})) failed=$((failed + ${f:-0}))
+    done
+    if [ $total = 0 ]; then
+        echo "corpus: no case matched" >&2
+        exit 2
+    fi
+    echo "corpus: $total cases, $passed passed, $failed failed ($JOBS shards)"
+    [ $failed = 0 ] && [ $status = 0 ]
+    exit $?
+fi
+SHARD_INDEX=0 SHARD_COUNT=1
+if [ -n "$SHARD" ]; then
+    SHARD_INDEX=${SHARD%/*} SHARD_COUNT=${SHARD#*/}
+fi
 
 ROOT=$(mktemp -d "${TMPDIR:-/tmp}/pathcl-corpus.XXXXXX")
 # shellcheck disable=SC2317 # called by the trap
@@ -123,6 +168,7 @@ total=0
 passed=0
 failed=()
 n=0
+picked=0
 while IFS=$'\t' read -r name file args expect setup names what; do
     case $name in '' | '#'*) continue ;; esac
     if [ ${#PATTERNS[@]} -gt 0 ]; then
@@ -133,6 +179,8 @@ while IFS=$'\t' read -r name file args expect setup names what; do
         done
         [ $match = 1 ] || continue
     fi
+    picked=$((picked + 1))
+    [ $(((picked - 1) % SHARD_COUNT)) = "$SHARD_INDEX" ] || continue
     n=$((n + 1))
     total=$((total + 1))
     CWD=$ROOT/case-$n
@@ -310,7 +358,7 @@ PY
     rm -rf "$CWD" "$CAP"
 done <"$MANIFEST"
 
-if [ $total = 0 ]; then
+if [ $total = 0 ] && [ -z "$SHARD" ]; then
     echo "corpus: no case matched" >&2
     exit 2
 fi
