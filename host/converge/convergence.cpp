@@ -25,6 +25,7 @@ double mean_samples(const Image& img, std::uint32_t spp)
 }
 
 // After the setting's Renderer is made: its build stored the binary if the cache lacked it.
+// `o` as the Renderer resolved them, so that the scene's auto choices are not made again.
 SettingBuild measure_build(const Scene& scene, const RenderOptions& o)
 {
     SettingBuild b;
@@ -76,7 +77,7 @@ bool run_convergence(const Scene& scene, const ConvergenceStudy& study, const Im
                 o.batch_spp = kPilotBatchSpp;
         }
         Renderer renderer(scene, o);
-        SettingBuild build = measure_build(scene, o);
+        SettingBuild build = measure_build(scene, renderer.options());
         RenderRun warmup;
         warmup.seed = study.base.seed;
         warmup.spp = adaptive ? 2 * o.batch_spp : 1; // adaptive: the two batches an estimate needs

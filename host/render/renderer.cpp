@@ -725,6 +725,11 @@ const RenderStats& Renderer::setup_stats() const
     return impl_->setup;
 }
 
+const RenderOptions& Renderer::options() const
+{
+    return impl_->options;
+}
+
 RenderResult Renderer::render(const RenderRun& run)
 {
     return impl_->render(run);

@@ -113,6 +113,8 @@ public:
     const BatchPlan& plan() const;
     // Figures of the setup (scene size, BVH and kernel build times).
     const RenderStats& setup_stats() const;
+    // The options as rendered: auto light and triangle sampling resolved for the scene.
+    const RenderOptions& options() const;
 
     // A render with this seed: runs batches until the plan's samples are taken or a budget
     // or `progress` ends it, and forms the image with its metadata.
