@@ -30,6 +30,21 @@ struct TreeScene {
     FrameParams frame{};
 };
 
+// What the kernels read of a tree over `light_count` lights (the lights themselves stay
+// empty: the tests read picks and pmfs, not emission).
+TreeScene tree_scene(const LightTree& tree, std::size_t light_count)
+{
+    TreeScene s;
+    s.arrays.lights.resize(light_count);
+    s.arrays.light_tree = tree.nodes;
+    s.arrays.light_tree_trail = tree.trails;
+    s.arrays.light_tree_infinite = tree.infinite;
+    s.frame.light_count = static_cast<pcl_uint>(light_count);
+    s.frame.infinite_pick = static_cast<float>(tree.infinite_pick);
+    s.frame.infinite_count = static_cast<pcl_uint>(tree.infinite.size());
+    return s;
+}
+
 TreeScene make_scene()
 {
     std::mt19937 rng(17);
@@ -61,16 +76,7 @@ TreeScene make_scene()
     sun.infinite = true;
     sun.phi = 20.0;
     lights[7] = sun;
-    LightTree tree = build_light_tree(lights);
-    TreeScene s;
-    s.arrays.lights.resize(kLights);
-    s.arrays.light_tree = tree.nodes;
-    s.arrays.light_tree_trail = tree.trails;
-    s.arrays.light_tree_infinite = tree.infinite;
-    s.frame.light_count = kLights;
-    s.frame.infinite_pick = static_cast<float>(tree.infinite_pick);
-    s.frame.infinite_count = static_cast<pcl_uint>(tree.infinite.size());
-    return s;
+    return tree_scene(build_light_tree(lights), kLights);
 }
 
 struct Shading {
@@ -217,11 +223,7 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     emitter.hi = {0.05, 0.05, 0.0};
     emitter.phi = 1.0;
     emitter.cone = {{0.0, 0.0, 1.0}, 1.0, 0.0};
-    LightTree tree = build_light_tree({emitter});
-    SceneArrays arrays;
-    arrays.lights.resize(1);
-    arrays.light_tree = tree.nodes;
-    arrays.light_tree_trail = tree.trails;
+    const TreeScene scene = tree_scene(build_light_tree({emitter}), 1);
     std::mt19937 rng(13);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<pcl_float4> points, normals;
@@ -241,7 +243,7 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     ClDevice& dev = test::test_device();
     cl::Program program =
         test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
-    DeviceArrays a = upload_arrays(dev, arrays, 1);
+    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
     cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
     cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * sizeof(float));
     cl::Kernel k(program, "test_light_tree_importance");
@@ -307,17 +309,11 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
                 add(b, d, c);
         }
     ASSERT_GT(glm::dot(normal[0], centroid[0] - centre), 0.0) << "the triangles face outward";
-    LightTree tree = build_light_tree(lights);
-    SceneArrays arrays;
-    arrays.lights.resize(lights.size());
-    arrays.light_tree = tree.nodes;
-    arrays.light_tree_trail = tree.trails;
-    FrameParams frame{};
-    frame.light_count = static_cast<pcl_uint>(lights.size());
+    const TreeScene scene = tree_scene(build_light_tree(lights), lights.size());
     ClDevice& dev = test::test_device();
     cl::Program program =
         test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
-    DeviceArrays a = upload_arrays(dev, arrays, 1);
+    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
     const std::vector<Shading> points = {{{2.6f, 0.0f, 2.3f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{2.0f, 0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{3.0f, 0.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
@@ -327,7 +323,7 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
         const Shading& sp = points[k];
         cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
         cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-        bind_kernel(pmf_kernel, a, frame, sp.ref, sp.n, pmf_out);
+        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
         dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
         const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
         const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
