@@ -270,10 +270,11 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
 // beside it, against the ideal pmf q: each triangle's area times the cosines at both ends
 // over the squared distance. The second moment sum q^2 / p is the factor by which the
 // pick alone multiplies the light estimate's mean square (1: the ideal; the power table,
-// with half its picks facing away, gives 3.7 to 6.7 here). Measured: 1.64 to 1.94, mean
-// 1.79; children weighed by their upper bounds alone give a mean of 1.93; coplanar
-// neighbours' cones united into the whole sphere, 2.6 to 2.9 (many picks end where no
-// triangle faces the point).
+// with half its picks facing away, gives 3.7 to 6.7 here). Measured: 1.42 to 1.72, mean
+// 1.55. Children weighed by their upper bounds alone give a mean of 1.68; nodes' cones
+// made as unions of their children's, not tightened about their lights, 1.64 to 1.94
+// (mean 1.79); and before that, with coplanar neighbours' cones united into the whole
+// sphere, 2.6 to 2.9 (many picks end where no triangle faces the point).
 TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
 {
     const int stacks = 80, slices = 80;
@@ -349,11 +350,11 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
             power_moment += qi * qi / (area[i] / area_sum);
         }
         EXPECT_EQ(unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
-        EXPECT_LE(moment, 2.2) << "point " << k;
+        EXPECT_LE(moment, 1.85) << "point " << k;
         mean_moment += moment / static_cast<double>(points.size());
         std::cout << "point " << k << ": second moment " << moment << " (power table " << power_moment << ")\n";
     }
-    EXPECT_LE(mean_moment, 1.85);
+    EXPECT_LE(mean_moment, 1.62);
 }
 
 } // namespace

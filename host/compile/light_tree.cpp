@@ -161,11 +161,13 @@ private:
     {}
 };
 
-// A node's bounds while building: box, power, cone (and whether any light is two-sided).
+// A node's bounds while building: box, power, cone (and whether any light is two-sided),
+// and the sum of its lights' axes weighted by power, the axis tighten_cone tries.
 struct Bounds {
     Box box;
     double phi = 0.0;
     Cone cone;
+    glm::dvec3 axis_sum{0.0};
     bool any = false;
     bool two_sided = false;
     void extend(const LightRecord& r)
@@ -173,6 +175,7 @@ struct Bounds {
         box.extend(r.lo, r.hi);
         phi += r.phi;
         cone = any ? unite(cone, r.cone()) : r.cone();
+        axis_sum += r.phi * r.axis;
         two_sided = two_sided || r.two_sided;
         any = true;
     }
@@ -183,6 +186,7 @@ struct Bounds {
         box.extend(b.box.lo, b.box.hi);
         phi += b.phi;
         cone = any ? unite(cone, b.cone) : b.cone;
+        axis_sum += b.axis_sum;
         two_sided = two_sided || b.two_sided;
         any = true;
     }
@@ -219,6 +223,7 @@ constexpr std::size_t kShareLights = 1024;
 // is built (no default values, as in LightRecord).
 struct BinaryNode {
     std::array<std::uint32_t, 2> child;
+    std::uint32_t first;  // its lights' first record
     std::uint32_t lights; // below it
     bool pending;         // its bounds wait for a subtree built on another thread
     BinaryNode() {}       // NOLINT(modernize-use-equals-default)
@@ -340,10 +345,11 @@ private:
         const bool complete = first_set && second_set;
         BinaryNode& n = nodes_[index];
         n.child = {reference(first, begin, s.mid), reference(second, s.mid, end)};
+        n.first = static_cast<std::uint32_t>(begin);
         n.lights = static_cast<std::uint32_t>(end - begin);
         n.pending = !complete;
         if (complete)
-            tree_.bounds[index].set(child_bounds(n));
+            tree_.bounds[index].set(node_bounds(n));
         return complete;
     }
 
@@ -353,11 +359,51 @@ private:
         return static_cast<std::uint32_t>(end - begin == 1 ? kLeaf | begin : index);
     }
 
-    Bounds child_bounds(const BinaryNode& n) const
+    // The union of the children's bounds, its cone tightened around its lights.
+    Bounds node_bounds(const BinaryNode& n) const
     {
-        Bounds b = tree_.of(n.child[0]);
-        b.extend(tree_.of(n.child[1]));
+        const Bounds first = tree_.of(n.child[0]), second = tree_.of(n.child[1]);
+        Bounds b = first;
+        b.extend(second);
+        // A child whose lights need the whole sphere of directions (a point light) leaves
+        // no tighter cone to find.
+        if (first.cone.cos_o > -1.0 && second.cone.cos_o > -1.0)
+            b.cone = tighten_cone(b, n.first, n.first + n.lights);
         return b;
+    }
+
+    // The tighter of the cones about b's axis and about its lights' power-weighted mean
+    // axis that hold every light of records_[begin, end). The cone of a union of two cones
+    // holds each whole, so unions of unions up the tree grow wider than the lights need:
+    // over a UV sphere turned off the axes (tests/test_light_tree.cpp) a lane of 602
+    // triangles took 109 degrees where 87 hold them. One pass over the lights for both
+    // axes; a node's lights are contiguous, so the passes add O(n log n) to the build.
+    Cone tighten_cone(const Bounds& b, std::size_t begin, std::size_t end) const
+    {
+        const double sum_length = glm::length(b.axis_sum);
+        const glm::dvec3 united = b.cone.axis, mean = sum_length > 1e-9 ? b.axis_sum / sum_length : united;
+        double cos_united = 1.0, cos_mean = 1.0; // cos of the widest angle from each axis
+        for (std::size_t i = begin; i < end; ++i) {
+            const LightRecord& r = records_[i];
+            cos_united = std::min(cos_united, cos_of_widest(united, r));
+            cos_mean = std::min(cos_mean, cos_of_widest(mean, r));
+        }
+        const bool mean_tighter = cos_mean > cos_united;
+        const double cos_k = (mean_tighter ? cos_mean : cos_united) - 1e-12; // rounding, on the safe side
+        if (!(cos_k > b.cone.cos_o))
+            return b.cone;
+        return Cone(mean_tighter ? mean : united, std::acos(cos_k), b.cone);
+    }
+
+    // cos(theta_d + theta_l): the direction of light r's cone farthest from `axis`; -1
+    // where that passes pi.
+    static double cos_of_widest(const glm::dvec3& axis, const LightRecord& r)
+    {
+        const double cos_d = std::clamp(glm::dot(axis, r.axis), -1.0, 1.0);
+        if (r.cos_o <= -1.0 || cos_d < -r.cos_o)
+            return -1.0;
+        const double sin_d = std::sqrt(1.0 - cos_d * cos_d);
+        return cos_d * r.cos_o - sin_d * r.sin_o;
     }
 
     // Sets the bounds the threads left pending, below the subtrees they built.
@@ -369,7 +415,7 @@ private:
         for (std::uint32_t c : n.child)
             if (!(c & kLeaf))
                 finish(c);
-        tree_.bounds[index].set(child_bounds(n));
+        tree_.bounds[index].set(node_bounds(n));
         n.pending = false;
     }
 
