@@ -381,7 +381,7 @@ private:
     Cone tighten_cone(const Bounds& b, std::size_t begin, std::size_t end) const
     {
         const double sum_length = glm::length(b.axis_sum);
-        const glm::dvec3 united = b.cone.axis, mean = sum_length > 1e-9 ? b.axis_sum / sum_length : united;
+        const glm::dvec3 united = b.cone.axis, mean = sum_length > 1e-9 * b.phi ? b.axis_sum / sum_length : united;
         double cos_united = 1.0, cos_mean = 1.0; // cos of the widest angle from each axis
         for (std::size_t i = begin; i < end; ++i) {
             const LightRecord& r = records_[i];
@@ -554,16 +554,8 @@ private:
         for (std::size_t i = begin; i < end; ++i) {
             const LightRecord& r = records_[i];
             const int k = bucket_of(r, axis, lo, scale);
-            if (cos_o[k] <= -1.0)
-                continue;
-            // cos(theta_d + theta_l): the farthest direction of the light's cone from the mean.
-            const double cos_d = std::clamp(glm::dot(mean[k], r.axis), -1.0, 1.0);
-            if (r.cos_o <= -1.0 || cos_d < -r.cos_o) { // theta_d + theta_l > pi
-                cos_o[k] = -1.0;
-                continue;
-            }
-            const double sin_d = std::sqrt(1.0 - cos_d * cos_d);
-            cos_o[k] = std::min(cos_o[k], cos_d * r.cos_o - sin_d * r.sin_o);
+            if (cos_o[k] > -1.0)
+                cos_o[k] = std::min(cos_o[k], cos_of_widest(mean[k], r));
         }
         for (int k = 0; k < kBuckets; ++k) {
             if (!buckets[k].any)
