@@ -282,9 +282,9 @@ void lights_below(const LightTree& tree, pcl_int child, std::vector<std::size_t>
 }
 
 // A lane's cone is as narrow about its axis as its lights allow. The cone that holds two
-// cones holds each whole, so a node's cone made as the union of its children's grows
-// wider up the tree than its lights need: over this sphere, 311 lanes were wider than
-// that, a root lane over 602 triangles 109 degrees wide where 87 held them.
+// cones holds each whole, so a node's cone made only as the union of its children's grows
+// wider up the tree than its lights need: made so, 311 of this sphere's lanes came out
+// wider, a root lane over 602 triangles 109 degrees wide where 87 hold them.
 TEST(LightTree, EachLanesConeIsAsNarrowAsItsLightsAllowAboutItsAxis)
 {
     std::vector<glm::dvec3> normals;
