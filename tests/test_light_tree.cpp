@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "compile/light_tree.h"
 #include "scene/gltf_loader.h"
+#include "support/glowing_sphere.h"
 #include "support/gltf_builder.h"
 
 namespace pathcl {
@@ -208,41 +209,6 @@ void check_every_light_within_its_lanes(const std::vector<LightBounds>& lights, 
     }
 }
 
-// The triangles of a UV sphere (each quad of stacks x slices split in two) as one-sided
-// emitters, turned so that its poles, where the triangles crowd, lie off the axes; each
-// triangle's normal in `normals`.
-std::vector<LightBounds> turned_glowing_sphere(int stacks, int slices, std::vector<glm::dvec3>& normals)
-{
-    auto vertex = [&](int i, int j) {
-        const double theta = kPi * i / stacks, phi = 2.0 * kPi * j / slices;
-        glm::dvec3 v(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-        const double a = 0.6, b = 0.45; // about z, then about x
-        v = {v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a), v.z};
-        return glm::dvec3(1.0, 2.0, 3.0) +
-               glm::dvec3(v.x, v.y * std::cos(b) - v.z * std::sin(b), v.y * std::sin(b) + v.z * std::cos(b));
-    };
-    std::vector<LightBounds> lights;
-    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        const glm::dvec3 cr = glm::cross(b - a, c - a);
-        LightBounds t;
-        t.lo = glm::min(a, glm::min(b, c));
-        t.hi = glm::max(a, glm::max(b, c));
-        t.phi = 0.5 * glm::length(cr);
-        t.cone = {glm::normalize(cr), 1.0, 0.0};
-        lights.push_back(t);
-        normals.push_back(t.cone.axis);
-    };
-    for (int i = 0; i < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            const glm::dvec3 a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
-            if (i > 0)
-                add(a, d, b);
-            if (i < stacks - 1)
-                add(b, d, c);
-        }
-    return lights;
-}
-
 TEST(LightTree, EveryLightHasOneLeafItsTrailLeadsToWithinEveryLaneOnTheWay)
 {
     std::mt19937 rng(7);
@@ -261,8 +227,7 @@ TEST(LightTree, EveryLightHasOneLeafItsTrailLeadsToWithinEveryLaneOnTheWay)
     }
     // No point light widens the cones to the whole sphere here: they are tightened around
     // the lights at every node. Spots among the triangles bring cones of their own width.
-    std::vector<glm::dvec3> normals;
-    std::vector<LightBounds> sphere = turned_glowing_sphere(24, 24, normals);
+    std::vector<LightBounds> sphere = test::glowing_sphere(24, 24, {1.0, 2.0, 3.0}, 1.0, 0.6, 0.45).lights;
     for (std::size_t i = 0; i < sphere.size(); i += 7)
         sphere[i].cone = {sphere[i].cone.axis, std::cos(0.3), std::cos(0.4)};
     check_every_light_within_its_lanes(sphere, build_light_tree(sphere), rng);
@@ -287,8 +252,9 @@ void lights_below(const LightTree& tree, pcl_int child, std::vector<std::size_t>
 // wider, a root lane over 602 triangles 109 degrees wide where 87 hold them.
 TEST(LightTree, EachLanesConeIsAsNarrowAsItsLightsAllowAboutItsAxis)
 {
-    std::vector<glm::dvec3> normals;
-    const std::vector<LightBounds> lights = turned_glowing_sphere(40, 40, normals);
+    // Turned so that its poles, where the triangles crowd, lie off the axes.
+    const test::GlowingSphere sphere = test::glowing_sphere(40, 40, {1.0, 2.0, 3.0}, 1.0, 0.6, 0.45);
+    const std::vector<LightBounds>& lights = sphere.lights;
     const LightTree tree = build_light_tree(lights);
     int lanes = 0, broad = 0;
     for (std::size_t i = 0; i < tree.nodes.size(); ++i)
@@ -300,7 +266,7 @@ TEST(LightTree, EachLanesConeIsAsNarrowAsItsLightsAllowAboutItsAxis)
             lights_below(tree, lane.child, below);
             double cos_needed = 1.0;
             for (std::size_t l : below)
-                cos_needed = std::min(cos_needed, glm::dot(lane.cone.axis, normals[l]));
+                cos_needed = std::min(cos_needed, glm::dot(lane.cone.axis, sphere.normal[l]));
             // float rounding of the axis and the cosine, outward
             EXPECT_GE(lane.cone.cos_o, cos_needed - 1e-6)
                 << "node " << i << " lane " << k << ": " << below.size() << " lights";

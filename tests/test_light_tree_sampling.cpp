@@ -18,6 +18,7 @@
 #include "compile/light_tree.h"
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
+#include "support/glowing_sphere.h"
 
 namespace pathcl {
 namespace {
@@ -280,35 +281,10 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
     const int stacks = 80, slices = 80;
     const glm::dvec3 centre(2.0, 0.9, 2.0);
     const double radius = 0.4;
-    auto vertex = [&](int i, int j) {
-        const double theta = std::numbers::pi * i / stacks, phi = 2.0 * std::numbers::pi * j / slices;
-        return centre +
-               radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-    };
-    std::vector<LightBounds> lights;
-    std::vector<glm::dvec3> centroid, normal;
-    std::vector<double> area;
-    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        const glm::dvec3 cr = glm::cross(b - a, c - a);
-        LightBounds t;
-        t.lo = glm::min(a, glm::min(b, c));
-        t.hi = glm::max(a, glm::max(b, c));
-        t.phi = 0.5 * glm::length(cr);
-        t.cone = {glm::normalize(cr), 1.0, 0.0};
-        lights.push_back(t);
-        centroid.push_back((a + b + c) / 3.0);
-        normal.push_back(t.cone.axis);
-        area.push_back(t.phi);
-    };
-    for (int i = 0; i < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            // Wound outward: counter-clockwise seen from outside.
-            const glm::dvec3 a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
-            if (i > 0)
-                add(a, d, b);
-            if (i < stacks - 1)
-                add(b, d, c);
-        }
+    const test::GlowingSphere sphere = test::glowing_sphere(stacks, slices, centre, radius);
+    const std::vector<LightBounds>& lights = sphere.lights;
+    const std::vector<glm::dvec3>&centroid = sphere.centroid, &normal = sphere.normal;
+    const std::vector<double>& area = sphere.area;
     ASSERT_GT(glm::dot(normal[0], centroid[0] - centre), 0.0) << "the triangles face outward";
     const TreeScene scene = tree_scene(build_light_tree(lights), lights.size());
     ClDevice& dev = test::test_device();
