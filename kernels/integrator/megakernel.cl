@@ -46,8 +46,10 @@ PATHCL_KERNEL void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
          * Where delta lobes skip light sampling it waits for the hit (drawn early it ran
          * slower through glass and on the material spheres), as does the light tree, which
          * weighs the lights as seen from the hit. */
-        if (frame_samples_lights(&frame))
+        if (frame_samples_lights(&frame)) {
             light_choice = direct_light_choose(&kd, &frame, dims, (float3)(0.0f), (float3)(0.0f), &sampler);
+            light_record_warm(&kd, light_choice.light);
+        }
 #endif
 #endif
         Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);

@@ -6,6 +6,7 @@
 #include "kernel_data.cl"
 #include "light/environment.cl"
 #include "light/light_pick.cl"
+#include "light/light_record_warm.cl"
 #include "light/light_sample_record.cl"
 #include "light/light_tree.cl"
 #include "light/punctual.cl"

@@ -7,6 +7,7 @@
  * picked with probability frame->infinite_pick, uniformly among them. */
 #include "features.h"
 #include "kernel_data.cl"
+#include "light/light_record_warm.cl"
 #include "util/hash.cl"
 #include "util/math.cl"
 
@@ -128,6 +129,16 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
     float p = 1.0f - infinite;
     int node = 0;
     for (uint depth = 1;; ++depth) {
+        /* Where lanes are lights, their records start into the cache while the lanes are
+         * weighed: the one picked is read right after. */
+        int8 lanes = kd->light_tree[node].child;
+        if (any(lanes < 0)) {
+            int lights[LIGHT_TREE_WIDTH];
+            vstore8(lanes, 0, lights);
+            for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k)
+                if (lights[k] < 0)
+                    light_record_warm(kd, -1 - lights[k]);
+        }
         float weight[LIGHT_TREE_WIDTH];
         int child[LIGHT_TREE_WIDTH];
         float total = light_tree_weights(kd, node, ref, n, weight, child);
