@@ -3,7 +3,6 @@
 // to, with every lane's bounds (sphere, power, cone) holding those of the lanes below it,
 // its cone no wider than its lights need about its axis; infinite lights stay beside it
 // with their share of the power.
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -276,45 +275,6 @@ TEST(LightTree, EachLanesConeIsAsNarrowAsItsLightsAllowAboutItsAxis)
         }
     EXPECT_GT(lanes, 3000);
     EXPECT_GE(broad, 8) << "lanes over many lights, where unions of unions would widen the cone";
-}
-
-// In a node over more than eight lights, a lane over at most eight stands whole: split in
-// two lanes, its lights would still need a node below, only emptier ones. Lanes that are
-// the two halves of one binary node therefore hold more than eight lights together. Split
-// down to the last free lane, the glowing sphere of docs/accuracy.md took 32,994 nodes
-// (21,783 whole).
-TEST(LightTree, ANodeOverManyLightsDoesNotSplitALaneOverAFew)
-{
-    const test::GlowingSphere sphere = test::glowing_sphere(40, 40, {1.0, 2.0, 3.0}, 1.0, 0.6, 0.45);
-    const LightTree tree = build_light_tree(sphere.lights);
-    int pairs = 0;
-    for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
-        const LightTreeNode& node = tree.nodes[i];
-        std::array<std::size_t, LIGHT_TREE_WIDTH> count{};
-        std::size_t total = 0;
-        for (int k = 0; k < LIGHT_TREE_WIDTH; ++k)
-            if (node.phi.s[k] > 0.0f) {
-                std::vector<std::size_t> below;
-                lights_below(tree, node.child.s[k], below);
-                count[static_cast<std::size_t>(k)] = below.size();
-                total += below.size();
-            }
-        if (total <= LIGHT_TREE_WIDTH)
-            continue;
-        for (int a = 0; a < LIGHT_TREE_WIDTH; ++a)
-            for (int b = a + 1; b < LIGHT_TREE_WIDTH; ++b) {
-                const auto ca = count[static_cast<std::size_t>(a)], cb = count[static_cast<std::size_t>(b)];
-                const int length = LIGHT_TREE_CODE_LENGTH(node.code.s[a]);
-                const int parent = (1 << (length - 1)) - 1; // the bits of the path to their parent
-                if (ca == 0 || cb == 0 || length == 0 || LIGHT_TREE_CODE_LENGTH(node.code.s[b]) != length ||
-                    (LIGHT_TREE_CODE_BITS(node.code.s[a]) & parent) != (LIGHT_TREE_CODE_BITS(node.code.s[b]) & parent))
-                    continue;
-                ++pairs;
-                EXPECT_GT(ca + cb, static_cast<std::size_t>(LIGHT_TREE_WIDTH))
-                    << "node " << i << " (" << total << " lights), lanes " << a << " and " << b;
-            }
-    }
-    EXPECT_GT(pairs, 100);
 }
 
 TEST(LightTree, InfiniteLightsStayBesideTheTreeWithTheirShareOfPower)

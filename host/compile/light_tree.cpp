@@ -602,9 +602,7 @@ float float_up(double x)
 
 // The eight-wide tree from the binary one. A node's lanes are binary descendants of the
 // binary node it stands for: starting from its two children, the lane over the most
-// lights is replaced by its two children until there are eight, or only leaves, or (in a
-// node over more than eight lights) only lanes over at most eight, each of which then
-// leads to one node of all its lights. Each lane
+// lights is replaced by its two children until there are eight or only leaves. Each lane
 // keeps its code, the bits of the binary path from the node down to it (LIGHT_TREE_CODE),
 // by which a light's binary trail leads through the eight-wide nodes. The nodes are laid
 // out depth first on one thread; their lanes' bounds are then set on every core (trees of
@@ -652,14 +650,10 @@ private:
         } else {
             lanes[count++] = {binary_.nodes[b].child[0], 0, 1};
             lanes[count++] = {binary_.nodes[b].child[1], 1, 1};
-            // Split, a lane over a few lights would still need a node below for each part,
-            // only emptier ones: the glowing sphere's 101,762 triangles took 153 bytes a
-            // light, 104 with such lanes whole.
-            const std::uint32_t smallest_split = binary_.nodes[b].lights > LIGHT_TREE_WIDTH ? LIGHT_TREE_WIDTH + 1 : 2;
             while (count < LIGHT_TREE_WIDTH) {
                 std::size_t widest = count;
                 for (std::size_t k = 0; k < count; ++k)
-                    if (!(lanes[k].binary & kLeaf) && binary_.nodes[lanes[k].binary].lights >= smallest_split &&
+                    if (!(lanes[k].binary & kLeaf) &&
                         (widest == count ||
                          binary_.nodes[lanes[k].binary].lights > binary_.nodes[lanes[widest].binary].lights))
                         widest = k;
