@@ -602,7 +602,8 @@ float float_up(double x)
 
 // The eight-wide tree from the binary one. A node's lanes are binary descendants of the
 // binary node it stands for: starting from its two children, the lane over the most
-// lights is replaced by its two children until there are eight or only leaves. Each lane
+// lights is replaced by its two children until there are eight or only leaves; in a node
+// over more than eight lights, only lanes worth it are split (worth_splitting). Each lane
 // keeps its code, the bits of the binary path from the node down to it (LIGHT_TREE_CODE),
 // by which a light's binary trail leads through the eight-wide nodes. The nodes are laid
 // out depth first on one thread; their lanes' bounds are then set on every core (trees of
@@ -642,18 +643,24 @@ private:
     {
         struct Lane {
             std::uint32_t binary, bits, length;
+            bool splits; // replaced by its two children when it is the widest such lane
         };
         std::array<Lane, LIGHT_TREE_WIDTH> lanes;
         std::size_t count = 0;
         if (b & kLeaf) {
-            lanes[count++] = {b, 0, 0}; // a tree of one light
+            lanes[count++] = {b, 0, 0, false}; // a tree of one light
         } else {
-            lanes[count++] = {binary_.nodes[b].child[0], 0, 1};
-            lanes[count++] = {binary_.nodes[b].child[1], 1, 1};
+            const bool many = binary_.nodes[b].lights > LIGHT_TREE_WIDTH;
+            const auto splits = [&](std::uint32_t lane) {
+                return !(lane & kLeaf) && (!many || worth_splitting(lane));
+            };
+            const BinaryNode& root = binary_.nodes[b];
+            lanes[count++] = {root.child[0], 0, 1, splits(root.child[0])};
+            lanes[count++] = {root.child[1], 1, 1, splits(root.child[1])};
             while (count < LIGHT_TREE_WIDTH) {
                 std::size_t widest = count;
                 for (std::size_t k = 0; k < count; ++k)
-                    if (!(lanes[k].binary & kLeaf) &&
+                    if (lanes[k].splits &&
                         (widest == count ||
                          binary_.nodes[lanes[k].binary].lights > binary_.nodes[lanes[widest].binary].lights))
                         widest = k;
@@ -661,8 +668,8 @@ private:
                     break;
                 const Lane w = lanes[widest];
                 const BinaryNode& n = binary_.nodes[w.binary];
-                lanes[widest] = {n.child[0], w.bits, w.length + 1};
-                lanes[count++] = {n.child[1], w.bits | (1u << w.length), w.length + 1};
+                lanes[widest] = {n.child[0], w.bits, w.length + 1, splits(n.child[0])};
+                lanes[count++] = {n.child[1], w.bits | (1u << w.length), w.length + 1, splits(n.child[1])};
             }
         }
         const auto index = static_cast<std::uint32_t>(lanes_.size());
@@ -678,6 +685,21 @@ private:
             l.count = static_cast<std::uint32_t>(k + 1);
         }
         return index;
+    }
+
+    // Whether a lane over binary node b is split in a node over more than eight lights. Over
+    // more than eight itself it must be, and a half that is one light needs no node
+    // below; two halves of several lights each would still need a node each, emptier than
+    // the one the whole lane leads to, so such a split pays only where it sharpens the
+    // weights: where the halves' boxes lie apart (lamps in different places), not where
+    // they touch (neighbouring triangles of one surface).
+    bool worth_splitting(std::uint32_t b) const
+    {
+        const BinaryNode& n = binary_.nodes[b];
+        if (n.lights > LIGHT_TREE_WIDTH || (n.child[0] & kLeaf) || (n.child[1] & kLeaf))
+            return true;
+        const Box first = binary_.of(n.child[0]).box, second = binary_.of(n.child[1]).box;
+        return glm::any(glm::lessThan(first.hi, second.lo)) || glm::any(glm::lessThan(second.hi, first.lo));
     }
 
     void write(std::size_t index)
