@@ -327,8 +327,8 @@ TEST(LightTree, ANodeOverManyLightsSplitsALaneOverAFewOnlyWhereItsHalvesLieApart
                 ++pairs;
                 // Touching triangles: a split lane was over more than eight, or a half is one light.
                 EXPECT_TRUE(ca + cb > LIGHT_TREE_WIDTH || ca == 1 || cb == 1)
-                    << "node " << i << " (" << total << " lights), lanes " << a << " and " << b << ": " << ca
-                    << " and " << cb << " lights";
+                    << "node " << i << " (" << total << " lights), lanes " << a << " and " << b << ": " << ca << " and "
+                    << cb << " lights";
             }
     }
     EXPECT_GT(pairs, 100);

@@ -651,18 +651,15 @@ private:
             lanes[count++] = {b, 0, 0, false}; // a tree of one light
         } else {
             const bool many = binary_.nodes[b].lights > LIGHT_TREE_WIDTH;
-            const auto splits = [&](std::uint32_t lane) {
-                return !(lane & kLeaf) && (!many || worth_splitting(lane));
-            };
+            const auto splits = [&](std::uint32_t lane) { return !(lane & kLeaf) && (!many || worth_splitting(lane)); };
             const BinaryNode& root = binary_.nodes[b];
             lanes[count++] = {root.child[0], 0, 1, splits(root.child[0])};
             lanes[count++] = {root.child[1], 1, 1, splits(root.child[1])};
             while (count < LIGHT_TREE_WIDTH) {
                 std::size_t widest = count;
                 for (std::size_t k = 0; k < count; ++k)
-                    if (lanes[k].splits &&
-                        (widest == count ||
-                         binary_.nodes[lanes[k].binary].lights > binary_.nodes[lanes[widest].binary].lights))
+                    if (lanes[k].splits && (widest == count || binary_.nodes[lanes[k].binary].lights >
+                                                                   binary_.nodes[lanes[widest].binary].lights))
                         widest = k;
                 if (widest == count)
                     break;
