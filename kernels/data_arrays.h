@@ -19,16 +19,17 @@
     X(TriangleShading, shading)       /* normals, material, emitter; leaf order */                                     \
     X(Instance, instances)            /* two-level BVH only: top-level leaf order */                                   \
     X(Material, materials)                                                                                             \
-    X(Light, lights)                       /* sphere lights first */                                                   \
-    X(LightAliasEntry, light_distribution) /* selection pmf and alias table, one per light */                          \
-    X(LightTreeNode, light_tree)           /* --light-sampler tree: the tree's nodes, root first */                    \
-    X(pcl_ulong, light_tree_trail)         /* per light: its binary path from the root, a bit a step */                \
-    X(pcl_int, light_tree_infinite)        /* the infinite lights' indices, which the tree leaves out */               \
-    X(pcl_float4, env_texels)              /* environment radiance, width x height, top row first */                   \
-    X(pcl_float, env_marginal)             /* its CDF over rows (height + 1) */                                        \
-    X(pcl_float, env_conditional)          /* per row, the CDF over columns (height x (width + 1)) */                  \
-    X(pcl_float, layer_albedo)             /* LAYER_* tables (closure/layer_table.h); glossy scenes only */            \
-    X(pcl_uint, texels)                    /* every texture image (TEXTURE_FORMAT_*) */                                \
+    X(Light, lights)                             /* sphere lights first */                                             \
+    X(LightAliasEntry, light_distribution)       /* selection pmf and alias table, one per light */                    \
+    X(LightTreeNode, light_tree)                 /* --light-sampler tree: the tree's nodes, root first */              \
+    X(LightTreeClusterLight, light_tree_cluster) /* the lights of the tree's cluster leaves */                         \
+    X(pcl_ulong, light_tree_trail)               /* per light: its binary path from the root, a bit a step */          \
+    X(pcl_int, light_tree_infinite)              /* the infinite lights' indices, which the tree leaves out */         \
+    X(pcl_float4, env_texels)                    /* environment radiance, width x height, top row first */             \
+    X(pcl_float, env_marginal)                   /* its CDF over rows (height + 1) */                                  \
+    X(pcl_float, env_conditional)                /* per row, the CDF over columns (height x (width + 1)) */            \
+    X(pcl_float, layer_albedo)                   /* LAYER_* tables (closure/layer_table.h); glossy scenes only */      \
+    X(pcl_uint, texels)                          /* every texture image (TEXTURE_FORMAT_*) */                          \
     X(TextureImage, texture_images)                                                                                    \
     X(TextureView, texture_views)                                                                                      \
     X(TriangleTexcoords, texcoords) /* texture-coordinate sets, leaf order */                                          \

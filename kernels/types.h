@@ -292,7 +292,7 @@ typedef struct {
     pcl_float8 phi;     /* power (luminance, W) */
     pcl_float8 axis_x, axis_y, axis_z;
     pcl_float8 cos_o, sin_o, cos_e;
-    pcl_int8 child;     /* >= 0: the child node; < 0: -1 - the light (a leaf) */
+    pcl_int8 child;     /* >= 0: the child node; < 0: -1 - a leaf (LIGHT_TREE_LEAF_*) */
     pcl_int8 two_sided; /* -1: emits on both sides of its normals (0: the front only) */
     pcl_int8 code;      /* the binary path from this node to the lane: LIGHT_TREE_CODE */
 } LightTreeNode;
@@ -301,6 +301,19 @@ typedef struct {
  * from the root; at each node the lane whose bits it starts with leads on. */
 #define LIGHT_TREE_CODE_BITS(code) ((code)&0xff)
 #define LIGHT_TREE_CODE_LENGTH(code) ((code) >> 8)
+/* A leaf lane's child is -1 - leaf. A leaf of size 1 is a light; a larger one, a cluster:
+ * that many neighbouring lights of one surface from light_tree_cluster[index], picked
+ * among in proportion to their power, so that the descent stops a level above them. */
+#define LIGHT_TREE_LEAF_INDEX(leaf) ((leaf)&0x0fffffff)
+#define LIGHT_TREE_LEAF_SIZE(leaf) (((leaf) >> 28) + 1)
+#define LIGHT_TREE_LEAF(index, size) ((index) | (((size)-1) << 28))
+#define LIGHT_TREE_MAX_LEAF_INDEX 0x0fffffff
+
+/* A light of a cluster leaf: its index and power (luminance, W). 8 bytes. */
+typedef struct {
+    pcl_int light;
+    pcl_float phi;
+} LightTreeClusterLight;
 
 /* Camera projections */
 #define CAMERA_PERSPECTIVE 0  /* pinhole, or a thin lens when lens_radius > 0 */

@@ -5,7 +5,9 @@
 // of the pick counts; a descent stops where no child's lights are judged able to reach
 // the point, though their parent's looser bounds were), every pick reports the pmf
 // light_tree_pmf computes for its light bit for bit, and a light of pmf 0 is never picked.
-// A descent that does not rescale its number fails the same test. The importance of a
+// A tessellated panel among them ends descents in clusters of its neighbouring
+// triangles, picked among by power. A descent that does not rescale its number fails the
+// same test, as does a cluster that always gives its first light. The importance of a
 // one-sided emitter is zero exactly where it cannot reach.
 #include <algorithm>
 #include <cmath>
@@ -38,6 +40,7 @@ TreeScene tree_scene(const LightTree& tree, std::size_t light_count)
     TreeScene s;
     s.arrays.lights.resize(light_count);
     s.arrays.light_tree = tree.nodes;
+    s.arrays.light_tree_cluster = tree.cluster;
     s.arrays.light_tree_trail = tree.trails;
     s.arrays.light_tree_infinite = tree.infinite;
     s.frame.light_count = static_cast<pcl_uint>(light_count);
@@ -54,8 +57,21 @@ TreeScene make_scene()
         double z = 2.0 * u(rng) - 1.0, phi = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
         return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
     };
+    // A panel of 8 x 8 quads, two triangles each, facing +y at y = -1: their powers varied
+    // by up to 3x, so that a cluster's pick by power differs from a uniform one.
     std::vector<LightBounds> lights(kLights);
-    for (std::size_t i = 0; i < kLights; ++i) {
+    const std::size_t scattered = kLights - 128;
+    for (std::size_t q = 0; q < 64; ++q) {
+        const double x = -1.0 + 0.25 * static_cast<double>(q % 8), z = -1.0 + 0.25 * static_cast<double>(q / 8);
+        for (std::size_t t = 0; t < 2; ++t) {
+            LightBounds& b = lights[scattered + 2 * q + t];
+            b.lo = {x, -1.0, z};
+            b.hi = {x + 0.25, -1.0, z + 0.25};
+            b.phi = 0.5 * static_cast<double>(1 + (2 * q + t) % 3);
+            b.cone = {{0.0, 1.0, 0.0}, 1.0, 0.0};
+        }
+    }
+    for (std::size_t i = 0; i < scattered; ++i) {
         LightBounds& b = lights[i];
         glm::dvec3 c(8.0 * u(rng) - 4.0, 8.0 * u(rng) - 4.0, 8.0 * u(rng) - 4.0);
         glm::dvec3 half = i % 4 == 0 ? glm::dvec3(0.0) : glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng));
@@ -204,6 +220,15 @@ int check_picks(const std::vector<KernelPatch>& patches, bool report)
 TEST(LightTreeSampling, PicksFollowThePmfAndReportIt)
 {
     check_picks({}, true);
+}
+
+TEST(LightTreeSampling, AClusterThatAlwaysGivesItsFirstLightFails)
+{
+    EXPECT_GE(make_scene().arrays.light_tree_cluster.size(), 16u) << "no clusters to test";
+    const int failed = check_picks(
+        {{"light/light_tree.cl", "if (target < below + lights[k].phi)", "if (target < below + lights[k].phi || true)"}},
+        false);
+    EXPECT_GT(failed, 0);
 }
 
 TEST(LightTreeSampling, ADescentThatDoesNotRescaleItsNumberFails)

@@ -61,8 +61,8 @@ TEST(LightSamplers, TreePmfOffAtTheHitsFailsTheComparison)
     // on a light reads: those hits take full weight beside the light samples, and direct
     // light counts about twice.
     RenderOptions o = reference_options(LightSampler::Tree);
-    o.kernel_patches = {{"light/light_tree.cl", "        if (child[lane] < 0)\n            return p;",
-                         "        if (child[lane] < 0)\n            return 0.0f * p;"}};
+    o.kernel_patches = {{"light/light_tree.cl", "        p *= weight[lane] / total;\n        if (child[lane] < 0) {",
+                         "        p *= weight[lane] / total;\n        p *= 0.0f;\n        if (child[lane] < 0) {"}};
     CompareReport cmp = against_reference("cornell-box", o);
     EXPECT_FALSE(cmp.passed) << cmp.summary();
 }

@@ -25,6 +25,7 @@ CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features, 
         LightTree tree = build_light_tree(light_bounds(out.arrays.lights, power));
         out.light_tree_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out.arrays.light_tree = std::move(tree.nodes);
+        out.arrays.light_tree_cluster = std::move(tree.cluster);
         out.arrays.light_tree_trail = std::move(tree.trails);
         out.arrays.light_tree_infinite = std::move(tree.infinite);
         out.infinite_pick = tree.infinite_pick;

@@ -603,13 +603,16 @@ float float_up(double x)
 // The eight-wide tree from the binary one. A node's lanes are binary descendants of the
 // binary node it stands for: starting from its two children, the lane over the most
 // lights is replaced by its two children until there are eight or only leaves; in a node
-// over more than eight lights, only lanes worth it are split (worth_splitting). Each lane
+// over more than eight lights, only lanes worth it are split (worth_splitting), and a lane
+// not worth it whose lights face nearly one way is a cluster leaf (cluster). Each lane
 // keeps its code, the bits of the binary path from the node down to it (LIGHT_TREE_CODE),
 // by which a light's binary trail leads through the eight-wide nodes. The nodes are laid
 // out depth first on one thread; their lanes' bounds are then set on every core (trees of
 // more than kParallelNodes nodes, in pieces of at least kShareNodes).
 constexpr std::size_t kParallelNodes = 1024;
 constexpr std::size_t kShareNodes = 256;
+// The widest cone (theta_o, radians) of a cluster's normals: 14 degrees.
+constexpr double kClusterCone = 0.25;
 
 class Collapser {
 public:
@@ -674,7 +677,10 @@ private:
         tree_.depth = std::max(tree_.depth, depth + 1);
         for (std::size_t k = 0; k < count; ++k) {
             const std::uint32_t lane = lanes[k].binary;
-            const pcl_int child = lane & kLeaf ? 0 : static_cast<pcl_int>(lay_out(lane, depth + 1));
+            pcl_int child = 0; // a light's is set by write(), on every core
+            if (!(lane & kLeaf))
+                child = !lanes[k].splits && cluster(lane) ? -1 - add_cluster(lane)
+                                                          : static_cast<pcl_int>(lay_out(lane, depth + 1));
             Lanes& l = lanes_[index];
             l.binary[k] = lane;
             l.code[k] = static_cast<pcl_int>(lanes[k].bits | (lanes[k].length << 8));
@@ -697,6 +703,27 @@ private:
             return true;
         const Box first = binary_.of(n.child[0]).box, second = binary_.of(n.child[1]).box;
         return glm::any(glm::lessThan(first.hi, second.lo)) || glm::any(glm::lessThan(second.hi, first.lo));
+    }
+
+    // Whether the lane over binary node b, in a node over more than eight lights and not
+    // worth splitting (neighbouring lights of one surface), ends the descent as a cluster:
+    // where its lights face within kClusterCone of one direction, so that power alone
+    // weighs them nearly as their importance would at any point that sees them.
+    bool cluster(std::uint32_t b) const
+    {
+        return binary_.nodes[b].lights <= LIGHT_TREE_WIDTH && binary_.of(b).cone.theta_o <= kClusterCone;
+    }
+
+    // Appends binary node b's lights to the clusters' array; returns the leaf
+    // (LIGHT_TREE_LEAF) that stands for them.
+    pcl_int add_cluster(std::uint32_t b)
+    {
+        const BinaryNode& n = binary_.nodes[b];
+        const auto first = static_cast<pcl_int>(tree_.cluster.size());
+        for (std::uint32_t i = n.first; i < n.first + n.lights; ++i)
+            tree_.cluster.push_back(
+                {static_cast<pcl_int>(binary_.records[i].light), static_cast<pcl_float>(binary_.records[i].phi)});
+        return LIGHT_TREE_LEAF(first, static_cast<pcl_int>(n.lights));
     }
 
     void write(std::size_t index)
@@ -817,6 +844,9 @@ std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const st
 LightTree build_light_tree(const std::vector<LightBounds>& lights)
 {
     LightTree tree;
+    if (lights.size() > std::size_t(LIGHT_TREE_MAX_LEAF_INDEX) + 1)
+        throw Error("the light tree takes at most " + std::to_string(LIGHT_TREE_MAX_LEAF_INDEX + 1) + " lights, not " +
+                    std::to_string(lights.size()));
     tree.trails.assign(lights.size(), 0);
     std::vector<std::uint32_t> order;
     double bounded_power = 0.0, infinite_power = 0.0;

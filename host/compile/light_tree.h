@@ -41,17 +41,20 @@ std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const st
 LightCone cone_union(const LightCone& a, const LightCone& b);
 
 struct LightTree {
-    std::vector<LightTreeNode> nodes; // depth-first, root first; empty when every light is infinite
-    std::vector<pcl_ulong> trails;    // per light: bit k = the child taken at depth k (1: the second); all
-                                      // ones for an infinite light
-    std::vector<pcl_int> infinite;    // the infinite lights
-    double infinite_pick = 0.0;       // the probability of picking one of them
-    std::uint32_t depth = 0;          // the number of levels of eight-wide nodes
+    std::vector<LightTreeNode> nodes;           // depth-first, root first; empty when every light is infinite
+    std::vector<pcl_ulong> trails;              // per light: bit k = the child taken at depth k (1: the second); all
+                                                // ones for an infinite light
+    std::vector<LightTreeClusterLight> cluster; // the lights of the cluster leaves, each one's together
+    std::vector<pcl_int> infinite;              // the infinite lights
+    double infinite_pick = 0.0;                 // the probability of picking one of them
+    std::uint32_t depth = 0;                    // the number of levels of eight-wide nodes
 };
 
 // Builds the tree by the surface area orientation heuristic (the paper's SAOH: binned
-// along each axis, power x orientation measure x box area), one light per leaf. Throws
-// pathcl::Error if a light's bounds are not finite.
+// along each axis, power x orientation measure x box area), one light per leaf of the
+// binary tree; in the eight-wide one, a few neighbouring lights of one surface that face
+// nearly one way may share a leaf (a cluster). Throws pathcl::Error if a light's bounds
+// are not finite, or if there are more lights than a leaf can index (2^28).
 LightTree build_light_tree(const std::vector<LightBounds>& lights);
 
 // The light sampler a render takes: the one the options ask for, or for Auto the light

@@ -139,6 +139,7 @@ struct Renderer::Impl {
         setup.light_tree_depth = compiled.light_tree_depth;
         setup.light_tree_build_seconds = compiled.light_tree_build_seconds;
         setup.light_tree_bytes = compiled.arrays.light_tree.size() * sizeof(LightTreeNode) +
+                                 compiled.arrays.light_tree_cluster.size() * sizeof(LightTreeClusterLight) +
                                  compiled.arrays.light_tree_trail.size() * sizeof(pcl_ulong);
         setup.texel_bytes = compiled.texel_bytes();
         setup.kernel_from_cache = true;

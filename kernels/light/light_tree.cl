@@ -109,6 +109,49 @@ static inline float light_tree_weights(const KernelData* kd, int node, float3 re
     return s2.x + s2.y;
 }
 
+/* Starts the cluster at light_tree_cluster[first] into the cache, as light_record_warm
+ * does a light's record: a node's cluster leaves are weighed before one is picked among. */
+static inline void light_tree_cluster_warm(const KernelData* kd, int first)
+{
+    volatile __global const int* words = (volatile __global const int*)&kd->light_tree_cluster[first];
+    (void)words[0];
+}
+
+/* Picks one of the size lights of the cluster at light_tree_cluster[first] by the number
+ * u, in proportion to their power; its probability times p in *pmf. */
+static inline int light_tree_cluster_pick(const KernelData* kd, int first, int size, float u, float p, float* pmf)
+{
+    __global const LightTreeClusterLight* lights = kd->light_tree_cluster + first;
+    float total = 0.0f;
+    for (int k = 0; k < size; ++k)
+        total += lights[k].phi;
+    float target = u * total, below = 0.0f;
+    int pick = 0;
+    for (int k = 0; k < size; ++k) {
+        if (lights[k].phi > 0.0f) {
+            pick = k;
+            if (target < below + lights[k].phi)
+                break;
+            below += lights[k].phi;
+        }
+    }
+    *pmf = p * (lights[pick].phi / total);
+    return lights[pick].light;
+}
+
+/* p times the probability that light_tree_cluster_pick picks `light` of that cluster. */
+static inline float light_tree_cluster_pmf(const KernelData* kd, int first, int size, int light, float p)
+{
+    __global const LightTreeClusterLight* lights = kd->light_tree_cluster + first;
+    float total = 0.0f, phi = 0.0f;
+    for (int k = 0; k < size; ++k) {
+        total += lights[k].phi;
+        if (lights[k].light == light)
+            phi = lights[k].phi;
+    }
+    return p * (phi / total);
+}
+
 /* Picks a light for the shading point ref with normal n by the number u; its probability
  * in *pmf. -1 (and pmf 0) where the descent reaches a node none of whose children can
  * reach the point (the parents' bounds are looser than theirs). fresh_key seeds the
@@ -133,11 +176,17 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
          * weighed: the one picked is read right after. */
         int8 lanes = kd->light_tree[node].child;
         if (any(lanes < 0)) {
-            int lights[LIGHT_TREE_WIDTH];
-            vstore8(lanes, 0, lights);
-            for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k)
-                if (lights[k] < 0)
-                    light_record_warm(kd, -1 - lights[k]);
+            int leaves[LIGHT_TREE_WIDTH];
+            vstore8(lanes, 0, leaves);
+            for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k) {
+                if (leaves[k] < 0) {
+                    int leaf = -1 - leaves[k];
+                    if (LIGHT_TREE_LEAF_SIZE(leaf) == 1)
+                        light_record_warm(kd, leaf);
+                    else
+                        light_tree_cluster_warm(kd, LIGHT_TREE_LEAF_INDEX(leaf));
+                }
+            }
         }
         float weight[LIGHT_TREE_WIDTH];
         int child[LIGHT_TREE_WIDTH];
@@ -158,8 +207,11 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
         p *= weight[lane] / total;
         u = fmin(fmax(target - below, 0.0f) / weight[lane], ONE_MINUS_EPSILON);
         if (child[lane] < 0) {
+            int leaf = -1 - child[lane], size = LIGHT_TREE_LEAF_SIZE(leaf);
+            if (size > 1)
+                return light_tree_cluster_pick(kd, LIGHT_TREE_LEAF_INDEX(leaf), size, u, p, pmf);
             *pmf = p;
-            return -1 - child[lane];
+            return leaf;
         }
         node = child[lane];
         if (depth % LIGHT_TREE_FRESH_LEVELS == 0u)
@@ -195,8 +247,10 @@ static inline float light_tree_pmf(const KernelData* kd, const FrameParams* fram
             }
         }
         p *= weight[lane] / total;
-        if (child[lane] < 0)
-            return p;
+        if (child[lane] < 0) {
+            int leaf = -1 - child[lane], size = LIGHT_TREE_LEAF_SIZE(leaf);
+            return size > 1 ? light_tree_cluster_pmf(kd, LIGHT_TREE_LEAF_INDEX(leaf), size, light, p) : p;
+        }
         node = child[lane];
         trail >>= length;
     }
