@@ -401,7 +401,7 @@ TEST(LightTree, NeighbouringTrianglesFacingOneWayEndTheDescentAsAClusterPickedBy
         double phi = 0.0;
         for (std::size_t l : c.lights) {
             phi += sphere.lights[l].phi;
-            EXPECT_LE(glm::dot(lane.cone.axis, sphere.normal[l]), 1.0 + 1e-9);
+            EXPECT_GE(glm::dot(lane.cone.axis, sphere.normal[l]), lane.cone.cos_o - 1e-6) << "light " << l;
         }
         EXPECT_NEAR(lane.phi, phi, 1e-5 * phi) << "node " << c.node << " lane " << c.lane;
         clustered += c.lights.size();
