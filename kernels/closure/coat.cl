@@ -25,11 +25,9 @@ static inline void coat_eval(const BsdfParams* p, const SurfacePoint* sp, float3
     if (p->inside || p->coat_alpha < ALPHA_DELTA || !(wo_c.z > 0.0f) || !(wi_c.z > 0.0f) ||
         !above_surface(sp, dot(wi, sp->ng)))
         return;
-    float3 h = wo_c + wi_c;
-    float len = length(h);
-    if (!(len > 0.0f))
+    float3 h;
+    if (!reflection_half_vector(wo_c, wi_c, &h))
         return;
-    h /= len;
     float cos_h = dot(wo_c, h);
     float a2 = p->coat_alpha * p->coat_alpha;
     float fr = p->coat * fresnel_dielectric(cos_h, COAT_IOR);

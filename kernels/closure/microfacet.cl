@@ -8,6 +8,17 @@
 
 #ifdef PATHCL_FULL_BSDF
 
+/* The facet normal that reflects wo into wi, in *h; false where they are opposite. */
+static inline bool reflection_half_vector(float3 wo, float3 wi, float3* h)
+{
+    float3 sum = wo + wi;
+    float len = length(sum);
+    if (!(len > 0.0f))
+        return false;
+    *h = sum / len;
+    return true;
+}
+
 /* Density of visible normals wm as seen from wo (wo.z > 0). */
 static inline float ggx_visible_pdf(float3 wo, float3 wm, float a2)
 {

@@ -19,11 +19,9 @@ static inline void specular_reflection_eval(const BsdfParams* p, float3 wo, floa
 {
     bool rough = p->alpha >= ALPHA_DELTA;
     if (rough && wo.z > 0.0f && p->specular_lobes) {
-        float3 h = wo + wi;
-        float len = length(h);
-        if (!(len > 0.0f))
+        float3 h;
+        if (!reflection_half_vector(wo, wi, &h))
             return;
-        h /= len;
         float cos_h = fabs(dot(wo, h));
         float3 fr = fresnel_reflection(p, cos_h, fresnel_specular_layer(p, cos_h));
         e->f_cos += fr * (ggx_d(h, a2) * ggx_g1(wo, a2) * ggx_g1(wi, a2) / (4.0f * wo.z));
@@ -41,11 +39,9 @@ static inline void specular_reflection_eval_anisotropic(const BsdfParams* p, flo
 {
     if (!(wo.z > 0.0f))
         return;
-    float3 h = wo + wi;
-    float len = length(h);
-    if (!(len > 0.0f))
+    float3 h;
+    if (!reflection_half_vector(wo, wi, &h))
         return;
-    h /= len;
     float cos_h = fabs(dot(wo, h));
     float3 fc = p->metallic * fresnel_schlick(p->base_color, cos_h);
     e->f_cos += fc * (conductor_ggx_d(p, h) * conductor_ggx_g1(p, wo) * conductor_ggx_g1(p, wi) / (4.0f * wo.z));
