@@ -55,6 +55,7 @@ export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0" UBS
 # unit_tests runs once, all its tests in one process (in ctest's working directory): with
 # a process a test, their starts under the sanitizers took three quarters of the time
 # (219 s against 54 s on two cores). Then ctest runs the command-line tests and the
-# hostile corpus; the checks of the sources and the repository's text ran above.
+# hostile corpus, a test a core; the checks of the sources and the repository's text ran
+# above.
 (cd build-sanitize/tests && ./unit_tests --gtest_brief=1)
-ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure
+ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure -j "$jobs"
