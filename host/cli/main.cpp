@@ -15,8 +15,9 @@ int main(int argc, char** argv)
     // (OpenEXR's, OpenImageIO's, PoCL's) sit idle. Left to exit, it runs after their
     // static destructors have stopped those threads, and LeakSanitizer's tracer can crash
     // on a thread that is still ending ("Tracer caught signal 11",
-    // github.com/google/sanitizers/issues/1353). What leaks is the same at both points:
-    // everything the command allocated is freed by now, and no static is destroyed yet.
+    // github.com/google/sanitizers/issues/1353). A leak is one at both points: the
+    // command's own objects are destroyed by now, and what the libraries' statics hold
+    // is still reachable from them.
     __lsan_do_leak_check();
 #endif
     return code;
