@@ -56,6 +56,9 @@ export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0" UBS
 # a process a test, their starts under the sanitizers took three quarters of the time
 # (219 s against 54 s on two cores). Then ctest runs the command-line tests and the
 # hostile corpus, a test a core; the checks of the sources and the repository's text ran
-# above.
+# above. A failed one runs once more: LeakSanitizer's own tracer crashes now and then
+# while it checks a process ("Tracer caught signal 11", google/sanitizers#1353; seen in
+# the converge test, whose plots end Pango's threads just before), which is no finding of
+# the test; a test that fails twice fails the run.
 (cd build-sanitize/tests && ./unit_tests --gtest_brief=1)
-ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure -j "$jobs"
+ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure -j "$jobs" --repeat until-pass:2
