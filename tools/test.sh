@@ -16,8 +16,7 @@ export PATHCL_CACHE_DIR="$PWD/build/kernel-cache"
 # process with its own scratch directory (named by its pid), the kernel cache stores
 # atomically, and much of a test's time is on one core (PoCL's kernel compiles, host-side
 # checks). Two at once took those runs from about 510 s to 300 s on two cores
-# (docs/testing.md). The sanitizer run stays one test at a time: under that load
-# LeakSanitizer's exit-time tracer crashed once (signal 11) in a command-line test.
+# (docs/testing.md).
 jobs=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 [ "$jobs" -le 4 ] || jobs=4
 
@@ -56,9 +55,7 @@ export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0" UBS
 # a process a test, their starts under the sanitizers took three quarters of the time
 # (219 s against 54 s on two cores). Then ctest runs the command-line tests and the
 # hostile corpus, a test a core; the checks of the sources and the repository's text ran
-# above. A failed one runs once more: LeakSanitizer's own tracer crashes now and then
-# while it checks a process ("Tracer caught signal 11", google/sanitizers#1353; seen in
-# the converge test, whose plots end Pango's threads just before), which is no finding of
-# the test; a test that fails twice fails the run.
+# above. The sanitized programs carry their default options
+# (host/common/sanitizer_options.cpp).
 (cd build-sanitize/tests && ./unit_tests --gtest_brief=1)
-ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure -j "$jobs" --repeat until-pass:2
+ctest --test-dir build-sanitize -L 'cli|corpus' --output-on-failure -j "$jobs"

@@ -7,6 +7,6 @@
 int main(int argc, char** argv)
 {
     int code = pathcl::cli::run_command_line(argc, argv);
-    pathcl::check_leaks_now(); // in a sanitizer build, before the libraries' threads stop
+    pathcl::check_leaks_now(); // in a sanitizer build, before the libraries' static destructors
     return code;
 }

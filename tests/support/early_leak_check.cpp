@@ -1,5 +1,5 @@
 // In a sanitizer build, the test binaries check for leaks once their tests are done,
-// before the libraries' threads stop (common/early_leak_check.h).
+// before the libraries' static destructors run (common/early_leak_check.h).
 #include "common/early_leak_check.h"
 
 #include <gtest/gtest.h>
