@@ -118,6 +118,27 @@ TEST(FilmAccumulator, EstimateIsTheSpreadOfTheBatchMeans)
     EXPECT_NEAR(acc.per_sample_relmse_estimate(), per_sample_var / 8.0 / 4.01, 1e-12);
 }
 
+TEST(FilmAccumulator, SumsPastTheirRangeLeaveNoEstimateRatherThanZeroOrNan)
+{
+    // A radiance of 1e20: its square, 1e40, is past the range of the film's sums
+    // (ExactSum: 2e28), so the spread of the samples and of the batch means is lost.
+    // No estimate, not 0 (which would stop adaptive sampling at once) nor nan.
+    FilmAccumulator acc(2, 4);
+    FilmPixel huge{}, small{};
+    huge.sum = {4e20f, 4e20f, 4e20f, 4.0f};
+    huge.sum_sq = {INFINITY, INFINITY, INFINITY, 4.0f};
+    small.sum = {4.0f, 4.0f, 4.0f, 4.0f};
+    small.sum_sq = {4.0f, 4.0f, 4.0f, 4.0f};
+    FilmSum batch(2);
+    batch.add({huge, small}, {0u});
+    acc.add_batch(batch);
+    EXPECT_LT(acc.per_sample_relmse_estimate(), 0.0);
+    acc.add_batch(batch);
+    EXPECT_LT(acc.relmse_estimate(), 0.0);
+    EXPECT_LT(acc.pixel_relmse_estimate(0), 0.0);
+    EXPECT_GE(acc.pixel_relmse_estimate(1), 0.0); // the other pixel keeps its own
+}
+
 TEST(FilmAccumulator, APartialBatchAddsToTheImageAndScalesTheEstimate)
 {
     FilmAccumulator acc(1, 4);

@@ -213,6 +213,8 @@ std::vector<std::uint32_t> FilmAccumulator::pixel_samples() const
 
 double FilmAccumulator::pixel_channel_estimate(std::size_t i, int c) const
 {
+    if (state_.batch_mean_sum[i * 3 + c].poisoned() || state_.batch_mean_sq[i * 3 + c].poisoned())
+        return NAN; // a batch mean past ExactSum's range (its square past 2e28): no spread to tell
     double k = state_.pixel_batches[i];
     double s = state_.batch_mean_sum[i * 3 + c].value(), q = state_.batch_mean_sq[i * 3 + c].value();
     double spread = std::max(0.0, (q - s * s / k) / (k - 1.0)); // variance of one batch mean
@@ -227,7 +229,9 @@ double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
 {
     if (state_.pixel_batches[i] < 2)
         return -1.0;
-    return std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
+    const double e =
+        std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
+    return std::isfinite(e) ? e : -1.0;
 }
 
 double FilmAccumulator::mean_of_pixel_terms(const std::function<bool(std::size_t, double*)>& pixel_terms) const
@@ -250,7 +254,9 @@ double FilmAccumulator::mean_of_pixel_terms(const std::function<bool(std::size_t
             sum += term[i * 3 + c];
         terms += 3;
     }
-    return terms > 0 ? sum / static_cast<double>(terms) : -1.0;
+    // Not finite where a pixel's sums are lost (poisoned ExactSums: a square past 2e28, a
+    // radiance past 1.4e14): no estimate then, rather than nan.
+    return terms > 0 && std::isfinite(sum) ? sum / static_cast<double>(terms) : -1.0;
 }
 
 double FilmAccumulator::relmse_estimate() const
@@ -273,7 +279,8 @@ double FilmAccumulator::per_sample_relmse_estimate() const
             return false;
         for (int c = 0; c < 3; ++c) {
             const Moments m = moments(i, c);
-            t[c] = m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
+            const bool lost = state_.sum[i * 3 + c].poisoned() || state_.sum_sq[i * 3 + c].poisoned();
+            t[c] = lost ? NAN : m.variance / m.n / (m.mean * m.mean + kRelMseEpsilon);
         }
         return true;
     });

@@ -97,6 +97,8 @@ public:
     // The estimate from the per-sample variance instead, var(mean) = var(sample) / n:
     // right for independent samples, an upper bound for stratified and quasi-Monte Carlo
     // ones (by as much as their gain over independent sampling). Needs one batch only.
+    // Each estimate is negative where a pixel's sums are lost (ExactSum::poisoned: a
+    // radiance past 1.4e14, whose square passes the sums' range).
     double per_sample_relmse_estimate() const;
 
     // What is wrong with `state` as the film of `pixels` pixels after exactly `batches`
