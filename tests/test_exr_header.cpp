@@ -136,7 +136,6 @@ protected:
 TEST_F(ExrHeader, AcceptsAWellFormedFileThatOpenImageIoReads)
 {
     const std::string p = file("valid.exr", exr());
-    ASSERT_TRUE(is_exr_file(p));
     EXPECT_EQ(error_of(p), "");
     const Image img = read_image(p);
     EXPECT_EQ(img.width, 8u);
@@ -231,7 +230,6 @@ TEST_F(ExrHeader, AFileOfAnotherFormatIsRefusedByItsFirstBytes)
     Bytes rla = exr();
     rla.replace(0, 4, Bytes("\x00\x00\x00\x00", 4));
     const std::string p = file("not-exr.exr", rla);
-    EXPECT_FALSE(is_exr_file(p));
     try {
         (void)read_image(p);
         ADD_FAILURE() << "read";

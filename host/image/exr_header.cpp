@@ -163,13 +163,6 @@ void check_string_vector(HeaderReader& r, const std::string& attribute, const st
 
 } // namespace
 
-bool is_exr_file(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    unsigned char magic[4];
-    return in.read(reinterpret_cast<char*>(magic), 4) && std::memcmp(magic, kMagic, 4) == 0;
-}
-
 void check_exr_headers(const std::string& path)
 {
     HeaderReader r(path);

@@ -13,9 +13,6 @@
 
 namespace pathcl {
 
-// Whether the file starts with OpenEXR's magic number (false when it cannot be read).
-bool is_exr_file(const std::string& path);
-
 // Throws pathcl::Error naming `path` and what is wrong unless every header of the EXR at
 // `path` is well formed in the ways above. Reads the headers only, never the pixels.
 void check_exr_headers(const std::string& path);
