@@ -6,6 +6,7 @@
 // ran; 77: no block landed there (another allocator or libc), nothing was shown.
 //
 //   tls_probe LIBRARY.so
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <cstdio>
@@ -29,8 +30,9 @@ int outcome = 0; // 1: the block landed 16 bytes into a page; -1: elsewhere
 
 void probe(Touch touch)
 {
-    // Chunks of the block's size class, one after the other, until the next one starts
-    // 16 bytes into a page; then the first touch allocates the block there.
+    // Chunks of the block's size class (64 bytes apart in AddressSanitizer's allocator),
+    // one after the other, until the next one starts 16 bytes into a page; then the first
+    // touch allocates the block there.
     for (int i = 0; i < 200 && kept_count < (1 << 14); ++i) {
         void* chunk = std::malloc(40);
         kept[kept_count++] = chunk;
