@@ -120,13 +120,14 @@ TEST(FilmAccumulator, EstimateIsTheSpreadOfTheBatchMeans)
 
 TEST(FilmAccumulator, SumsPastTheirRangeLeaveNoEstimateRatherThanZeroOrNan)
 {
-    // A radiance of 1e20: its square, 1e40, is past the range of the film's sums
-    // (ExactSum: 2e28), so the spread of the samples and of the batch means is lost.
-    // No estimate, not 0 (which would stop adaptive sampling at once) nor nan.
+    // A green radiance of 1e20: its square, 1e40, is past the range of the film's sums
+    // (ExactSum: 2e28), so the spread of the samples and of the batch means is lost in
+    // that channel. No estimate, not 0 (which would stop adaptive sampling at once), nor
+    // nan, nor the other channels' alone.
     FilmAccumulator acc(2, 4);
     FilmPixel huge{}, small{};
-    huge.sum = {4e20f, 4e20f, 4e20f, 4.0f};
-    huge.sum_sq = {INFINITY, INFINITY, INFINITY, 4.0f};
+    huge.sum = {4.0f, 4e20f, 4.0f, 4.0f};
+    huge.sum_sq = {4.0f, INFINITY, 4.0f, 4.0f};
     small.sum = {4.0f, 4.0f, 4.0f, 4.0f};
     small.sum_sq = {4.0f, 4.0f, 4.0f, 4.0f};
     FilmSum batch(2);

@@ -229,9 +229,14 @@ double FilmAccumulator::pixel_relmse_estimate(std::size_t i) const
 {
     if (state_.pixel_batches[i] < 2)
         return -1.0;
-    const double e =
-        std::max({pixel_channel_estimate(i, 0), pixel_channel_estimate(i, 1), pixel_channel_estimate(i, 2)});
-    return std::isfinite(e) ? e : -1.0;
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        const double e = pixel_channel_estimate(i, c);
+        if (!std::isfinite(e))
+            return -1.0; // a channel lost (std::max would drop its nan)
+        worst = std::max(worst, e);
+    }
+    return worst;
 }
 
 double FilmAccumulator::mean_of_pixel_terms(const std::function<bool(std::size_t, double*)>& pixel_terms) const
