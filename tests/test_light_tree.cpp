@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -456,6 +458,93 @@ TEST(LightTree, BoundsThatAreNotFiniteAreRefused)
     std::vector<LightBounds> lights = random_lights(4, rng);
     lights[2].hi.y = INFINITY;
     EXPECT_THROW(build_light_tree(lights), Error);
+}
+
+Light point_light(float x, float y, float z)
+{
+    Light l{};
+    l.type = LIGHT_POINT;
+    l.data.point.position = {x, y, z, 0.0f};
+    return l;
+}
+
+// The tree over light records (what a compiled scene has) is the one over the bounds
+// those records have: points, spheres, triangles and a directional light, in one list.
+TEST(LightTree, LightRecordsGiveTheTreeTheirBoundsGive)
+{
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> position(-10.0f, 10.0f), size(0.01f, 1.0f);
+    std::vector<Light> lights;
+    std::vector<double> power;
+    std::vector<LightBounds> bounds;
+    for (int i = 0; i < 300; ++i) {
+        const float x = position(rng), y = position(rng), z = position(rng), s = size(rng);
+        LightBounds b;
+        b.phi = static_cast<double>(s) * 3.0;
+        Light l{};
+        if (i % 3 == 0) {
+            l = point_light(x, y, z);
+            b.lo = b.hi = glm::dvec3(x, y, z);
+        } else if (i % 3 == 1) {
+            l.type = LIGHT_SPHERE;
+            l.data.sphere.centre = {x, y, z, 0.0f};
+            l.data.sphere.radius = s;
+            b.lo = glm::dvec3(x, y, z) - glm::dvec3(s);
+            b.hi = glm::dvec3(x, y, z) + glm::dvec3(s);
+        } else {
+            // In a plane of z, facing +z or -z by its winding: the normal needs no rounding.
+            l.type = LIGHT_TRIANGLE;
+            const float turn = i % 2 ? s : -s;
+            l.data.triangle.v0 = {x, y, z, 0.0f};
+            l.data.triangle.v1 = {x + s, y, z, 0.0f};
+            l.data.triangle.v2 = {x, y + turn, z, 0.0f};
+            b.lo = glm::dvec3(x, std::min(y, y + turn), z);
+            b.hi = glm::dvec3(x + s, std::max(y, y + turn), z);
+            b.cone = {{0.0, 0.0, turn > 0.0f ? 1.0 : -1.0}, 1.0, 0.0};
+        }
+        lights.push_back(l);
+        power.push_back(b.phi);
+        bounds.push_back(b);
+    }
+    Light sun{};
+    sun.type = LIGHT_DIRECTIONAL;
+    sun.data.directional.direction = {0.0f, -1.0f, 0.0f, 0.0f};
+    lights.insert(lights.begin() + 7, sun);
+    power.insert(power.begin() + 7, 40.0);
+    LightBounds infinite;
+    infinite.infinite = true;
+    infinite.phi = 40.0;
+    bounds.insert(bounds.begin() + 7, infinite);
+
+    const LightTree from_records = build_light_tree(lights, power), from_bounds = build_light_tree(bounds);
+    ASSERT_EQ(from_records.nodes.size(), from_bounds.nodes.size());
+    ASSERT_GT(from_records.nodes.size(), 1u);
+    EXPECT_EQ(std::memcmp(from_records.nodes.data(), from_bounds.nodes.data(),
+                          from_records.nodes.size() * sizeof(LightTreeNode)),
+              0);
+    EXPECT_EQ(from_records.trails, from_bounds.trails);
+    EXPECT_EQ(from_records.infinite, std::vector<pcl_int>{7});
+    EXPECT_EQ(from_records.infinite_pick, from_bounds.infinite_pick);
+    EXPECT_EQ(from_records.depth, from_bounds.depth);
+}
+
+// The light named is the light's own index, not its place among the lights with a
+// position (the directional light before it has none).
+TEST(LightTree, ALightRecordWhosePositionIsNotFiniteIsRefusedByItsIndex)
+{
+    std::vector<Light> lights;
+    for (int i = 0; i < 6; ++i)
+        lights.push_back(point_light(static_cast<float>(i), 0.0f, 1.0f));
+    lights[1].type = LIGHT_DIRECTIONAL;
+    lights[1].data.directional.direction = {0.0f, -1.0f, 0.0f, 0.0f};
+    lights[4].data.point.position.y = NAN;
+    const std::vector<double> power(lights.size(), 1.0);
+    try {
+        build_light_tree(lights, power);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "light 4 has bounds or power that are not finite");
+    }
 }
 
 // A floor of 10 x 10 with `lamps` emissive quads spaced `spacing` apart along x.

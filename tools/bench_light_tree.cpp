@@ -1,5 +1,5 @@
-// Build speed of the light tree (compile/light_tree.h) on the host: light_bounds and
-// build_light_tree, as `pathcl bench` times them, over a scene's lights or over N random
+// Build speed of the light tree (compile/light_tree.h) on the host: build_light_tree over
+// light records and their powers, as `pathcl bench` times it, over a scene's lights or over N random
 // lights of every kind with a position (emissive triangles, points, spots, rectangular
 // spots, spheres; a few directional ones stay beside the tree) spread over a 100 m cube.
 //
@@ -127,11 +127,11 @@ int main(int argc, char** argv)
             power = compile_lights(scene, leaf_order, compiled);
             lights = compiled.arrays.lights;
         }
-        LightTree tree = build_light_tree(light_bounds(lights, power)); // warm-up
+        LightTree tree = build_light_tree(lights, power); // warm-up
         std::vector<double> seconds;
         for (int i = 0; i < runs; ++i) {
             const auto start = std::chrono::steady_clock::now();
-            tree = build_light_tree(light_bounds(lights, power));
+            tree = build_light_tree(lights, power);
             seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }
         std::sort(seconds.begin(), seconds.end());

@@ -22,7 +22,7 @@ CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features, 
     out.arrays.light_distribution = build_light_distribution(power);
     if (features.has(FEATURE_LIGHT_TREE)) {
         const auto start = std::chrono::steady_clock::now();
-        LightTree tree = build_light_tree(light_bounds(out.arrays.lights, power));
+        LightTree tree = build_light_tree(out.arrays.lights, power);
         out.light_tree_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out.arrays.light_tree = std::move(tree.nodes);
         out.arrays.light_tree_cluster = std::move(tree.cluster);

@@ -8,8 +8,8 @@
 namespace pathcl {
 namespace {
 
-template <typename T>
-cl::Buffer upload(const ClDevice& dev, const std::vector<T>& data)
+template <typename T, typename Allocator>
+cl::Buffer upload(const ClDevice& dev, const std::vector<T, Allocator>& data)
 {
     // OpenCL has no empty buffer: an array the scene does not use is one zeroed element.
     static const T zero{};

@@ -12,14 +12,26 @@
 
 #include "cl/cl_runtime.h"
 #include "cl/kernel_args.h"
+#include "common/default_init_allocator.h"
 #include "data_arrays.h"
 #include "types.h"
 
 namespace pathcl {
 
+// The vector a scene array is kept in: std::vector, but for the light tree's nodes, which
+// the tree's build writes on every core, one that resizes without zeroing.
+template <class T>
+struct SceneVector {
+    using vector = std::vector<T>;
+};
+template <>
+struct SceneVector<LightTreeNode> {
+    using vector = UninitializedVector<LightTreeNode>;
+};
+
 // One vector per scene array; an empty vector is uploaded as one zeroed element.
 struct SceneArrays {
-#define PATHCL_SCENE_VECTOR(type, name) std::vector<type> name;
+#define PATHCL_SCENE_VECTOR(type, name) SceneVector<type>::vector name;
     PATHCL_SCENE_ARRAYS(PATHCL_SCENE_VECTOR)
 #undef PATHCL_SCENE_VECTOR
 };

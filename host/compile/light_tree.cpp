@@ -270,33 +270,50 @@ struct BinaryTree {
     }
 };
 
+bool finite(const LightBounds& b)
+{
+    return std::isfinite(b.phi) && std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.lo.z) &&
+           std::isfinite(b.hi.x) && std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
+}
+
 // Builds the binary tree. A subtree's nodes have their place before it is built (the
 // depth-first layout), so that subtrees built on different threads need no merging.
 class Builder {
 public:
-    // Over the lights of `order` (finite, every one of them), in that order.
-    Builder(const std::vector<LightBounds>& lights, const std::vector<std::uint32_t>& order,
-            std::vector<pcl_ulong>& trails)
+    // Over the lights of `order`, in that order: those of `lights` (a BoundsList or a
+    // LightList) that are not infinite. Throws pathcl::Error naming the first whose bounds
+    // or power are not finite.
+    template <class Lights>
+    Builder(const Lights& lights, const std::vector<std::uint32_t>& order, std::vector<pcl_ulong>& trails)
         : work_(order.size() > kParallelLights ? 0 : 1), trails_(trails)
     {
         const std::size_t n = order.size();
         records_.resize(n);
+        buckets_.resize(n);
         nodes_.resize(n - 1);
         tree_.bounds.resize(n - 1);
         // The centroids' box of each piece, merged in the order of the pieces: the box one
         // pass over all would make, down to which of +0 and -0 it holds.
         std::mutex mutex;
         std::vector<std::pair<std::size_t, Box>> boxes;
+        std::size_t not_finite = n;
         SharedWork::for_pieces(n, kShareLights, n > kParallelLights ? 0 : 1, [&](std::size_t begin, std::size_t end) {
             Box box;
+            std::size_t bad = n;
             for (std::size_t i = begin; i < end; ++i) {
-                records_[i] = LightRecord(lights[order[i]], order[i]);
+                const LightBounds b = lights.bounds(order[i]);
+                if (bad == n && !finite(b))
+                    bad = i;
+                records_[i] = LightRecord(b, order[i]);
                 const glm::dvec3 c = records_[i].centroid();
                 box.extend(c, c);
             }
             const std::lock_guard<std::mutex> lock(mutex);
             boxes.emplace_back(begin, box);
+            not_finite = std::min(not_finite, bad);
         });
+        if (not_finite < n)
+            throw Error("light " + std::to_string(order[not_finite]) + " has bounds or power that are not finite");
         std::sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& [begin, box] : boxes)
             centroids_.extend(box.lo, box.hi);
@@ -454,11 +471,7 @@ private:
             const Bins bins = bin(begin, end, axis, centroids, extent);
             const int best = best_bucket(bins.buckets);
             if (best >= 0) {
-                const double lo = centroids.lo[axis], scale = kBuckets / extent[axis];
-                const std::size_t mid = static_cast<std::size_t>(
-                    std::partition(first, last,
-                                   [&](const LightRecord& r) { return bucket_of(r, axis, lo, scale) <= best; }) -
-                    records_.begin());
+                const std::size_t mid = partition(begin, end, best);
                 if (mid != begin && mid != end) {
                     Split s{mid, {}, {}};
                     for (int k = 0; k < kBuckets; ++k) {
@@ -523,7 +536,7 @@ private:
     // is the one around its lights' mean axis that holds all of their cones: two passes of
     // dot products and square roots, where uniting the lights' cones one by one would take
     // their angles.
-    Bins bin(std::size_t begin, std::size_t end, int axis, const Box& centroids, const glm::dvec3& extent) const
+    Bins bin(std::size_t begin, std::size_t end, int axis, const Box& centroids, const glm::dvec3& extent)
     {
         Bins bins;
         std::array<Bounds, kBuckets>& buckets = bins.buckets;
@@ -534,6 +547,7 @@ private:
             const LightRecord& r = records_[i];
             const glm::dvec3 c = r.centroid();
             const int k = bucket_of(c[axis], lo, scale);
+            buckets_[i] = static_cast<std::uint8_t>(k);
             Bounds& b = buckets[k];
             b.box.extend(r.lo, r.hi);
             b.phi += r.phi;
@@ -553,7 +567,7 @@ private:
         }
         for (std::size_t i = begin; i < end; ++i) {
             const LightRecord& r = records_[i];
-            const int k = bucket_of(r, axis, lo, scale);
+            const int k = buckets_[i];
             if (cos_o[k] > -1.0)
                 cos_o[k] = std::min(cos_o[k], cos_of_widest(mean[k], r));
         }
@@ -572,9 +586,31 @@ private:
         return std::clamp(static_cast<int>((centroid - lo) * scale), 0, kBuckets - 1);
     }
 
-    static int bucket_of(const LightRecord& r, int axis, double lo, double scale)
+    // Moves the records of records_[begin, end) whose bucket (buckets_, as bin() left it)
+    // is at most `best` before the others; returns where the others start. The partition
+    // of std::partition (libstdc++'s, for random-access iterators): swaps from both ends,
+    // each record's bucket read where bin() wrote it, before the record moves.
+    std::size_t partition(std::size_t begin, std::size_t end, int best)
     {
-        return bucket_of(r.centroid()[axis], lo, scale);
+        std::size_t first = begin, last = end;
+        for (;;) {
+            for (;; ++first) {
+                if (first == last)
+                    return first;
+                if (buckets_[first] > best)
+                    break;
+            }
+            for (--last;; --last) {
+                if (first == last)
+                    return first;
+                if (buckets_[last] <= best)
+                    break;
+            }
+            const LightRecord moved = records_[first]; // (std::swap on records is a call, not inlined)
+            records_[first] = records_[last];
+            records_[last] = moved;
+            ++first;
+        }
     }
 
     SharedWork work_;
@@ -583,6 +619,9 @@ private:
     std::vector<LightRecord>& records_ = tree_.records; // in the order the partitions leave them
     std::vector<BinaryNode>& nodes_ = tree_.nodes;
     std::vector<pcl_ulong>& trails_;
+    // By record: its bucket in the last binning of a range that holds it, which the second
+    // binning pass and the partition read instead of working it out again.
+    std::vector<std::uint8_t> buckets_;
 };
 
 // x as a float no greater, and no smaller: a node's float bounds must hold every light
@@ -624,7 +663,7 @@ public:
     {
         lanes_.reserve(binary_.nodes.size() + 1); // at most one node for each binary one
         lay_out(root, 0);
-        tree_.nodes.resize(lanes_.size());
+        tree_.nodes.resize(lanes_.size()); // unwritten: write() fills each node on the core that writes it
         SharedWork::for_pieces(lanes_.size(), kShareNodes, lanes_.size() > kParallelNodes ? 0 : 1,
                                [this](std::size_t begin, std::size_t end) {
                                    for (std::size_t i = begin; i < end; ++i)
@@ -728,6 +767,7 @@ private:
 
     void write(std::size_t index)
     {
+        tree_.nodes[index] = LightTreeNode{}; // lanes past the last: no light, no power
         const Lanes& l = lanes_[index];
         for (std::size_t k = 0; k < l.count; ++k) {
             const std::uint32_t lane = l.binary[k];
@@ -820,28 +860,32 @@ LightBounds bounds_of(const Light& l, double power)
     return b;
 }
 
-// Lights are bounded on every core in lists longer than this.
-constexpr std::size_t kParallelBounds = 16384;
+// The lights a tree is built over, as bounds made beforehand.
+struct BoundsList {
+    const std::vector<LightBounds>& lights;
+    std::size_t size() const { return lights.size(); }
+    bool infinite(std::size_t i) const { return lights[i].infinite; }
+    double power(std::size_t i) const { return lights[i].phi; }
+    const LightBounds& bounds(std::size_t i) const { return lights[i]; }
+};
 
-} // namespace
+// The lights a tree is built over, as light records and their powers: each light's bounds
+// are made where its build record is, on every core, never all at once.
+struct LightList {
+    const std::vector<Light>& lights;
+    const std::vector<double>& powers;
+    std::size_t size() const { return lights.size(); }
+    bool infinite(std::size_t i) const // as bounds_of has it: every kind without a position
+    {
+        const pcl_int t = lights[i].type;
+        return t != LIGHT_TRIANGLE && t != LIGHT_SPHERE && t != LIGHT_POINT && t != LIGHT_SPOT && t != LIGHT_RECT_SPOT;
+    }
+    double power(std::size_t i) const { return powers[i]; }
+    LightBounds bounds(std::size_t i) const { return bounds_of(lights[i], powers[i]); }
+};
 
-LightCone cone_union(const LightCone& a, const LightCone& b)
-{
-    return unite(Cone(a), Cone(b)).light_cone();
-}
-
-std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const std::vector<double>& power)
-{
-    std::vector<LightBounds> out(lights.size());
-    SharedWork::for_pieces(lights.size(), kParallelBounds / 4, lights.size() > kParallelBounds ? 0 : 1,
-                           [&](std::size_t begin, std::size_t end) {
-                               for (std::size_t i = begin; i < end; ++i)
-                                   out[i] = bounds_of(lights[i], power[i]);
-                           });
-    return out;
-}
-
-LightTree build_light_tree(const std::vector<LightBounds>& lights)
+template <class Lights>
+LightTree build(const Lights& lights)
 {
     LightTree tree;
     if (lights.size() > std::size_t(LIGHT_TREE_MAX_LEAF_INDEX) + 1)
@@ -849,22 +893,17 @@ LightTree build_light_tree(const std::vector<LightBounds>& lights)
                     std::to_string(lights.size()));
     tree.trails.assign(lights.size(), 0);
     std::vector<std::uint32_t> order;
+    order.reserve(lights.size());
     double bounded_power = 0.0, infinite_power = 0.0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
-        const LightBounds& b = lights[i];
-        if (b.infinite) {
+        if (lights.infinite(i)) {
             tree.infinite.push_back(static_cast<pcl_int>(i));
             tree.trails[i] = kLightTreeInfiniteTrail;
-            infinite_power += b.phi;
-            continue;
+            infinite_power += lights.power(i);
+        } else {
+            order.push_back(static_cast<std::uint32_t>(i));
+            bounded_power += lights.power(i);
         }
-        const bool finite = std::isfinite(b.phi) && std::isfinite(b.lo.x) && std::isfinite(b.lo.y) &&
-                            std::isfinite(b.lo.z) && std::isfinite(b.hi.x) && std::isfinite(b.hi.y) &&
-                            std::isfinite(b.hi.z);
-        if (!finite)
-            throw Error("light " + std::to_string(i) + " has bounds or power that are not finite");
-        order.push_back(static_cast<std::uint32_t>(i));
-        bounded_power += b.phi;
     }
     if (!tree.infinite.empty())
         tree.infinite_pick =
@@ -877,6 +916,23 @@ LightTree build_light_tree(const std::vector<LightBounds>& lights)
         Collapser(builder.tree(), tree).collapse(root);
     }
     return tree;
+}
+
+} // namespace
+
+LightCone cone_union(const LightCone& a, const LightCone& b)
+{
+    return unite(Cone(a), Cone(b)).light_cone();
+}
+
+LightTree build_light_tree(const std::vector<LightBounds>& lights)
+{
+    return build(BoundsList{lights});
+}
+
+LightTree build_light_tree(const std::vector<Light>& lights, const std::vector<double>& power)
+{
+    return build(LightList{lights, power});
 }
 
 LightSampler resolve_light_sampler(const Scene& scene, const RenderOptions& options)

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "common/default_init_allocator.h"
 #include "render/render_options.h"
 #include "scene/scene.h"
 #include "types.h"
@@ -33,15 +34,11 @@ struct LightBounds {
     bool two_sided = false;
 };
 
-// Every light's bounds, in the order of the light records: from the records themselves
-// (what the kernels sample) and each light's power (compile_lights).
-std::vector<LightBounds> light_bounds(const std::vector<Light>& lights, const std::vector<double>& power);
-
 // The smallest cone (up to the method's slack) that holds both.
 LightCone cone_union(const LightCone& a, const LightCone& b);
 
 struct LightTree {
-    std::vector<LightTreeNode> nodes;           // depth-first, root first; empty when every light is infinite
+    UninitializedVector<LightTreeNode> nodes;   // depth-first, root first; empty when every light is infinite
     std::vector<pcl_ulong> trails;              // per light: bit k = the child taken at depth k (1: the second); all
                                                 // ones for an infinite light
     std::vector<LightTreeClusterLight> cluster; // the lights of the cluster leaves, each one's together
@@ -56,6 +53,11 @@ struct LightTree {
 // nearly one way may share a leaf (a cluster). Throws pathcl::Error if a light's bounds
 // are not finite, or if there are more lights than a leaf can index (2^28).
 LightTree build_light_tree(const std::vector<LightBounds>& lights);
+
+// The same over the light records themselves (what the kernels sample) and each light's
+// power (compile_lights): each light's bounds are made from its record as the build reads
+// it, on every core, rather than kept for every light first.
+LightTree build_light_tree(const std::vector<Light>& lights, const std::vector<double>& power);
 
 // The light sampler a render takes: the one the options ask for, or for Auto the light
 // tree where the scene has at least three lights with a position (emissive triangles,
