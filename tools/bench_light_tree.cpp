@@ -6,8 +6,9 @@
 //   bench_light_tree [SCENE.gltf] [--lights N] [--seed S] [--runs R] [--dump FILE]
 //
 // Prints min / median / max build time and million lights a second over R timed runs
-// (after one warm-up), and a hash of the tree (nodes, trails, depth): builds that must
-// agree bit for bit print the same hash. --dump writes those bytes to FILE.
+// (after one warm-up), and a hash of the tree (what the device reads of it, and its
+// depth): builds that must agree bit for bit print the same hash. --dump writes those
+// bytes to FILE.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -87,13 +88,20 @@ void random_lights(std::size_t n, std::uint64_t seed, std::vector<Light>& lights
     }
 }
 
-// The tree as bytes: its node array, the trails, the depth.
+// The tree as bytes: everything the device reads of it (its node array, the trails, the
+// clusters' lights, the infinite lights and how often one is picked) and its depth.
 std::string tree_bytes(const LightTree& tree)
 {
     std::string out;
-    out.append(reinterpret_cast<const char*>(tree.nodes.data()), tree.nodes.size() * sizeof(LightTreeNode));
-    out.append(reinterpret_cast<const char*>(tree.trails.data()), tree.trails.size() * sizeof(pcl_ulong));
-    out.append(reinterpret_cast<const char*>(&tree.depth), sizeof(tree.depth));
+    const auto append = [&out](const auto* data, std::size_t count) {
+        out.append(reinterpret_cast<const char*>(data), count * sizeof(*data));
+    };
+    append(tree.nodes.data(), tree.nodes.size());
+    append(tree.trails.data(), tree.trails.size());
+    append(tree.cluster.data(), tree.cluster.size());
+    append(tree.infinite.data(), tree.infinite.size());
+    append(&tree.infinite_pick, 1);
+    append(&tree.depth, 1);
     return out;
 }
 
@@ -110,7 +118,7 @@ int main(int argc, char** argv)
     app.add_option("--lights", count, "random lights to build over")->check(CLI::Range(1, 1 << 30));
     app.add_option("--seed", seed, "seed of the random lights");
     app.add_option("--runs", runs, "timed runs")->check(CLI::Range(1, 1000));
-    app.add_option("--dump", dump_path, "write the tree's bytes (nodes, trails, depth) to this file");
+    app.add_option("--dump", dump_path, "write the tree's bytes (as hashed) to this file");
     CLI11_PARSE(app, argc, argv);
     try {
         std::vector<Light> lights;
