@@ -419,6 +419,8 @@ private:
         const double cos_d = std::clamp(glm::dot(axis, r.axis), -1.0, 1.0);
         if (r.cos_o <= -1.0 || cos_d < -r.cos_o)
             return -1.0;
+        if (r.sin_o == 0.0) // a cone of one direction (a triangle's): sin_d * sin_o is +0, which changes nothing
+            return cos_d * r.cos_o;
         const double sin_d = std::sqrt(1.0 - cos_d * cos_d);
         return cos_d * r.cos_o - sin_d * r.sin_o;
     }
