@@ -301,7 +301,7 @@ public:
             Box box;
             std::size_t bad = n;
             for (std::size_t i = begin; i < end; ++i) {
-                const LightBounds b = lights.bounds(order[i]);
+                const LightBounds& b = lights.bounds(order[i]); // a BoundsList's own, a LightList's made here
                 if (bad == n && !finite(b))
                     bad = i;
                 records_[i] = LightRecord(b, order[i]);
@@ -812,10 +812,22 @@ private:
     std::vector<Lanes> lanes_; // by node
 };
 
+// Whether a light has bounds in the tree: every kind with a position. The others
+// (directional, environment) are infinite, picked beside it.
+bool has_position(const Light& l)
+{
+    return l.type == LIGHT_TRIANGLE || l.type == LIGHT_SPHERE || l.type == LIGHT_POINT || l.type == LIGHT_SPOT ||
+           l.type == LIGHT_RECT_SPOT;
+}
+
 LightBounds bounds_of(const Light& l, double power)
 {
     LightBounds b;
     b.phi = power;
+    if (!has_position(l)) {
+        b.infinite = true;
+        return b;
+    }
     switch (l.type) {
     case LIGHT_TRIANGLE: {
         const glm::dvec3 v0 = xyz(l.data.triangle.v0), v1 = xyz(l.data.triangle.v1), v2 = xyz(l.data.triangle.v2);
@@ -855,9 +867,6 @@ LightBounds bounds_of(const Light& l, double power)
                   std::cos(kConeSlack)};
         break;
     }
-    default: // LIGHT_DIRECTIONAL, LIGHT_ENVIRONMENT
-        b.infinite = true;
-        break;
     }
     return b;
 }
@@ -877,11 +886,7 @@ struct LightList {
     const std::vector<Light>& lights;
     const std::vector<double>& powers;
     std::size_t size() const { return lights.size(); }
-    bool infinite(std::size_t i) const // as bounds_of has it: every kind without a position
-    {
-        const pcl_int t = lights[i].type;
-        return t != LIGHT_TRIANGLE && t != LIGHT_SPHERE && t != LIGHT_POINT && t != LIGHT_SPOT && t != LIGHT_RECT_SPOT;
-    }
+    bool infinite(std::size_t i) const { return !has_position(lights[i]); }
     double power(std::size_t i) const { return powers[i]; }
     LightBounds bounds(std::size_t i) const { return bounds_of(lights[i], powers[i]); }
 };
