@@ -64,6 +64,10 @@ int main(int argc, char** argv)
         return 2;
     }
     const auto touch = reinterpret_cast<Touch>(dlsym(library, "tls_probe_touch"));
+    if (!touch) {
+        std::fprintf(stderr, "tls_probe: %s has no tls_probe_touch\n", argv[1]);
+        return 2;
+    }
     for (int attempt = 0; attempt < 20; ++attempt) {
         outcome = 0;
         std::thread thread(probe, touch);
