@@ -12,7 +12,8 @@ WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 B=$WORK/bundle
 python3 "$SRC/tools/portable_bundle.py" "$BUILD" "$B"
-outside=$(LD_LIBRARY_PATH="$B/lib" ldd "$B/bin/pathcl" "$B/bin/device_tests" "$B/lib/plplot-drivers/cairo.so" |
+outside=$(LD_LIBRARY_PATH="$B/lib" ldd "$B/bin/pathcl" "$B/bin/device_tests" "$B/bin/bench_light_tree" \
+    "$B/lib/plplot-drivers/cairo.so" |
     grep "=>" | grep -v "=> $B/lib/" |
     grep -v -E "^\s*(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt)\.so" || true)
 if [ -n "$outside" ]; then
