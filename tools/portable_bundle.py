@@ -15,7 +15,7 @@ over 300 MB (ffmpeg, GDAL, ICU, ...); pathcl reads and writes none of those form
 are replaced by stub libraries of the same names that define only the symbols their users
 import, as functions returning a pointer to zeros (their version strings read as "") and
 zeroed data: OpenImageIO loads, registers its plugins and never calls them. The bundle is
-about 60 MB. The plots (`converge`, `samples --spectrum`) draw with PLplot's cairo
+about 70 MB. The plots (`converge`, `samples --spectrum`) draw with PLplot's cairo
 driver, a plugin PLplot finds by PLPLOT_DRV_DIR, and read its colour maps and fonts from
 PLPLOT_LIB: the bundle carries both in OUT_DIR/lib/plplot-drivers and OUT_DIR/share/plplot,
 the driver's libraries (cairo, pango) among the others.
