@@ -78,11 +78,11 @@ grep -h "FAILED\|PASSED\|SKIPPED \]" "$out"/shard*.log | tee -a "$out/check.log"
 log "device tests ($shards shards)"
 
 other=${PATHCL_CHECK_OTHER:-}
-builds=$pathcl
-[ -n "$other" ] && builds="$other $pathcl $other $pathcl"
+builds=("$pathcl")
+[ -n "$other" ] && builds=("$other" "$pathcl" "$other" "$pathcl")
 for scene in cornell-box cornell-box-glass-mirror material-spheres textured; do
     for sampler in sobol independent; do
-        for build in $builds; do
+        for build in "${builds[@]}"; do
             log "bench $scene $sampler: $build"
             run timeout -k 5 120 "$build" bench "scenes/$scene.gltf" --width 1024 --height 1024 --spp 64 --runs 3 \
                 --sampler "$sampler"
@@ -90,7 +90,7 @@ for scene in cornell-box cornell-box-glass-mirror material-spheres textured; do
     done
 done
 for scene in cornell-box material-spheres; do
-    for build in $builds; do
+    for build in "${builds[@]}"; do
         log "stages $scene: $build"
         run timeout -k 5 120 "$build" bench --kernels --width 1024 --height 1024 "scenes/$scene.gltf"
     done
