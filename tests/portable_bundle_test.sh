@@ -3,7 +3,7 @@
 # GPU node): the bundle's binaries load no library from outside it but the system's C and
 # C++ runtimes, OpenImageIO's video and VDB libraries are stubs, and the bundled pathcl
 # renders and writes PNG and EXR through the bundled OpenImageIO, and plots through the
-# bundled PLplot driver.
+# bundled PLplot driver; its bench_light_tree runs.
 #   sh tests/portable_bundle_test.sh BUILD_DIR SOURCE_DIR
 set -eu
 BUILD=$1
@@ -35,6 +35,8 @@ LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" render "$SRC/scenes/textured.gltf" -o "
     --width 16 --height 16 --spp 1 --quiet
 LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" compare "$WORK/t.exr" "$WORK/t.exr" --bitwise >/dev/null
 test -s "$WORK/t.png"
+# The light tree's build benchmark, which device_check.sh runs from the bundle.
+LD_LIBRARY_PATH="$B/lib" "$B/bin/bench_light_tree" --lights 100 --runs 1 >/dev/null
 # A plot through the bundled PLplot driver and data.
 PLPLOT_DRV_DIR="$B/lib/plplot-drivers" PLPLOT_LIB="$B/share/plplot" LD_LIBRARY_PATH="$B/lib" "$B/bin/pathcl" samples \
     --sampler sobol --spp 16 --pixel 0,0 --dims 0,1 --spectrum -o "$WORK/plot.png"
