@@ -1,10 +1,10 @@
 #!/bin/sh
 # Bit-identity check for refactors that must not change a single pixel: renders every
 # committed scene (and the option variants that reach the rest of the kernel code:
-# samplers, strategies, bounce limits, thin lens, environments, single scattering, odd
-# image sizes, the ray log and the sample visualizer) with the pathcl built from BASE and
-# with the one built from the working tree, and compares the pixel data bit for bit
-# (`pathcl compare --bitwise`; ray logs byte for byte).
+# samplers, strategies, bounce limits, the light tree, thin lens, environments, single
+# scattering, odd image sizes, the ray log and the sample visualizer) with the pathcl
+# built from BASE and with the one built from the working tree, and compares the pixel
+# data bit for bit (`pathcl compare --bitwise`; ray logs byte for byte).
 #
 #   sh tools/bit_identity.sh [BASE]      BASE: a git revision (default HEAD)
 #
@@ -107,6 +107,10 @@ render material-spheres-single-scattering material-spheres --single-scattering -
 render sky-spheres-rotated sky-spheres --env-rotation 30 --env-strength 0.7
 render textured-long textured --max-bounces 12 --spp 16 --sampler multi-jittered
 render cornell-box-batches cornell-box --spp 24 --batch-spp 8 --seed 3
+# The light tree's code (the committed scenes take the power table by default).
+render cornell-box-features-tree cornell-box-features --light-sampler tree --max-bounces 6
+render cornell-box-sphere-tree cornell-box-sphere --light-sampler tree --strategy one-sample
+render sky-spheres-tree sky-spheres --light-sampler tree
 
 # The ray log of a thin-lens render.
 cases=$((cases + 1))

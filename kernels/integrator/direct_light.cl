@@ -9,9 +9,11 @@
 #include "integrator/path_state.cl"
 #include "integrator/shade_surface.cl"
 #include "kernel_data.cl"
+#include "light/light_record_warm.cl"
 #include "light/light_sample.cl"
 #include "sample/dimensions.h"
 #include "util/math.cl"
+#include "util/prefetch.cl"
 
 #ifdef PATHCL_HAS_LIGHTS
 
@@ -40,9 +42,11 @@ static inline LightChoice direct_light_choose(const KernelData* kd, const FrameP
     return light_choose(kd, frame, ref, n, sampler);
 }
 
-/* Adds the contribution of a sample of the chosen light to the path's radiance. */
-static inline void direct_light(const KernelData* kd, const FrameParams* frame, PathState* ps, const ShadingPoint* s,
-                                float3 wo, bool technique_light, const LightChoice* choice)
+/* Adds to *radiance the contribution of a sample of the chosen light, seen from the
+ * vertex s with throughput beta, inside `medium` (-1 where the scene has no absorption). */
+static inline void direct_light_add(const KernelData* kd, const FrameParams* frame, float3 beta, int medium,
+                                    const ShadingPoint* s, float3 wo, bool technique_light, const LightChoice* choice,
+                                    float3* radiance)
 {
     const SurfacePoint* sp = &s->sp;
     LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp));
@@ -71,12 +75,67 @@ static inline void direct_light(const KernelData* kd, const FrameParams* frame, 
 #ifdef PATHCL_HAS_VOLUME_ABSORPTION
     /* Absorbed on the way when the shadow ray runs inside a solid. */
     ls.radiance *=
-        medium_transmittance(kd, medium_after(ps->medium, s, ls.wi), ls.at_infinity ? INFINITY : length(shadow_dir));
+        medium_transmittance(kd, medium_after(medium, s, ls.wi), ls.at_infinity ? INFINITY : length(shadow_dir));
 #endif
     /* BSDF sampling never finds a delta light: its BSDF pdf is 0 there. */
     float bsdf_pdf = ls.delta ? 0.0f : e.pdf;
-    ps->radiance +=
-        ps->beta * e.f_cos * ls.radiance * light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
+    *radiance += beta * e.f_cos * ls.radiance * light_sample_factor(frame->strategy, technique_light, ls.pdf, bsdf_pdf);
 }
+
+#ifdef PATHCL_HAS_VOLUME_ABSORPTION
+#define PATH_MEDIUM(ps) ((ps)->medium)
+#else
+#define PATH_MEDIUM(ps) (-1)
+#endif
+
+/* Adds the contribution of a sample of the chosen light to the path's radiance. */
+static inline void direct_light(const KernelData* kd, const FrameParams* frame, PathState* ps, const ShadingPoint* s,
+                                float3 wo, bool technique_light, const LightChoice* choice)
+{
+    direct_light_add(kd, frame, ps->beta, PATH_MEDIUM(ps), s, wo, technique_light, choice, &ps->radiance);
+}
+
+/* With the light tree, which picks at the hit (it weighs the lights as seen from there),
+ * and where the compiler can prefetch, the megakernel takes the light's sample one
+ * traversal later: it picks, prefetches the picked light's record and traces the path's
+ * next ray, and only then samples the light and traces its shadow ray, so that the record,
+ * rarely cached among many lights, arrives during the traversal. The sample is added to
+ * the radiance right after that traversal, before anything the next vertex adds: the sum,
+ * and so the image, stay the same bit for bit. The power table's pick at the hit (where
+ * lobes are not all Lambertian) is not deferred: on the committed scenes, whose few
+ * records stay cached, copying the vertex cost more than it saved. */
+#if defined(PATHCL_LIGHT_TREE) && defined(PATHCL_PREFETCH)
+#define PATHCL_DEFERRED_LIGHT_SAMPLE
+
+/* A vertex's light sample waiting for the next traversal: what direct_light reads of the
+ * vertex and the path there. */
+typedef struct {
+    ShadingPoint s;
+    float3 wo, beta;
+    int medium;
+    bool technique_light;
+    LightChoice choice;
+} DeferredLightSample;
+
+static inline void direct_light_defer(const KernelData* kd, const PathState* ps, const ShadingPoint* s, float3 wo,
+                                      bool technique_light, const LightChoice* choice, DeferredLightSample* deferred)
+{
+    if (choice->light >= 0)
+        light_record_warm(kd, choice->light);
+    deferred->s = *s;
+    deferred->wo = wo;
+    deferred->beta = ps->beta;
+    deferred->medium = PATH_MEDIUM(ps);
+    deferred->technique_light = technique_light;
+    deferred->choice = *choice;
+}
+
+static inline void direct_light_deferred(const KernelData* kd, const FrameParams* frame,
+                                         const DeferredLightSample* deferred, PathState* ps)
+{
+    direct_light_add(kd, frame, deferred->beta, deferred->medium, &deferred->s, deferred->wo, deferred->technique_light,
+                     &deferred->choice, &ps->radiance);
+}
+#endif
 
 #endif /* PATHCL_HAS_LIGHTS */

@@ -31,6 +31,10 @@ PATHCL_KERNEL void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
         return;
 
     PathState ps = path_state_start(kd.rays[pixel]);
+#ifdef PATHCL_DEFERRED_LIGHT_SAMPLE
+    DeferredLightSample deferred;
+    bool light_sample_deferred = false;
+#endif
     const SamplerState path_sampler = frame_sampler(&frame, pixel, DIM_PATH_START);
     for (uint depth = 0;; ++depth) {
         /* The bounce's decisions start at its own sampler dimension, their numbers drawn
@@ -53,6 +57,11 @@ PATHCL_KERNEL void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 #endif
 #endif
         Hit hit = bvh_closest_hit(&kd, ps.origin, ps.dir, INFINITY);
+#ifdef PATHCL_DEFERRED_LIGHT_SAMPLE
+        if (light_sample_deferred)
+            direct_light_deferred(&kd, &frame, &deferred, &ps);
+        light_sample_deferred = false;
+#endif
 #ifdef PATHCL_HAS_SPHERE_LIGHTS
         if (shade_sphere_lights(&kd, &frame, &ps, hit.t))
             break;
@@ -82,12 +91,21 @@ PATHCL_KERNEL void trace_paths(PATHCL_KERNEL_PARAMS FrameParams frame)
 #if defined(PATHCL_FULL_BSDF) || defined(PATHCL_LIGHT_TREE)
             light_choice = direct_light_choose(&kd, &frame, dims, light_sample_origin(&s.sp), s.sp.ns, &sampler);
 #endif
+#ifdef PATHCL_DEFERRED_LIGHT_SAMPLE
+            direct_light_defer(&kd, &ps, &s, wo, technique_light, &light_choice, &deferred);
+            light_sample_deferred = true;
+#else
             direct_light(&kd, &frame, &ps, &s, wo, technique_light, &light_choice);
+#endif
         }
 #endif
         if (!surface_bounce(&ps, &s, wo, technique_light, dims, &sampler) ||
             !russian_roulette(&ps, depth, dims, &sampler))
             break;
     }
+#ifdef PATHCL_DEFERRED_LIGHT_SAMPLE
+    if (light_sample_deferred)
+        direct_light_deferred(&kd, &frame, &deferred, &ps);
+#endif
     film_add_sample(kd.film, kd.bad_samples, pixel, ps.radiance);
 }

@@ -1,16 +1,24 @@
 /* A light's record read ahead of its use (light_record_warm): by the megakernel's power
- * table, which picks before it traces, and by the light tree's descent, which reads the
- * records of a node's light lanes while it weighs them. */
+ * table, which picks before it traces, by the light tree's descent, which reads the
+ * records of a node's light lanes while it weighs them, and for the light sample the
+ * megakernel defers past the next traversal (integrator/direct_light.cl). */
 #include "kernel_data.cl"
+#include "util/prefetch.cl"
 
-/* Starts light `light`'s record on its way into the cache, by reading a word of each of
- * the two cache lines it spans, so that its sample, a few hundred instructions later, does
- * not wait on memory (a 96-byte record picked from a hundred thousand is rarely cached).
- * Volatile, so that the reads stay though nothing uses them: OpenCL's prefetch() is
- * allowed to do nothing, and PoCL's does. */
+/* Starts light `light`'s record on its way into the cache, both cache lines it spans, so
+ * that its sample, a few hundred instructions later, does not wait on memory (a 96-byte
+ * record picked from a hundred thousand is rarely cached): prefetched where the compiler
+ * can (util/prefetch.cl), else by reading a word of each line, volatile so that the reads
+ * stay though nothing uses them. */
 static inline void light_record_warm(const KernelData* kd, int light)
 {
+#ifdef PATHCL_PREFETCH
+    __global const char* bytes = (__global const char*)&kd->lights[light];
+    PATHCL_PREFETCH(bytes);
+    PATHCL_PREFETCH(bytes + sizeof(Light) - 1);
+#else
     volatile __global const int* words = (volatile __global const int*)&kd->lights[light];
     (void)words[0];
     (void)words[sizeof(Light) / sizeof(int) - 1];
+#endif
 }
