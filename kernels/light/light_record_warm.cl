@@ -5,20 +5,12 @@
 #include "kernel_data.cl"
 #include "util/prefetch.cl"
 
-/* Starts light `light`'s record on its way into the cache, both cache lines it spans, so
- * that its sample, a few hundred instructions later, does not wait on memory (a 96-byte
- * record picked from a hundred thousand is rarely cached): prefetched where the compiler
- * can (util/prefetch.cl), else by reading a word of each line, volatile so that the reads
- * stay though nothing uses them. */
+/* Starts light `light`'s record on its way into the cache, both cache lines it spans (its
+ * first and last words), so that its sample, a few hundred instructions later, does not
+ * wait on memory (a 96-byte record picked from a hundred thousand is rarely cached). */
 static inline void light_record_warm(const KernelData* kd, int light)
 {
-#ifdef PATHCL_PREFETCH
-    __global const char* bytes = (__global const char*)&kd->lights[light];
-    PATHCL_PREFETCH(bytes);
-    PATHCL_PREFETCH(bytes + sizeof(Light) - 1);
-#else
-    volatile __global const int* words = (volatile __global const int*)&kd->lights[light];
-    (void)words[0];
-    (void)words[sizeof(Light) / sizeof(int) - 1];
-#endif
+    __global const int* words = (__global const int*)&kd->lights[light];
+    cache_line_warm(words);
+    cache_line_warm(words + sizeof(Light) / sizeof(int) - 1);
 }

@@ -114,12 +114,7 @@ static inline float light_tree_weights(const KernelData* kd, int node, float3 re
  * does a light's record: a node's cluster leaves are weighed before one is picked among. */
 static inline void light_tree_cluster_warm(const KernelData* kd, int first)
 {
-#ifdef PATHCL_PREFETCH
-    PATHCL_PREFETCH(&kd->light_tree_cluster[first]);
-#else
-    volatile __global const int* words = (volatile __global const int*)&kd->light_tree_cluster[first];
-    (void)words[0];
-#endif
+    cache_line_warm((__global const int*)&kd->light_tree_cluster[first]);
 }
 
 /* Picks one of the size lights of the cluster at light_tree_cluster[first] by the number
