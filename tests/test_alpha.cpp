@@ -23,7 +23,7 @@
 #include "types.h"
 #include <tiny_gltf.h>
 
-namespace pathcl {
+namespace pathcl::test_alpha {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -284,4 +284,4 @@ TEST(Alpha, CutEmitterBehindASheetRendersTheSameByEveryStrategy)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_alpha

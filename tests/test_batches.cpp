@@ -8,7 +8,7 @@
 #include "render/film.h"
 #include "support/expect_error.h"
 
-namespace pathcl {
+namespace pathcl::test_batches {
 namespace {
 
 RenderOptions budget_options()
@@ -212,4 +212,4 @@ TEST(FilmAccumulator, BatchesSplitOverFilmsAndMergedGiveTheSameState)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_batches

@@ -13,7 +13,7 @@
 #include "support/device_fixture.h"
 #include "tables/layer_albedo.h"
 
-namespace pathcl {
+namespace pathcl::test_bsdf_delta {
 namespace {
 
 using test::Albedo;
@@ -133,4 +133,4 @@ TEST(BsdfRoughness, SweepConvergesToTheDeltaLobesWithoutNaN)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bsdf_delta

@@ -15,7 +15,7 @@
 #include "support/device_fixture.h"
 #include "tables/layer_albedo.h"
 
-namespace pathcl {
+namespace pathcl::test_bsdf_energy {
 namespace {
 
 using test::Albedo;
@@ -288,4 +288,4 @@ TEST(BsdfEnergy, AnisotropicWhitePlasticAndSheetReflectEverything)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bsdf_energy

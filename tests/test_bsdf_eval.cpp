@@ -19,7 +19,7 @@
 #include "support/bsdf_harness.h"
 #include "support/reference_bsdf.h"
 
-namespace pathcl {
+namespace pathcl::test_bsdf_eval {
 namespace {
 
 using test::conductor;
@@ -344,4 +344,4 @@ TEST(BsdfEval, TheIdealMirrorAndGlassParamsChooseTheGeneralLobesBitForBit)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bsdf_eval

@@ -14,7 +14,7 @@
 #include "support/chi_square.h"
 #include "support/reference_bsdf.h"
 
-namespace pathcl {
+namespace pathcl::test_bsdf_sampling {
 namespace {
 
 using test::conductor;
@@ -286,4 +286,4 @@ TEST(BsdfSampling, AnisotropyMatchesItsPdf)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bsdf_sampling

@@ -8,7 +8,7 @@
 #include "cl/cl_runtime.h"
 #include "compile/kernel_features.h"
 
-namespace pathcl {
+namespace pathcl::test_build_options {
 namespace {
 
 bool has(const std::string& options, const std::string& flag)
@@ -55,4 +55,4 @@ TEST(BuildOptions, IntelsCpuRuntimeAloneGetsTheKernelWidthHint)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_build_options

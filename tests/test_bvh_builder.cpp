@@ -11,7 +11,7 @@
 #include "bvh/bvh_builder.h"
 #include "support/random_meshes.h"
 
-namespace pathcl {
+namespace pathcl::test_bvh_builder {
 namespace {
 
 struct Ref {
@@ -322,4 +322,4 @@ TEST(BvhBuilder, BoxesBeyondFloatRangeNeverIndexOutsideTheBins)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bvh_builder

@@ -14,7 +14,7 @@
 #include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
 
-namespace pathcl {
+namespace pathcl::test_bvh_traversal {
 namespace {
 
 struct TraceResults {
@@ -257,4 +257,4 @@ TEST(BvhTraversal, ClosedSphereHasNoHolesFromInside)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_bvh_traversal

@@ -15,7 +15,7 @@
 #include "support/gltf_builder.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_camera {
 namespace {
 
 using test::GltfBuilder;
@@ -248,4 +248,4 @@ TEST(SamplerSpp, RoundingAsDocumented)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_camera

@@ -18,7 +18,7 @@
 #include "support/test_options.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_camera_render {
 namespace {
 
 // Image 64 x 32; the pinhole camera at the origin looks down -Z with tan(yfov / 2) =
@@ -265,4 +265,4 @@ TEST(OrthographicCamera, ImagesARectangleAtItsTrueSizeAtAnyDepth)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_camera_render

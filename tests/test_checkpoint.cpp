@@ -15,7 +15,7 @@
 #include "render/checkpoint.h"
 #include "support/expect_error.h"
 
-namespace pathcl {
+namespace pathcl::test_checkpoint {
 namespace {
 
 namespace fs = std::filesystem;
@@ -163,4 +163,4 @@ TEST(Checkpoint, CountersAndValuesTheRenderCannotHaveAreRefused)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_checkpoint

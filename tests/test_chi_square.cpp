@@ -13,7 +13,7 @@
 
 #include "support/chi_square.h"
 
-namespace pathcl::test {
+namespace pathcl::test::test_chi_square {
 namespace {
 
 constexpr double pi = std::numbers::pi;
@@ -181,4 +181,4 @@ TEST(ChiSquare, IncompleteGammaKnownValues)
 }
 
 } // namespace
-} // namespace pathcl::test
+} // namespace pathcl::test::test_chi_square

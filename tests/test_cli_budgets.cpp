@@ -19,7 +19,7 @@
 
 extern char** environ;
 
-namespace pathcl {
+namespace pathcl::test_cli_budgets {
 namespace {
 
 using test::ToolRun;
@@ -103,4 +103,4 @@ TEST_F(ToolRun, InfoNamesFeaturesAndCacheKey)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_budgets

@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace pathcl {
+namespace pathcl::test_cli_converge {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -97,4 +97,4 @@ TEST_F(ToolRun, InterruptedConvergeKeepsItsRows)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_converge

@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-namespace pathcl {
+namespace pathcl::test_cli_errors {
 namespace {
 
 namespace fs = std::filesystem;
@@ -477,4 +477,4 @@ TEST_F(Cli, PathclPlatformNarrowsTheDevicesOrIsAOneLineError)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_errors

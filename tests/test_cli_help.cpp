@@ -15,7 +15,7 @@
 
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_cli_help {
 namespace {
 
 const std::string kCornell = "'" + std::string(PATHCL_SOURCE_DIR) + "/scenes/cornell-box.gltf'";
@@ -269,4 +269,4 @@ TEST_F(CliHelp, AMisspeltCommandGetsTheNearestCommand)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_help

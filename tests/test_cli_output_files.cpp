@@ -19,7 +19,7 @@
 
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_cli_output_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -129,4 +129,4 @@ TEST_F(OutputFiles, TheNextWriteRemovesTheTemporaryFileOfAKilledOne)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_output_files

@@ -25,7 +25,7 @@
 
 extern char** environ;
 
-namespace pathcl {
+namespace pathcl::test_cli_resume {
 namespace {
 
 using test::expect_same_image;
@@ -173,4 +173,4 @@ TEST_F(ToolRun, AHandMadeCheckpointIsAOneLineErrorNamingIt)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_resume

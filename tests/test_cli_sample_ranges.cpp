@@ -13,7 +13,7 @@
 #include "support/same_image.h"
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_cli_sample_ranges {
 namespace {
 
 using test::expect_same_image;
@@ -129,4 +129,4 @@ TEST_F(ToolRun, WhatCannotBeMergedExactlyIsAOneLineError)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_cli_sample_ranges

@@ -10,7 +10,7 @@
 #include "light/light_pick.h"
 #include "support/compiled_scene.h"
 
-namespace pathcl {
+namespace pathcl::test_compile_scene {
 namespace {
 
 // Probability that light_pick() in kernels/light/light_pick.cl returns each light, from
@@ -118,4 +118,4 @@ TEST(CompileScene, EmissiveTrianglesBecomeLightsInLeafOrder)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_compile_scene

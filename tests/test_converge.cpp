@@ -11,7 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_converge {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -47,4 +47,4 @@ TEST(Converge, IndependentSlopeIsMinusOneAndSobolSteeper)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_converge

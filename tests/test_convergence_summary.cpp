@@ -10,7 +10,7 @@
 #include "converge/knobs.h"
 #include "support/expect_error.h"
 
-namespace pathcl {
+namespace pathcl::test_convergence_summary {
 namespace {
 
 TEST(Knobs, ProductVariesTheFirstKnobSlowest)
@@ -145,4 +145,4 @@ TEST(ConvergenceCsv, OneColumnPerKnobAndPerFigure)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_convergence_summary

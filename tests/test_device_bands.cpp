@@ -8,7 +8,7 @@
 
 #include "render/device_bands.h"
 
-namespace pathcl {
+namespace pathcl::test_device_bands {
 namespace {
 
 void expect_valid(const std::vector<std::uint32_t>& b, std::uint32_t height, std::size_t bands)
@@ -65,4 +65,4 @@ TEST(DeviceBands, AZeroWeightGetsAnEmptyBand)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_device_bands

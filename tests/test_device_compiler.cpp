@@ -14,7 +14,7 @@
 #include "cl/device_workarounds.h"
 #include "support/device_fixture.h"
 
-namespace pathcl {
+namespace pathcl::test_device_compiler {
 namespace {
 
 // test_float3_argument over n work-items: how many got a wrong value.
@@ -96,4 +96,4 @@ TEST(DeviceCompiler, ContractOffRoundsTheProductBeforeTheSubtraction)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_device_compiler

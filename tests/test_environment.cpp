@@ -21,7 +21,7 @@
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_environment {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -236,4 +236,4 @@ TEST(Environment, SceneExtrasUriMustStayInsideTheSceneDirectory)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_environment

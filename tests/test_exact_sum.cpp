@@ -10,7 +10,7 @@
 
 #include "render/exact_sum.h"
 
-namespace pathcl {
+namespace pathcl::test_exact_sum {
 namespace {
 
 std::vector<double> film_like_addends(std::uint32_t seed, std::size_t n)
@@ -154,4 +154,4 @@ TEST(ExactSum, WhatItCannotHoldPoisonsTheSumInAnyOrder)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_exact_sum

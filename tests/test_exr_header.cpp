@@ -18,7 +18,7 @@
 #include "image/exr_header.h"
 #include "image/image_io.h"
 
-namespace pathcl {
+namespace pathcl::test_exr_header {
 namespace {
 
 namespace fs = std::filesystem;
@@ -250,4 +250,4 @@ TEST_F(ExrHeader, RefusesAHeaderCutShort)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_exr_header

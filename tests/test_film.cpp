@@ -8,7 +8,7 @@
 #include "support/device_fixture.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_film {
 namespace {
 
 const cl::Program& program()
@@ -91,4 +91,4 @@ TEST(Film, NonFiniteSamplesAreCountedNotAdded)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_film

@@ -11,7 +11,7 @@
 #include "common/parallel.h"
 #include "render/film.h"
 
-namespace pathcl {
+namespace pathcl::test_film_on_every_core {
 namespace {
 
 TEST(ParallelChunks, EveryIndexIsVisitedOnce)
@@ -133,4 +133,4 @@ TEST(FilmOnEveryCore, ResultsDoNotDependOnTheThreadCount)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_film_on_every_core

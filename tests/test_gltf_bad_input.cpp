@@ -16,7 +16,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_bad_input {
 namespace {
 
 using test::GltfBuilder;
@@ -217,4 +217,4 @@ TEST(GltfBrokenData, SupportedRequiredExtensionIsAccepted)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_bad_input

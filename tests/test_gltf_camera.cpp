@@ -13,7 +13,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_camera {
 namespace {
 
 using test::GltfBuilder;
@@ -172,4 +172,4 @@ TEST(GltfCamera, WithoutCameraEveryBoundsCornerIsInsideTheVerticalFieldOfView)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_camera

@@ -25,7 +25,7 @@
 #include "support/gltf_fixtures.h"
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_draco {
 namespace {
 
 using test::contains;
@@ -294,4 +294,4 @@ TEST(GltfDraco, BrokenPrimitivesAreOneLineErrorsNamingThePrimitive)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_draco

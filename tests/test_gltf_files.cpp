@@ -17,7 +17,7 @@
 #include "support/expect_error.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -170,4 +170,4 @@ TEST_F(GltfFiles, ErrorMessagesAreOneLine)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_files

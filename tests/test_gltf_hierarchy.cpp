@@ -13,7 +13,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_hierarchy {
 namespace {
 
 using test::d3;
@@ -167,4 +167,4 @@ TEST(GltfHierarchy, OnlyTheDefaultSceneIsImported)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_hierarchy

@@ -21,7 +21,7 @@
 #include "scene/gltf_loader.h"
 #include "support/expect_error.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_hostile_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -391,4 +391,4 @@ TEST(GltfHostileFiles, ExtensionIndicesBeyondIntAreRefused)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_hostile_files

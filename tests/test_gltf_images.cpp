@@ -14,7 +14,7 @@
 #include "scene/gltf_images.h"
 #include "support/gltf_texture_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_images {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,4 +137,4 @@ TEST(GltfImages, GlbBufferViewImages)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_images

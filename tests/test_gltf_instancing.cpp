@@ -19,7 +19,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_instancing {
 namespace {
 
 using test::contains;
@@ -247,4 +247,4 @@ TEST(GltfInstancing, ASceneReachingBeyondFloatRangeIsRefused)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_instancing

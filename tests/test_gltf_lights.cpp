@@ -9,7 +9,7 @@
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_lights {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -106,4 +106,4 @@ TEST(GltfLights, BadLightDataIsAnErrorNamingTheFile)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_lights

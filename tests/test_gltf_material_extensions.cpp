@@ -19,7 +19,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_material_extensions {
 namespace {
 
 using test::contains;
@@ -456,4 +456,4 @@ TEST(GltfMaterialExtensions, MalformedVariantMappingsAreErrorsNamingThePrimitive
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_material_extensions

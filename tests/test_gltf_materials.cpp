@@ -14,7 +14,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_materials {
 namespace {
 
 using test::d3;
@@ -157,4 +157,4 @@ TEST(GltfWarnings, EachIgnoredFeatureIsOneWarningLine)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_materials

@@ -13,7 +13,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_morph_targets {
 namespace {
 
 using test::contains;
@@ -106,4 +106,4 @@ TEST(GltfMorphTargets, TargetsOfOtherAttributesAreOneWarningLine)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_morph_targets

@@ -16,7 +16,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_primitives {
 namespace {
 
 using test::d3;
@@ -437,4 +437,4 @@ TEST(GltfSparse, IndicesOutOfRangeOrNotIncreasingAreErrors)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_primitives

@@ -16,7 +16,7 @@
 #include "support/expect_error.h"
 #include "support/gltf_texture_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_texture_bad_input {
 namespace {
 
 namespace fs = std::filesystem;
@@ -159,4 +159,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<UriCase>& i) { return std::string(i.param.name); });
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_texture_bad_input

@@ -14,7 +14,7 @@
 #include "support/compiled_scene.h"
 #include "support/gltf_texture_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_texture_packing {
 namespace {
 
 using test::kNearest;
@@ -93,4 +93,4 @@ TEST(DeviceTextures, TexturedEmitterPowerFollowsTheTextureUnderIt)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_texture_packing

@@ -13,7 +13,7 @@
 #include "scene/gltf_textures.h"
 #include "support/gltf_texture_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_texture_slots {
 namespace {
 
 using test::kClamp;
@@ -155,4 +155,4 @@ TEST(GltfTextures, TextureTransformFollowsTheSpecificationsExample)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_texture_slots

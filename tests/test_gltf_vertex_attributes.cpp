@@ -16,7 +16,7 @@
 #include "support/gltf_builder.h"
 #include "support/gltf_texture_fixtures.h"
 
-namespace pathcl {
+namespace pathcl::test_gltf_vertex_attributes {
 namespace {
 
 using test::GltfBuilder;
@@ -181,4 +181,4 @@ TEST(GltfTangents, LoaderComputesTangentsWhenTheFileHasNone)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_gltf_vertex_attributes

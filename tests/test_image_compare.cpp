@@ -7,7 +7,7 @@
 
 #include "image/image_compare.h"
 
-namespace pathcl {
+namespace pathcl::test_image_compare {
 namespace {
 
 // An image whose pixel means are the average of spp normal samples around `truth`.
@@ -110,4 +110,4 @@ TEST(ImageCompare, BitwiseFindsEveryDifferenceDownToOneUlpAndTheSampleCount)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_image_compare

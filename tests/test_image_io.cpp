@@ -13,7 +13,7 @@
 #include "common/error.h"
 #include "image/image_io.h"
 
-namespace pathcl {
+namespace pathcl::test_image_io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -175,4 +175,4 @@ TEST(ImageIo, FilmicToneCurveRollsHighlightsOffWhereClipSaturates)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_image_io

@@ -15,7 +15,7 @@
 #include "common/error.h"
 #include "support/expect_error.h"
 
-namespace pathcl {
+namespace pathcl::test_kernel_assembly {
 namespace {
 
 std::size_t count(const std::string& text, const std::string& what)
@@ -114,4 +114,4 @@ TEST(KernelAssembly, EveryKernelFileOpensWithWhatItHolds)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_kernel_assembly

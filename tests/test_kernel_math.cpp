@@ -11,7 +11,7 @@
 
 #include "support/device_fixture.h"
 
-namespace pathcl {
+namespace pathcl::test_kernel_math {
 namespace {
 
 // The distance from `got` to the exact value in units of the float spacing at it.
@@ -73,4 +73,4 @@ TEST(KernelMath, Atan2IsWithinTwoAndAHalfUlpsEverywhere)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_kernel_math

@@ -12,7 +12,7 @@
 #include "features.h"
 #include "support/device_fixture.h"
 
-namespace pathcl {
+namespace pathcl::test_kernel_source {
 namespace {
 
 // Compiles `file` alone with the feature mask; returns the first error line, or "".
@@ -47,4 +47,4 @@ TEST(KernelSource, EveryKernelFileCompilesOnItsOwn)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_kernel_source

@@ -19,7 +19,7 @@
 #include "tables/layer_albedo.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_layer_albedo {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -448,4 +448,4 @@ TEST(LayerAlbedo, AnisotropicLayerTableMatchesTheIntegrationAndItsAverageItsInte
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_layer_albedo

@@ -12,7 +12,7 @@
 #include "support/chi_square.h"
 #include "support/device_fixture.h"
 
-namespace pathcl {
+namespace pathcl::test_light_sampling {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -344,4 +344,4 @@ TEST(LightSampling, TheStepJitterPlacesTheRescaledNumberInsideItsStep)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_light_sampling

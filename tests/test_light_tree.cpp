@@ -20,7 +20,7 @@
 #include "support/glowing_sphere.h"
 #include "support/gltf_builder.h"
 
-namespace pathcl {
+namespace pathcl::test_light_tree {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -583,4 +583,4 @@ TEST(LightTree, AutoTakesTheTreeWhereLightsAreManyAndSpread)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_light_tree

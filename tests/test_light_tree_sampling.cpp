@@ -22,7 +22,7 @@
 #include "support/device_fixture.h"
 #include "support/glowing_sphere.h"
 
-namespace pathcl {
+namespace pathcl::test_light_tree_sampling {
 namespace {
 
 constexpr std::size_t kLights = 300;
@@ -359,4 +359,4 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_light_tree_sampling

@@ -15,7 +15,7 @@
 #include "support/test_options.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_lights {
 namespace {
 
 constexpr double kRho = test::kFloorAlbedo;
@@ -209,4 +209,4 @@ TEST(DirectionalLight, AnOccluderOutOfViewCastsAShadow)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_lights

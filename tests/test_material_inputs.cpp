@@ -23,7 +23,7 @@
 #include "support/gltf_builder.h"
 #include "support/texture_kernels.h"
 
-namespace pathcl {
+namespace pathcl::test_material_inputs {
 namespace {
 
 using test::read_back;
@@ -393,4 +393,4 @@ TEST(MaterialInputs, NormalsBelowTheSurfaceAreBentBackAboveIt)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_material_inputs

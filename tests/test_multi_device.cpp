@@ -15,7 +15,7 @@
 #include "support/same_image.h"
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_multi_device {
 namespace {
 
 using test::expect_same_image;
@@ -86,4 +86,4 @@ TEST_F(MultiDevice, StoppedAndResumedOnTwoDevicesIsTheOneDeviceImage)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_multi_device

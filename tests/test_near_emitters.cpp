@@ -11,7 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "support/gltf_builder.h"
 
-namespace pathcl {
+namespace pathcl::test_near_emitters {
 namespace {
 
 // A 1 x 0.5 m emissive panel in the plane z = 0 (two triangles of 0.25 m^2: the kernels
@@ -73,4 +73,4 @@ TEST(NearEmitters, AutoSamplesBySolidAngleWhereASurfaceIsNearTheLitSide)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_near_emitters

@@ -21,7 +21,7 @@
 #include "support/expect_error.h"
 #include "support/same_image.h"
 
-namespace pathcl {
+namespace pathcl::test_partial_renders {
 namespace {
 
 namespace fs = std::filesystem;
@@ -160,4 +160,4 @@ TEST_F(PartialRenders, MetadataNoRenderCouldHaveWrittenIsRefused)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_partial_renders

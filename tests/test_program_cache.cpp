@@ -20,7 +20,7 @@
 #include "cl/program_cache.h"
 #include "support/scoped_env.h"
 
-namespace pathcl {
+namespace pathcl::test_program_cache {
 namespace {
 
 namespace fs = std::filesystem;
@@ -237,4 +237,4 @@ TEST_F(ProgramCache, FailedWriteLeavesNoPartialEntry)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_program_cache

@@ -15,7 +15,7 @@
 #include "types.h"
 #include <tiny_gltf.h>
 
-namespace pathcl {
+namespace pathcl::test_render {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -295,4 +295,4 @@ TEST(Render, SceneWithoutLightsIsBlack)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render

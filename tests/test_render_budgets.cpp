@@ -18,7 +18,7 @@
 #include "support/render_checks.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_render_budgets {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -221,4 +221,4 @@ TEST(FastMath, RendersTheReferenceImage)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_budgets

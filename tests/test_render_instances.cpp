@@ -21,7 +21,7 @@
 #include "support/test_options.h"
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_render_instances {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -142,4 +142,4 @@ TEST(RenderInstances, TenThousandDrawingsOfAMeshCostItsTrianglesOnce)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_instances

@@ -19,7 +19,7 @@
 #include "support/test_options.h"
 #include <tiny_gltf.h>
 
-namespace pathcl {
+namespace pathcl::test_render_layers {
 namespace {
 
 // A floor, an area light above it, a camera, and two spheres of materials `left` and
@@ -124,4 +124,4 @@ TEST(RenderAnisotropy, BrushedSpheresRenderTheSameByBsdfSamplingAndMis)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_layers

@@ -21,7 +21,7 @@
 #include "support/same_image.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_render_light_samplers {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -211,4 +211,4 @@ TEST(LightSamplers, TreeRendersTheManyLampRoomThePowerTableRenders)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_light_samplers

@@ -13,7 +13,7 @@
 #include "scene/gltf_loader.h"
 #include "support/scoped_env.h"
 
-namespace pathcl {
+namespace pathcl::test_render_program_cache {
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,4 +79,4 @@ TEST_F(RenderProgramCache, ARendererThatIsNotAskedStoresWhenDestroyed)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_program_cache

@@ -26,7 +26,7 @@
 #include "support/tool_run.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_render_samplers {
 namespace {
 
 namespace fs = std::filesystem;
@@ -191,4 +191,4 @@ TEST_F(ToolRun, RayLogRaysStartOnTheLensAndMeetOnThePlaneOfFocus)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_samplers

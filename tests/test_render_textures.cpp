@@ -21,7 +21,7 @@
 #include "types.h"
 #include <tiny_gltf.h>
 
-namespace pathcl {
+namespace pathcl::test_render_textures {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -288,4 +288,4 @@ TEST(RenderTextures, NormalMapsIntoTheSurfaceNeitherGoBlackNorNaN)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_textures

@@ -13,7 +13,7 @@
 #include "support/gltf_builder.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_render_triangle_sampling {
 namespace {
 
 // A floor and a back wall; a panel facing down 4 cm above the floor and 3 cm from the
@@ -84,4 +84,4 @@ TEST(TriangleSampling, SolidAnglePdfOffAtTheHitsFailsTheComparison)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_triangle_sampling

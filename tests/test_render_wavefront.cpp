@@ -17,7 +17,7 @@
 #include "support/test_options.h"
 #include "support/tool_run.h"
 
-namespace pathcl {
+namespace pathcl::test_render_wavefront {
 namespace {
 
 const std::string kSource = PATHCL_SOURCE_DIR;
@@ -125,4 +125,4 @@ TEST_F(WavefrontTool, AGlossySceneIsAOneLineError)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_render_wavefront

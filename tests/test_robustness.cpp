@@ -21,7 +21,7 @@
 #include "support/test_options.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 // Renders scene at size x size pixels with spp samples and max_bounces, with the kernel
@@ -129,9 +129,9 @@ TEST(Robustness, SliversAndRepeatedVerticesGiveNoNaNAndNoSpuriousHit)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 // Mean and standard error of the green channel over the central 4x4 pixels of a 16x16
@@ -197,9 +197,9 @@ TEST(Robustness, GlassSphereAndSlabInAWhiteFurnaceAreInvisible)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 // A unit sphere (stacks x slices, smooth vertex normals) lit by a directional light at a
@@ -251,9 +251,9 @@ TEST(Robustness, ShadowTerminatorOfALowPolySphereMatchesAFineOne)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
@@ -307,9 +307,9 @@ TEST(Robustness, ClosedFurnaceWithGlassAndMetalsInsideStaysUniform)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
@@ -333,9 +333,9 @@ TEST(Robustness, AnOccluderRightNextToADistantPointLightCastsItsShadow)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness
 
-namespace pathcl {
+namespace pathcl::test_robustness {
 namespace {
 
 // Two concentric Lambertian spheres of radius 1 and 1 + 1e-4 (the same 12 x 24 UV
@@ -406,4 +406,4 @@ TEST(Robustness, NoLightLeaksAcrossA1em4GapBetweenConcentricSpheres)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_robustness

@@ -19,7 +19,7 @@
 #include "support/device_fixture.h"
 #include "support/sampler_points.h"
 
-namespace pathcl {
+namespace pathcl::test_sampler_convergence {
 namespace {
 
 using test::pixel_range;
@@ -173,4 +173,4 @@ TEST(Samplers, ConvergenceOrderOfSmooth2DIntegrals)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_sampler_convergence

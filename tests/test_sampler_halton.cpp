@@ -22,7 +22,7 @@
 #include "support/sampler_points.h"
 #include "types.h"
 
-namespace pathcl {
+namespace pathcl::test_sampler_halton {
 namespace {
 
 using test::one_per_cell;
@@ -264,4 +264,4 @@ TEST(Samplers, SobolDimensionOneMatchesItsGeneratorMatrix)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_sampler_halton

@@ -18,7 +18,7 @@
 #include "support/device_fixture.h"
 #include "support/sampler_points.h"
 
-namespace pathcl {
+namespace pathcl::test_sampler_strata {
 namespace {
 
 using test::one_per_cell;
@@ -213,4 +213,4 @@ TEST(Samplers, ABouncesNumbersDrawnAtOnceAreThoseDrawnOneByOne)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_sampler_strata

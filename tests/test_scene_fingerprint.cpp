@@ -11,7 +11,7 @@
 #include "support/field_count.h"
 #include "support/gltf_builder.h"
 
-namespace pathcl {
+namespace pathcl::test_scene_fingerprint {
 namespace {
 
 Scene sphere_scene()
@@ -337,4 +337,4 @@ TEST(SceneFingerprint, EveryFieldThatARenderReadsIsPartOfIt)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_scene_fingerprint

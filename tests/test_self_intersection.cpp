@@ -14,7 +14,7 @@
 #include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
 
-namespace pathcl {
+namespace pathcl::test_self_intersection {
 namespace {
 
 struct Counts {
@@ -85,4 +85,4 @@ TEST(SelfIntersection, TrianglesFrom1e6To1e6OneMillionRays)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_self_intersection

@@ -12,7 +12,7 @@
 
 #include "common/shared_work.h"
 
-namespace pathcl {
+namespace pathcl::test_shared_work {
 namespace {
 
 TEST(SharedWork, ForPiecesVisitsEveryElementOnce)
@@ -78,4 +78,4 @@ TEST(SharedWork, AnExceptionInASharedTaskReachesTheCaller)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_shared_work

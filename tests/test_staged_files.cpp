@@ -9,7 +9,7 @@
 
 #include "common/staged_files.h"
 
-namespace pathcl {
+namespace pathcl::test_staged_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,4 +66,4 @@ TEST(StagedFiles, RemoveOnSignalRemovesEveryStagedFileAndNothingCommitted)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_staged_files

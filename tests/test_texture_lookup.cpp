@@ -19,7 +19,7 @@
 #include "support/device_fixture.h"
 #include "support/texture_kernels.h"
 
-namespace pathcl {
+namespace pathcl::test_texture_lookup {
 namespace {
 
 using test::read_back;
@@ -316,4 +316,4 @@ TEST(TextureLookup, TextureTransformIsAppliedBeforeWrapping)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_texture_lookup

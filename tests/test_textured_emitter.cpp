@@ -15,7 +15,7 @@
 #include "support/gltf_texture_fixtures.h"
 #include "support/texture_kernels.h"
 
-namespace pathcl {
+namespace pathcl::test_textured_emitter {
 namespace {
 
 using test::kClamp;
@@ -74,4 +74,4 @@ TEST(TexturedEmitter, LightSamplesCarryTheTexelAtTheirPoint)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_textured_emitter

@@ -12,7 +12,7 @@
 #include "support/leaf_triangles.h"
 #include "support/random_meshes.h"
 
-namespace pathcl {
+namespace pathcl::test_triangle_blocks {
 namespace {
 
 TEST(TriangleBlocks, EveryLeafNamesABlockOfItsTrianglesInOrder)
@@ -88,4 +88,4 @@ TEST(TriangleBlocks, ALeafPastTheTrianglesIsRefused)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_triangle_blocks

@@ -16,7 +16,7 @@
 #include "support/render_checks.h"
 #include "support/test_options.h"
 
-namespace pathcl {
+namespace pathcl::test_unlit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -97,4 +97,4 @@ TEST(Unlit, SeenInAMirrorButLightsNothing)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_unlit

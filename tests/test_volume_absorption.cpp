@@ -22,7 +22,7 @@
 #include "types.h"
 #include <tiny_gltf.h>
 
-namespace pathcl {
+namespace pathcl::test_volume_absorption {
 namespace {
 
 constexpr int kU16 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
@@ -197,4 +197,4 @@ TEST(VolumeAbsorption, BadAttenuationIsAOneLineError)
 }
 
 } // namespace
-} // namespace pathcl
+} // namespace pathcl::test_volume_absorption
