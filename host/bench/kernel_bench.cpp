@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "cl/cl_runtime.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "compile/compile_scene.h"
 #include "compile/device_arrays.h"
@@ -18,11 +19,6 @@ namespace pathcl {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 KernelFigure figure(const std::string& stage, const std::string& unit, std::vector<double> values)
 {

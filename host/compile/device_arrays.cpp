@@ -1,9 +1,9 @@
 #include "compile/device_arrays.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "common/error.h"
+#include "common/memory_limits.h"
 
 namespace pathcl {
 namespace {
@@ -24,13 +24,6 @@ template <typename T>
 cl::Buffer allocate(const ClDevice& dev, std::size_t count)
 {
     return cl::Buffer(dev.context, CL_MEM_READ_WRITE, std::max<std::size_t>(1, count) * sizeof(T));
-}
-
-std::string gib(double bytes)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-    return text;
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cl/cl_runtime.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "compile/compile_scene.h"
 #include "compile/device_arrays.h"
@@ -81,11 +82,6 @@ struct DeviceRender {
 constexpr std::uint32_t kMinAdaptiveBatches = 4;
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t)
-{
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 void check_options(const RenderOptions& opt)
 {

@@ -1,0 +1,14 @@
+// Seconds of the steady clock since a time point: how the renderer and the kernel
+// benchmarks time what they run.
+#pragma once
+
+#include <chrono>
+
+namespace pathcl {
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace pathcl
