@@ -21,6 +21,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "common/fnv1a.h"
 #include "compile/compile_scene.h"
@@ -140,7 +141,7 @@ int main(int argc, char** argv)
         for (int i = 0; i < runs; ++i) {
             const auto start = std::chrono::steady_clock::now();
             tree = build_light_tree(lights, power);
-            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            seconds.push_back(seconds_since(start));
         }
         std::sort(seconds.begin(), seconds.end());
         const double n = static_cast<double>(lights.size());

@@ -25,6 +25,7 @@
 
 #include "cl/cl_runtime.h"
 #include "cl/kernel_args.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "compile/compile_scene.h"
 #include "scene/gltf_loader.h"
@@ -86,7 +87,7 @@ Stats time_runs(int runs, std::size_t rays, F f)
     for (int i = 0; i < runs; ++i) {
         auto t0 = std::chrono::steady_clock::now();
         f();
-        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        double s = seconds_since(t0);
         rate.push_back(static_cast<double>(rays) / s / 1e6);
     }
     std::sort(rate.begin(), rate.end());

@@ -57,7 +57,7 @@ std::vector<KernelFigure> bench_kernels(const Scene& scene, const RenderOptions&
     try {
         auto start = std::chrono::steady_clock::now();
         cold.program.getInfo<CL_PROGRAM_BINARIES>();
-        fetch_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        fetch_seconds = seconds_since(start);
     } catch (const cl::Error&) {
         fetch_seconds = -1.0; // the driver hands out no binary
     }

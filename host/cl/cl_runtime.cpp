@@ -11,6 +11,7 @@
 
 #include "cl/device_workarounds.h"
 #include "cl/program_cache.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 
 namespace pathcl {
@@ -235,7 +236,7 @@ ProgramBuild build_program(const ClDevice& dev, const std::string& options, cons
         if (store == CacheStore::AtBuild)
             store_pending_program(result);
     }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = seconds_since(start);
     return result;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_line.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "common/file_identity.h"
 #include "common/staged_files.h"
@@ -289,10 +290,7 @@ int run_render(RenderRequest rq)
         run.resume = resume ? &*resume : nullptr;
         auto last_checkpoint = std::chrono::steady_clock::now();
         if (!rq.checkpoint.empty()) {
-            run.checkpoint_due = [&]() {
-                return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count() >=
-                       rq.checkpoint_every;
-            };
+            run.checkpoint_due = [&]() { return seconds_since(last_checkpoint) >= rq.checkpoint_every; };
             run.checkpoint = [&](const RenderCheckpoint& cp) {
                 write_checkpoint(rq.checkpoint, cp);
                 last_checkpoint = std::chrono::steady_clock::now();

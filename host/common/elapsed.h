@@ -1,5 +1,5 @@
-// Seconds of the steady clock since a time point: how the renderer and the kernel
-// benchmarks time what they run.
+// Seconds of the steady clock since a time point: how pathcl, its benchmarks and its
+// tools time what they run.
 #pragma once
 
 #include <chrono>

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "bvh/triangle_blocks.h"
+#include "common/elapsed.h"
 #include "common/error.h"
 #include "compile/compile_scene.h"
 #include "scene/alpha_cutouts.h"
@@ -170,7 +171,7 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         out.bvh = build_bvh(triangle_boxes(scene, 0, n));
         a.nodes = std::move(out.bvh.nodes);
     }
-    out.bvh_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.bvh_build_seconds = seconds_since(start);
     const std::vector<std::uint32_t>& order = out.bvh.triangle_order;
 
     a.triangles.resize(n);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "common/elapsed.h"
 #include "compile/light_distribution.h"
 #include "compile/light_tree.h"
 
@@ -23,7 +24,7 @@ CompiledScene compile_scene(const Scene& scene, const KernelFeatures& features, 
     if (features.has(FEATURE_LIGHT_TREE)) {
         const auto start = std::chrono::steady_clock::now();
         LightTree tree = build_light_tree(out.arrays.lights, power);
-        out.light_tree_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        out.light_tree_build_seconds = seconds_since(start);
         out.arrays.light_tree = std::move(tree.nodes);
         out.arrays.light_tree_cluster = std::move(tree.cluster);
         out.arrays.light_tree_trail = std::move(tree.trails);
