@@ -301,18 +301,22 @@ typedef struct {
  * from the root; at each node the lane whose bits it starts with leads on. */
 #define LIGHT_TREE_CODE_BITS(code) ((code)&0xff)
 #define LIGHT_TREE_CODE_LENGTH(code) ((code) >> 8)
-/* A leaf lane's child is -1 - leaf. A leaf of size 1 is a light; a larger one, a cluster:
- * that many neighbouring lights of one surface from light_tree_cluster[index], picked
- * among in proportion to their power, so that the descent stops a level above them. */
+/* A leaf lane's child is -1 - leaf: a light (its index), or with LIGHT_TREE_CLUSTER set a
+ * cluster: up to LIGHT_TREE_CLUSTER_MAX neighbouring lights of one surface that face
+ * nearly one way, at light_tree_cluster[index] (its header) and after, picked among in
+ * proportion to their power, so that the descent stops above them. */
+#define LIGHT_TREE_CLUSTER 0x10000000
 #define LIGHT_TREE_LEAF_INDEX(leaf) ((leaf)&0x0fffffff)
-#define LIGHT_TREE_LEAF_SIZE(leaf) (((leaf) >> 28) + 1)
-#define LIGHT_TREE_LEAF(index, size) ((index) | (((size)-1) << 28))
 #define LIGHT_TREE_MAX_LEAF_INDEX 0x0fffffff
+#define LIGHT_TREE_CLUSTER_MAX 256
 
-/* A light of a cluster leaf: its index and power (luminance, W). 8 bytes. */
+/* An entry of light_tree_cluster. A cluster is a header (light: the number of its lights;
+ * phi_sum: their power) and then its lights in the order of their indices, each with the
+ * sum of the powers (luminance, W) up to and including its own: a pick by power and a
+ * light's pmf are both binary searches. 8 bytes. */
 typedef struct {
     pcl_int light;
-    pcl_float phi;
+    pcl_float phi_sum;
 } LightTreeClusterLight;
 
 /* Camera projections */

@@ -143,13 +143,13 @@ bool sphere_holds(const Lane& a, const glm::dvec3& p)
 // The lights of a leaf lane's child (-1 - leaf): one light, or a cluster's.
 std::vector<std::size_t> leaf_lights(const LightTree& tree, pcl_int child)
 {
-    const pcl_int leaf = -1 - child, size = LIGHT_TREE_LEAF_SIZE(leaf);
-    if (size == 1)
+    const pcl_int leaf = -1 - child;
+    if (!(leaf & LIGHT_TREE_CLUSTER))
         return {static_cast<std::size_t>(leaf)};
+    const auto header = static_cast<std::size_t>(LIGHT_TREE_LEAF_INDEX(leaf));
     std::vector<std::size_t> lights;
-    for (pcl_int i = 0; i < size; ++i)
-        lights.push_back(
-            static_cast<std::size_t>(tree.cluster.at(static_cast<std::size_t>(LIGHT_TREE_LEAF_INDEX(leaf) + i)).light));
+    for (pcl_int i = 1; i <= tree.cluster.at(header).light; ++i)
+        lights.push_back(static_cast<std::size_t>(tree.cluster.at(header + static_cast<std::size_t>(i)).light));
     return lights;
 }
 
@@ -370,6 +370,7 @@ TEST(LightTree, ANodeOverManyLightsSplitsALaneOverAFewOnlyWhereItsHalvesLieApart
 struct ClusterLane {
     std::size_t node;
     int lane;
+    pcl_int header; // in tree.cluster
     std::vector<std::size_t> lights;
 };
 
@@ -379,39 +380,50 @@ std::vector<ClusterLane> cluster_lanes(const LightTree& tree)
     for (std::size_t i = 0; i < tree.nodes.size(); ++i)
         for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
             const pcl_int child = tree.nodes[i].child.s[k];
-            if (tree.nodes[i].phi.s[k] > 0.0f && child < 0 && LIGHT_TREE_LEAF_SIZE(-1 - child) > 1)
-                out.push_back({i, k, leaf_lights(tree, child)});
+            if (tree.nodes[i].phi.s[k] > 0.0f && child < 0 && ((-1 - child) & LIGHT_TREE_CLUSTER))
+                out.push_back({i, k, LIGHT_TREE_LEAF_INDEX(-1 - child), leaf_lights(tree, child)});
         }
     return out;
 }
 
-// In a node over many lights, a lane over a few neighbouring triangles of one surface that
-// face nearly one way ends the descent: a cluster, whose lights the kernel picks among by
-// power (their powers are stored with them). Lamps apart, or triangles that face
-// different ways, stay lanes of their own.
+// In a node over many lights, a lane over neighbouring triangles of one surface that face
+// nearly one way ends the descent: a cluster of up to LIGHT_TREE_CLUSTER_MAX, whose lights
+// the kernel picks among by power (stored with them as running sums, in the order of the
+// lights' indices). Lamps apart, or triangles that face different ways, stay lanes of
+// their own.
 TEST(LightTree, NeighbouringTrianglesFacingOneWayEndTheDescentAsAClusterPickedByPower)
 {
-    const test::GlowingSphere sphere = test::glowing_sphere(40, 40, {1.0, 2.0, 3.0}, 1.0, 0.6, 0.45);
-    const LightTree tree = build_light_tree(sphere.lights);
-    const std::vector<ClusterLane> clusters = cluster_lanes(tree);
-    std::size_t clustered = 0;
-    for (const ClusterLane& c : clusters) {
-        const Lane lane = lane_of(tree.nodes[c.node], c.lane);
-        EXPECT_GE(c.lights.size(), 4u) << "node " << c.node << " lane " << c.lane; // two halves of two or more
-        EXPECT_LE(c.lights.size(), std::size_t(LIGHT_TREE_WIDTH));
-        EXPECT_GE(lane.cone.cos_o, std::cos(0.25) - 1e-6) << "node " << c.node << " lane " << c.lane;
-        double phi = 0.0;
-        for (std::size_t l : c.lights) {
-            phi += sphere.lights[l].phi;
-            EXPECT_GE(glm::dot(lane.cone.axis, sphere.normal[l]), lane.cone.cos_o - 1e-6) << "light " << l;
+    // 40 x 40: neighbouring quads 4.5 and 9 degrees apart; 120 x 120, 1.5 and 3 degrees.
+    for (const int stacks : {40, 120}) {
+        const test::GlowingSphere sphere = test::glowing_sphere(stacks, stacks, {1.0, 2.0, 3.0}, 1.0, 0.6, 0.45);
+        const LightTree tree = build_light_tree(sphere.lights);
+        const std::vector<ClusterLane> clusters = cluster_lanes(tree);
+        std::size_t clustered = 0, largest = 0;
+        for (const ClusterLane& c : clusters) {
+            const Lane lane = lane_of(tree.nodes[c.node], c.lane);
+            EXPECT_GE(c.lights.size(), 4u) << "node " << c.node << " lane " << c.lane; // two halves of two or more
+            EXPECT_LE(c.lights.size(), std::size_t(LIGHT_TREE_CLUSTER_MAX));
+            EXPECT_GE(lane.cone.cos_o, std::cos(0.25) - 1e-6) << "node " << c.node << " lane " << c.lane;
+            double phi = 0.0;
+            for (std::size_t i = 0; i < c.lights.size(); ++i) {
+                const std::size_t l = c.lights[i];
+                EXPECT_TRUE(i == 0 || c.lights[i - 1] < l) << "cluster " << c.header << ": lights out of order";
+                phi += sphere.lights[l].phi;
+                EXPECT_EQ(tree.cluster.at(static_cast<std::size_t>(c.header) + 1 + i).phi_sum, static_cast<float>(phi))
+                    << "cluster " << c.header << ", light " << l << ": not the running sum of power";
+                EXPECT_GE(glm::dot(lane.cone.axis, sphere.normal[l]), lane.cone.cos_o - 1e-6) << "light " << l;
+            }
+            EXPECT_EQ(tree.cluster.at(static_cast<std::size_t>(c.header)).phi_sum, static_cast<float>(phi));
+            EXPECT_NEAR(lane.phi, phi, 1e-5 * phi) << "node " << c.node << " lane " << c.lane;
+            clustered += c.lights.size();
+            largest = std::max(largest, c.lights.size());
         }
-        EXPECT_NEAR(lane.phi, phi, 1e-5 * phi) << "node " << c.node << " lane " << c.lane;
-        clustered += c.lights.size();
+        EXPECT_EQ(clustered + clusters.size(), tree.cluster.size()) << "a header and the lights of each cluster";
+        EXPECT_GT(clustered, sphere.lights.size() / 2) << "most of a fine sphere's triangles end in clusters";
+        if (stacks == 120) {
+            EXPECT_GT(largest, std::size_t(LIGHT_TREE_WIDTH)) << "clusters are not capped at a node's width";
+        }
     }
-    for (const LightTreeClusterLight& l : tree.cluster)
-        EXPECT_EQ(l.phi, static_cast<float>(sphere.lights.at(static_cast<std::size_t>(l.light)).phi));
-    EXPECT_EQ(clustered, tree.cluster.size());
-    EXPECT_GT(clustered, sphere.lights.size() / 2) << "most of a fine sphere's triangles end in clusters";
 
     // A coarse sphere (24 triangles): neighbouring quads face 45 degrees apart or more.
     EXPECT_TRUE(cluster_lanes(build_light_tree(test::glowing_sphere(4, 4, {0.0, 0.0, 0.0}, 1.0).lights)).empty());
@@ -427,6 +439,40 @@ TEST(LightTree, NeighbouringTrianglesFacingOneWayEndTheDescentAsAClusterPickedBy
             lamps.push_back(b);
         }
     EXPECT_TRUE(cluster_lanes(build_light_tree(lamps)).empty());
+}
+
+// A cluster of more than eight lights is small beside all of them: on a flat panel of
+// 64 x 64 quads (its triangles' cones all one direction), clusters of more than eight
+// span at most a sixteenth of the panel's diagonal, so that from a point close to the
+// panel the descent still leads to the part near it. Without the bound the panel's
+// 8,192 triangles took clusters of up to LIGHT_TREE_CLUSTER_MAX.
+TEST(LightTree, AClusterOfMoreThanEightLightsIsSmallBesideThemAll)
+{
+    std::vector<LightBounds> panel;
+    const int quads = 64;
+    for (int i = 0; i < quads * quads; ++i)
+        for (int t = 0; t < 2; ++t) {
+            LightBounds b;
+            b.lo = {static_cast<double>(i % quads) / quads, 2.0, static_cast<double>(i / quads) / quads};
+            b.hi = b.lo + glm::dvec3(1.0 / quads, 0.0, 1.0 / quads);
+            b.phi = 1.0;
+            b.cone = {{0.0, -1.0, 0.0}, 1.0, 0.0};
+            panel.push_back(b);
+        }
+    const LightTree tree = build_light_tree(panel);
+    std::size_t large = 0;
+    for (const ClusterLane& c : cluster_lanes(tree)) {
+        if (c.lights.size() <= std::size_t(LIGHT_TREE_WIDTH))
+            continue;
+        ++large;
+        glm::dvec3 lo(INFINITY), hi(-INFINITY);
+        for (std::size_t l : c.lights) {
+            lo = glm::min(lo, panel[l].lo);
+            hi = glm::max(hi, panel[l].hi);
+        }
+        EXPECT_LE(glm::length(hi - lo), std::sqrt(2.0) / 16.0 + 1e-12) << "cluster " << c.header;
+    }
+    EXPECT_GT(large, 0u) << "no cluster of more than eight to test";
 }
 
 TEST(LightTree, InfiniteLightsStayBesideTheTreeWithTheirShareOfPower)

@@ -652,8 +652,10 @@ float float_up(double x)
 // more than kParallelNodes nodes, in pieces of at least kShareNodes).
 constexpr std::size_t kParallelNodes = 1024;
 constexpr std::size_t kShareNodes = 256;
-// The widest cone (theta_o, radians) of a cluster's normals: 14 degrees.
+// The widest cone (theta_o, radians) of a cluster's normals: 14 degrees. A cluster of more
+// than eight lights spans at most 1 / kClusterExtent of the diagonal of every light's box.
 constexpr double kClusterCone = 0.25;
+constexpr double kClusterExtent = 16.0;
 
 class Collapser {
 public:
@@ -664,6 +666,8 @@ public:
     void collapse(std::uint32_t root)
     {
         lanes_.reserve(binary_.nodes.size() + 1); // at most one node for each binary one
+        const glm::dvec3 all = binary_.of(root).box.hi - binary_.of(root).box.lo;
+        cluster_extent2_ = glm::dot(all, all) / (kClusterExtent * kClusterExtent);
         lay_out(root, 0);
         tree_.nodes.resize(lanes_.size()); // unwritten: write() fills each node on the core that writes it
         SharedWork::for_pieces(lanes_.size(), kShareNodes, lanes_.size() > kParallelNodes ? 0 : 1,
@@ -731,40 +735,61 @@ private:
         return index;
     }
 
-    // Whether a lane over binary node b is split in a node over more than eight lights. Over
-    // more than eight itself it must be, and a half that is one light needs no node
-    // below; two halves of several lights each would still need a node each, emptier than
-    // the one the whole lane leads to, so such a split pays only where it sharpens the
-    // weights: where the halves' boxes lie apart (lamps in different places), not where
-    // they touch (neighbouring triangles of one surface).
+    // Whether a lane over binary node b is split in a node over more than eight lights. A
+    // half that is one light needs no node below, and halves that lie apart (lamps in
+    // different places) sharpen the weights; halves that touch (neighbouring triangles of
+    // one surface) would each still need a node, emptier than the one the whole lane leads
+    // to. Over more than eight lights such a lane is split all the same, unless it is a
+    // cluster.
     bool worth_splitting(std::uint32_t b) const
     {
         const BinaryNode& n = binary_.nodes[b];
-        if (n.lights > LIGHT_TREE_WIDTH || (n.child[0] & kLeaf) || (n.child[1] & kLeaf))
+        if ((n.child[0] & kLeaf) || (n.child[1] & kLeaf))
             return true;
         const Box first = binary_.of(n.child[0]).box, second = binary_.of(n.child[1]).box;
-        return glm::any(glm::lessThan(first.hi, second.lo)) || glm::any(glm::lessThan(second.hi, first.lo));
+        if (glm::any(glm::lessThan(first.hi, second.lo)) || glm::any(glm::lessThan(second.hi, first.lo)))
+            return true;
+        return n.lights > LIGHT_TREE_WIDTH && !cluster(b);
     }
 
     // Whether the lane over binary node b, in a node over more than eight lights and not
     // worth splitting (neighbouring lights of one surface), ends the descent as a cluster:
     // where its lights face within kClusterCone of one direction, so that power alone
-    // weighs them nearly as their importance would at any point that sees them.
+    // weighs them nearly as their importance would at any point that sees them, and where
+    // the cluster array can still index its header. Up to eight such lights always do;
+    // up to LIGHT_TREE_CLUSTER_MAX where their box is small beside every light's (its
+    // diagonal at most 1 / kClusterExtent of theirs), so that a large panel of many
+    // triangles is not picked among by power alone from close by.
     bool cluster(std::uint32_t b) const
     {
-        return binary_.nodes[b].lights <= LIGHT_TREE_WIDTH && binary_.of(b).cone.theta_o <= kClusterCone;
+        const std::uint32_t lights = binary_.nodes[b].lights;
+        if (lights > LIGHT_TREE_CLUSTER_MAX || tree_.cluster.size() > LIGHT_TREE_MAX_LEAF_INDEX)
+            return false;
+        const Bounds bounds = binary_.of(b);
+        const glm::dvec3 diagonal = bounds.box.hi - bounds.box.lo;
+        return bounds.cone.theta_o <= kClusterCone &&
+               (lights <= LIGHT_TREE_WIDTH || glm::dot(diagonal, diagonal) <= cluster_extent2_);
     }
 
-    // Appends binary node b's lights to the clusters' array; returns the leaf
-    // (LIGHT_TREE_LEAF) that stands for them.
+    // Appends binary node b's lights to the clusters' array (LightTreeClusterLight: a
+    // header, then the lights in the order of their indices with their running sums of
+    // power, each the double sum rounded once); returns the leaf that stands for them.
     pcl_int add_cluster(std::uint32_t b)
     {
         const BinaryNode& n = binary_.nodes[b];
-        const auto first = static_cast<pcl_int>(tree_.cluster.size());
-        for (std::uint32_t i = n.first; i < n.first + n.lights; ++i)
-            tree_.cluster.push_back(
-                {static_cast<pcl_int>(binary_.records[i].light), static_cast<pcl_float>(binary_.records[i].phi)});
-        return LIGHT_TREE_LEAF(first, static_cast<pcl_int>(n.lights));
+        std::array<std::pair<std::uint32_t, double>, LIGHT_TREE_CLUSTER_MAX> lights;
+        for (std::uint32_t i = 0; i < n.lights; ++i)
+            lights[i] = {binary_.records[n.first + i].light, binary_.records[n.first + i].phi};
+        std::sort(lights.begin(), lights.begin() + n.lights);
+        const auto header = static_cast<pcl_int>(tree_.cluster.size());
+        tree_.cluster.push_back({static_cast<pcl_int>(n.lights), 0.0f});
+        double sum = 0.0;
+        for (std::uint32_t i = 0; i < n.lights; ++i) {
+            sum += lights[i].second;
+            tree_.cluster.push_back({static_cast<pcl_int>(lights[i].first), static_cast<pcl_float>(sum)});
+        }
+        tree_.cluster[static_cast<std::size_t>(header)].phi_sum = static_cast<pcl_float>(sum);
+        return header | LIGHT_TREE_CLUSTER;
     }
 
     void write(std::size_t index)
@@ -809,7 +834,8 @@ private:
 
     const BinaryTree& binary_;
     LightTree& tree_;
-    std::vector<Lanes> lanes_; // by node
+    std::vector<Lanes> lanes_;     // by node
+    double cluster_extent2_ = 0.0; // the largest squared diagonal of a cluster of more than eight
 };
 
 // Whether a light has bounds in the tree: every kind with a position. The others

@@ -41,7 +41,7 @@ struct LightTree {
     UninitializedVector<LightTreeNode> nodes;   // depth-first, root first; empty when every light is infinite
     std::vector<pcl_ulong> trails;              // per light: bit k = the child taken at depth k (1: the second); all
                                                 // ones for an infinite light
-    std::vector<LightTreeClusterLight> cluster; // the lights of the cluster leaves, each one's together
+    std::vector<LightTreeClusterLight> cluster; // the cluster leaves: each a header and then its lights
     std::vector<pcl_int> infinite;              // the infinite lights
     double infinite_pick = 0.0;                 // the probability of picking one of them
     std::uint32_t depth = 0;                    // the number of levels of eight-wide nodes

@@ -110,46 +110,55 @@ static inline float light_tree_weights(const KernelData* kd, int node, float3 re
     return s2.x + s2.y;
 }
 
-/* Starts the cluster at light_tree_cluster[first] into the cache, as light_record_warm
- * does a light's record: a node's cluster leaves are weighed before one is picked among. */
+/* Starts the cluster whose header is light_tree_cluster[first] into the cache, as
+ * light_record_warm does a light's record: a node's cluster leaves are weighed before one
+ * is picked among. */
 static inline void light_tree_cluster_warm(const KernelData* kd, int first)
 {
     cache_line_warm((__global const int*)&kd->light_tree_cluster[first]);
 }
 
-/* Picks one of the size lights of the cluster at light_tree_cluster[first] by the number
- * u, in proportion to their power; its probability times p in *pmf. */
-static inline int light_tree_cluster_pick(const KernelData* kd, int first, int size, float u, float p, float* pmf)
+/* The power of the k-th light (from 1) of the cluster whose header is c[0], as pick and
+ * pmf both take it: the difference of its running sums. */
+static inline float light_tree_cluster_phi(__global const LightTreeClusterLight* c, int k)
 {
-    __global const LightTreeClusterLight* lights = kd->light_tree_cluster + first;
-    float total = 0.0f;
-    for (int k = 0; k < size; ++k)
-        total += lights[k].phi;
-    float target = u * total, below = 0.0f;
-    int pick = 0;
-    for (int k = 0; k < size; ++k) {
-        if (lights[k].phi > 0.0f) {
-            pick = k;
-            if (target < below + lights[k].phi)
-                break;
-            below += lights[k].phi;
-        }
-    }
-    *pmf = p * (lights[pick].phi / total);
-    return lights[pick].light;
+    return c[k].phi_sum - (k > 1 ? c[k - 1].phi_sum : 0.0f);
 }
 
-/* p times the probability that light_tree_cluster_pick picks `light` of that cluster. */
-static inline float light_tree_cluster_pmf(const KernelData* kd, int first, int size, int light, float p)
+/* Picks one of the lights of the cluster whose header is light_tree_cluster[first] by the
+ * number u, in proportion to their power: the first whose running sum passes u times the
+ * total (lights of power 0 hold no share); its probability times p in *pmf. */
+static inline int light_tree_cluster_pick(const KernelData* kd, int first, float u, float p, float* pmf)
 {
-    __global const LightTreeClusterLight* lights = kd->light_tree_cluster + first;
-    float total = 0.0f, phi = 0.0f;
-    for (int k = 0; k < size; ++k) {
-        total += lights[k].phi;
-        if (lights[k].light == light)
-            phi = lights[k].phi;
+    __global const LightTreeClusterLight* c = kd->light_tree_cluster + first;
+    int lo = 1, hi = c[0].light;
+    float total = c[0].phi_sum;
+    float target = fmin(u * total, nextafter(total, 0.0f)); /* u total may round up to the total */
+    while (lo < hi) {
+        int mid = (lo + hi) >> 1;
+        if (target < c[mid].phi_sum)
+            hi = mid;
+        else
+            lo = mid + 1;
     }
-    return p * (phi / total);
+    *pmf = p * (light_tree_cluster_phi(c, lo) / total);
+    return c[lo].light;
+}
+
+/* p times the probability that light_tree_cluster_pick picks `light` of that cluster (0
+ * where it is not one of its lights). */
+static inline float light_tree_cluster_pmf(const KernelData* kd, int first, int light, float p)
+{
+    __global const LightTreeClusterLight* c = kd->light_tree_cluster + first;
+    int lo = 1, hi = c[0].light;
+    while (lo < hi) {
+        int mid = (lo + hi) >> 1;
+        if (c[mid].light < light)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return c[lo].light == light ? p * (light_tree_cluster_phi(c, lo) / c[0].phi_sum) : 0.0f;
 }
 
 /* Picks a light for the shading point ref with normal n by the number u; its probability
@@ -181,10 +190,10 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
             for (uint k = 0u; k < LIGHT_TREE_WIDTH; ++k) {
                 if (leaves[k] < 0) {
                     int leaf = -1 - leaves[k];
-                    if (LIGHT_TREE_LEAF_SIZE(leaf) == 1)
-                        light_record_warm(kd, leaf);
-                    else
+                    if (leaf & LIGHT_TREE_CLUSTER)
                         light_tree_cluster_warm(kd, LIGHT_TREE_LEAF_INDEX(leaf));
+                    else
+                        light_record_warm(kd, leaf);
                 }
             }
         }
@@ -207,9 +216,9 @@ static inline int light_tree_pick(const KernelData* kd, const FrameParams* frame
         p *= weight[lane] / total;
         u = fmin(fmax(target - below, 0.0f) / weight[lane], ONE_MINUS_EPSILON);
         if (child[lane] < 0) {
-            int leaf = -1 - child[lane], size = LIGHT_TREE_LEAF_SIZE(leaf);
-            if (size > 1)
-                return light_tree_cluster_pick(kd, LIGHT_TREE_LEAF_INDEX(leaf), size, u, p, pmf);
+            int leaf = -1 - child[lane];
+            if (leaf & LIGHT_TREE_CLUSTER)
+                return light_tree_cluster_pick(kd, LIGHT_TREE_LEAF_INDEX(leaf), u, p, pmf);
             *pmf = p;
             return leaf;
         }
@@ -248,8 +257,8 @@ static inline float light_tree_pmf(const KernelData* kd, const FrameParams* fram
         }
         p *= weight[lane] / total;
         if (child[lane] < 0) {
-            int leaf = -1 - child[lane], size = LIGHT_TREE_LEAF_SIZE(leaf);
-            return size > 1 ? light_tree_cluster_pmf(kd, LIGHT_TREE_LEAF_INDEX(leaf), size, light, p) : p;
+            int leaf = -1 - child[lane];
+            return leaf & LIGHT_TREE_CLUSTER ? light_tree_cluster_pmf(kd, LIGHT_TREE_LEAF_INDEX(leaf), light, p) : p;
         }
         node = child[lane];
         trail >>= length;
