@@ -68,7 +68,7 @@ TreeScene make_scene()
             LightBounds& b = lights[scattered + 2 * q + t];
             b.lo = {x, -1.0, z};
             b.hi = {x + 0.25, -1.0, z + 0.25};
-            // One triangle of power 0: a cluster's pick never gives it.
+            // One triangle of power 0: never picked, of pmf 0, inside a cluster or not.
             b.phi = q == 9 && t == 1 ? 0.0 : 0.5 * static_cast<double>(1 + (2 * q + t) % 3);
             b.cone = {{0.0, 1.0, 0.0}, 1.0, 0.0};
         }
