@@ -666,8 +666,9 @@ public:
     void collapse(std::uint32_t root)
     {
         lanes_.reserve(binary_.nodes.size() + 1); // at most one node for each binary one
-        const glm::dvec3 all = binary_.of(root).box.hi - binary_.of(root).box.lo;
-        cluster_extent2_ = glm::dot(all, all) / (kClusterExtent * kClusterExtent);
+        const Box all = binary_.of(root).box;
+        const glm::dvec3 diagonal = all.hi - all.lo;
+        cluster_extent2_ = glm::dot(diagonal, diagonal) / (kClusterExtent * kClusterExtent);
         lay_out(root, 0);
         tree_.nodes.resize(lanes_.size()); // unwritten: write() fills each node on the core that writes it
         SharedWork::for_pieces(lanes_.size(), kShareNodes, lanes_.size() > kParallelNodes ? 0 : 1,
