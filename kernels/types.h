@@ -266,7 +266,10 @@ typedef struct {
     } data;              /* by type */
     pcl_float4 radiance; /* rgb; w unused */
     pcl_int type;        /* LIGHT_* */
-    pcl_int pad0, pad1, pad2;
+    /* An emissive triangle's BVH leaf, where its shadow rays end: the node whose slot names
+     * the leaf and the leaf's TriangleBlock (light_shadow_leaf_warm); unused elsewhere. */
+    pcl_int leaf_node, leaf_block;
+    pcl_int pad0;
 } Light;
 
 /* The light distribution: light i's selection probability and its entry of the

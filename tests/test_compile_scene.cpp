@@ -1,6 +1,7 @@
 // The scene compiled for the device: the light distribution selects each light with
 // exactly its stored pmf (power-proportional), the camera keeps yfov while the image sets
-// the aspect ratio, and emissive triangles become lights in leaf order.
+// the aspect ratio, and emissive triangles become lights in leaf order, each naming its
+// BVH leaf.
 #include <cmath>
 #include <cstdint>
 
@@ -87,7 +88,7 @@ TEST(CompileScene, EmissiveTrianglesBecomeLightsInLeafOrder)
     Scene s;
     s.materials.resize(2);
     s.materials[1].emission = glm::vec3(2.0f);
-    for (int i = 0; i < 10; ++i) {
+    for (int i = 0; i < 100; ++i) { // more leaves than a node holds: more than one node
         SceneTriangle t;
         float x = static_cast<float>(i);
         t.v[0] = {x, 0, 0};
@@ -100,7 +101,8 @@ TEST(CompileScene, EmissiveTrianglesBecomeLightsInLeafOrder)
     }
     CompiledScene cs = test::compile_default(s);
     const SceneArrays& a = cs.arrays;
-    ASSERT_EQ(a.lights.size(), 4u);
+    ASSERT_EQ(a.lights.size(), 34u);
+    ASSERT_GT(a.nodes.size(), 1u);
     EXPECT_TRUE(cs.features.has(FEATURE_AREA_LIGHTS));
     for (std::size_t i = 0; i < a.triangles.size(); ++i) {
         int e = a.shading[i].emitter;
@@ -111,6 +113,22 @@ TEST(CompileScene, EmissiveTrianglesBecomeLightsInLeafOrder)
             EXPECT_EQ(l.v0.x, a.triangles[i].v0.x);
             EXPECT_EQ(l.triangle, static_cast<pcl_int>(i));
             EXPECT_NEAR(l.area, 0.5f, 1e-6f);
+            // And names the BVH leaf its shadow rays end in: a node whose slot names a
+            // block that holds the triangle.
+            const Light& light = a.lights[static_cast<std::size_t>(e)];
+            ASSERT_GE(light.leaf_node, 0);
+            ASSERT_LT(static_cast<std::size_t>(light.leaf_node), a.nodes.size());
+            ASSERT_GE(light.leaf_block, 0);
+            ASSERT_LT(static_cast<std::size_t>(light.leaf_block), a.triangle_blocks.size());
+            bool named = false;
+            for (int k = 0; k < BVH_WIDTH; ++k)
+                named = named || (a.nodes[static_cast<std::size_t>(light.leaf_node)].count.s[k] > 0 &&
+                                  a.nodes[static_cast<std::size_t>(light.leaf_node)].index.s[k] == light.leaf_block);
+            EXPECT_TRUE(named) << "light " << e;
+            bool held = false;
+            for (pcl_int t : a.triangle_blocks[static_cast<std::size_t>(light.leaf_block)].triangle.s)
+                held = held || t == static_cast<pcl_int>(i);
+            EXPECT_TRUE(held) << "light " << e;
         } else {
             EXPECT_EQ(e, -1);
         }

@@ -1,9 +1,12 @@
 // The traversal's leaf blocks (host/bvh/triangle_blocks.cpp): every leaf's triangles in
-// the lanes of its own block, in leaf order, and nothing else in them. The traversal
+// the lanes of its own block, in leaf order, and nothing else in them; and each
+// triangle's leaf found again (triangle_leaves). The traversal
 // tests (test_bvh_traversal.cpp) check the hits found through them against every triangle
 // tested one by one.
 #include <cmath>
+#include <cstdint>
 #include <set>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -85,6 +88,69 @@ TEST(TriangleBlocks, ALeafPastTheTrianglesIsRefused)
     std::vector<BvhNode> nodes = bvh.nodes;
     std::vector<TriangleBlock> blocks;
     EXPECT_THROW(make_triangle_blocks(nodes, 0, tris, blocks), std::logic_error);
+}
+
+// Every stored triangle's leaf, as triangle_leaves finds it: its block holds the triangle
+// and its node's slot names that block. Broken variant seen failing: the node taken one
+// past the right one.
+void expect_leaves_hold_their_triangles(const std::vector<BvhNode>& nodes, std::size_t first_node,
+                                        const std::vector<TriangleBlock>& blocks, std::size_t triangle_count)
+{
+    const std::vector<TriangleLeaf> leaves = triangle_leaves(nodes, first_node, blocks, triangle_count);
+    ASSERT_EQ(leaves.size(), triangle_count);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        const TriangleLeaf& leaf = leaves[t];
+        ASSERT_GE(leaf.node, static_cast<std::int32_t>(first_node)) << "triangle " << t;
+        ASSERT_LT(static_cast<std::size_t>(leaf.node), nodes.size()) << "triangle " << t;
+        ASSERT_GE(leaf.block, 0) << "triangle " << t;
+        ASSERT_LT(static_cast<std::size_t>(leaf.block), blocks.size()) << "triangle " << t;
+        const BvhNode& node = nodes[static_cast<std::size_t>(leaf.node)];
+        int slots = 0;
+        for (int k = 0; k < kBvhWidth; ++k)
+            slots += node.count.s[k] > 0 && node.index.s[k] == leaf.block;
+        EXPECT_EQ(slots, 1) << "triangle " << t << ": node " << leaf.node << " names block " << leaf.block;
+        int lanes = 0;
+        for (const std::int32_t held : blocks[static_cast<std::size_t>(leaf.block)].triangle.s)
+            lanes += held == static_cast<std::int32_t>(t);
+        EXPECT_EQ(lanes, 1) << "triangle " << t << " in block " << leaf.block;
+    }
+}
+
+TEST(TriangleLeaves, EachTriangleIsInTheBlockItsNodeNames)
+{
+    auto v = test::jittered_sphere(20, 40, 6);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
+    std::vector<BvhNode> nodes = bvh.nodes;
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(nodes, 0, tris, blocks);
+    expect_leaves_hold_their_triangles(nodes, 0, blocks, tris.size());
+}
+
+TEST(TriangleLeaves, ATopLevelsLeavesAreNotTriangles)
+{
+    // The stand-in top level's leaves name instances by index: read as blocks, they would
+    // put triangles in two leaves.
+    auto v = test::random_triangle_soup(200, 7);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
+    std::vector<BvhNode> nodes = bvh.nodes;
+    nodes.insert(nodes.begin(), bvh.nodes.begin(), bvh.nodes.end());
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(nodes, bvh.nodes.size(), tris, blocks);
+    expect_leaves_hold_their_triangles(nodes, bvh.nodes.size(), blocks, tris.size());
+    EXPECT_THROW(triangle_leaves(nodes, 0, blocks, tris.size()), std::logic_error);
+}
+
+TEST(TriangleLeaves, ATriangleInNoLeafIsRefused)
+{
+    auto v = test::random_triangle_soup(50, 8);
+    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
+    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
+    std::vector<BvhNode> nodes = bvh.nodes;
+    std::vector<TriangleBlock> blocks;
+    make_triangle_blocks(nodes, 0, tris, blocks);
+    EXPECT_THROW(triangle_leaves(nodes, 0, blocks, tris.size() + 1), std::logic_error);
 }
 
 } // namespace

@@ -43,4 +43,33 @@ void make_triangle_blocks(std::vector<BvhNode>& nodes, std::size_t first_node, c
         }
 }
 
+std::vector<TriangleLeaf> triangle_leaves(const std::vector<BvhNode>& nodes, std::size_t first_node,
+                                          const std::vector<TriangleBlock>& blocks, std::size_t triangle_count)
+{
+    std::vector<TriangleLeaf> leaves(triangle_count);
+    std::size_t found = 0;
+    for (std::size_t n = first_node; n < nodes.size(); ++n)
+        for (int k = 0; k < kBvhWidth; ++k) {
+            const std::int32_t block = nodes[n].index.s[k];
+            if (nodes[n].count.s[k] <= 0)
+                continue;
+            if (block < 0 || static_cast<std::size_t>(block) >= blocks.size())
+                throw std::logic_error("triangle_leaves: node " + std::to_string(n) + " names block " +
+                                       std::to_string(block) + " of " + std::to_string(blocks.size()));
+            for (const std::int32_t t : blocks[static_cast<std::size_t>(block)].triangle.s) {
+                if (t < 0)
+                    continue;
+                if (static_cast<std::size_t>(t) >= triangle_count || leaves[static_cast<std::size_t>(t)].block >= 0)
+                    throw std::logic_error("triangle_leaves: triangle " + std::to_string(t) +
+                                           " is past the triangles or in two leaves");
+                leaves[static_cast<std::size_t>(t)] = {static_cast<std::int32_t>(n), block};
+                ++found;
+            }
+        }
+    if (found != triangle_count)
+        throw std::logic_error("triangle_leaves: " + std::to_string(triangle_count - found) + " of " +
+                               std::to_string(triangle_count) + " triangles are in no leaf");
+    return leaves;
+}
+
 } // namespace pathcl

@@ -29,7 +29,8 @@ static_assert(sizeof(PointLight) == 16 && sizeof(DirectionalLight) == 16 && size
 static_assert(sizeof(SpotLight) == 48 && offsetof(SpotLight, cos_outer) == 32);
 static_assert(sizeof(RectSpotLight) == 64 && offsetof(RectSpotLight, tan_half_h) == 48);
 static_assert(sizeof(SphereLight) == 32 && offsetof(SphereLight, radius) == 16);
-static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80);
+static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80 &&
+              offsetof(Light, leaf_node) == 84 && offsetof(Light, leaf_block) == 88);
 static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) == 8);
 static_assert(sizeof(LightTreeNode) == 448 && offsetof(LightTreeNode, phi) == 128 &&
               offsetof(LightTreeNode, cos_e) == 320 && offsetof(LightTreeNode, child) == 352 &&

@@ -187,6 +187,7 @@ std::vector<std::uint32_t> compile_geometry(const Scene& scene, CompiledScene& o
         a.shading[i] = TriangleShading{to_float4(t.n[0]), to_float4(t.n[1]), to_float4(t.n[2]), t.material, -1, 0, 0};
     }
     make_triangle_blocks(a.nodes, top_nodes, a.triangles, a.triangle_blocks);
+    out.triangle_leaves = triangle_leaves(a.nodes, top_nodes, a.triangle_blocks, n);
     // A program with every feature compiled in (--specialization all) reads these arrays
     // for scenes without them: tangents are read only through a normal texture or an
     // anisotropic material, so any value does; vertex colours multiply, so white.

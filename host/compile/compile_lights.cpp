@@ -82,6 +82,8 @@ void add_triangle_lights(const Scene& scene, const std::vector<std::uint32_t>& l
         tl.v2 = to_float4(t.v[2]);
         tl.area = static_cast<float>(area);
         tl.triangle = static_cast<pcl_int>(i);
+        light.leaf_node = out.triangle_leaves[i].node;
+        light.leaf_block = out.triangle_leaves[i].block;
         tl.texture = a.materials[static_cast<std::size_t>(t.material)].textures[TEXTURE_SLOT_EMISSIVE];
         light.radiance = to_float4(m.emission);
         a.shading[i].emitter = static_cast<pcl_int>(a.lights.size());

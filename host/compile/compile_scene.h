@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bvh/bvh_builder.h"
+#include "bvh/triangle_blocks.h"
 #include "compile/device_arrays.h"
 #include "compile/kernel_features.h"
 #include "render/render_options.h"
@@ -42,6 +43,9 @@ struct CompiledScene {
     // top-level tree's) and triangle_order: the stored triangle at each leaf position.
     Bvh bvh;
     double bvh_build_seconds = 0.0;
+    // By stored triangle: its BVH leaf's node and block (compile_geometry), which
+    // compile_lights copies into an emissive triangle's Light.
+    std::vector<TriangleLeaf> triangle_leaves;
 
     std::size_t texel_bytes() const { return arrays.texels.size() * sizeof(pcl_uint); }
 };

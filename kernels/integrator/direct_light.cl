@@ -49,6 +49,8 @@ static inline void direct_light_add(const KernelData* kd, const FrameParams* fra
                                     float3* radiance)
 {
     const SurfacePoint* sp = &s->sp;
+    if (choice->light >= 0)
+        light_shadow_leaf_warm(kd, choice->light); /* read at the shadow ray's end */
     LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp));
     if (!(ls.pdf > 0.0f))
         return;

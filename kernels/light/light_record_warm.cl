@@ -1,7 +1,9 @@
 /* A light's record read ahead of its use (light_record_warm): by the megakernel's power
  * table, which picks before it traces, by the light tree's descent, which reads the
  * records of a node's light lanes while it weighs them, and for the light sample the
- * megakernel defers past the next traversal (integrator/direct_light.cl). */
+ * megakernel defers past the next traversal (integrator/direct_light.cl). And the BVH leaf
+ * a shadow ray towards an emissive triangle ends in, read ahead of the traversal
+ * (light_shadow_leaf_warm). */
 #include "kernel_data.cl"
 #include "util/prefetch.cl"
 
@@ -13,4 +15,35 @@ static inline void light_record_warm(const KernelData* kd, int light)
     __global const int* words = (__global const int*)&kd->lights[light];
     cache_line_warm(words);
     cache_line_warm(words + sizeof(Light) / sizeof(int) - 1);
+}
+
+#ifdef PATHCL_PREFETCH
+/* Starts every cache line of the `bytes` bytes at p on its way into the cache. */
+static inline void cache_lines_warm(__global const int* p, uint bytes)
+{
+    const uint words = bytes / (uint)sizeof(int);
+    for (uint w = 0; w < words; w += 16u) /* 64-byte lines */
+        cache_line_warm(p + w);
+    cache_line_warm(p + words - 1u); /* the last line, where p is not on a line's start */
+}
+#endif
+
+/* Starts the BVH leaf that a shadow ray towards a point on light `light`, an emissive
+ * triangle, ends in (the node that names the leaf, and its TriangleBlock) on its way into
+ * the cache, before the ray is traced: the traversal reaches that leaf last, after a
+ * descent of dependent reads, and among a hundred thousand emitters the leaf is rarely
+ * cached. Only where a line can be started without waiting for it (PATHCL_PREFETCH):
+ * elsewhere a read would wait now instead of during the traversal. */
+static inline void light_shadow_leaf_warm(const KernelData* kd, int light)
+{
+#ifdef PATHCL_PREFETCH
+    __global const Light* l = &kd->lights[light];
+    if (l->type != LIGHT_TRIANGLE)
+        return;
+    cache_lines_warm((__global const int*)&kd->nodes[l->leaf_node], (uint)sizeof(BvhNode));
+    cache_lines_warm((__global const int*)&kd->triangle_blocks[l->leaf_block], (uint)sizeof(TriangleBlock));
+#else
+    (void)kd;
+    (void)light;
+#endif
 }
