@@ -49,7 +49,7 @@ static inline void direct_light_add(const KernelData* kd, const FrameParams* fra
                                     float3* radiance)
 {
     const SurfacePoint* sp = &s->sp;
-    if (choice->light >= 0)
+    if (choice->light >= 0 && frame->light_count >= LIGHT_SHADOW_LEAF_WARM_MIN_LIGHTS)
         light_shadow_leaf_warm(kd, choice->light); /* read at the shadow ray's end */
     LightSample ls = light_sample_chosen(kd, choice, light_sample_origin(sp));
     if (!(ls.pdf > 0.0f))
