@@ -18,14 +18,31 @@
 namespace pathcl::test_triangle_blocks {
 namespace {
 
+// A BVH over the triangles of v, and its leaves' blocks made (its nodes rewritten).
+struct BlockedBvh {
+    Bvh bvh;
+    std::vector<Triangle> tris;
+    std::vector<BvhNode> nodes;
+    std::vector<TriangleBlock> blocks;
+};
+
+BlockedBvh blocked_bvh(const std::vector<glm::vec3>& v)
+{
+    BlockedBvh b;
+    b.bvh = build_bvh(bvh_input_from_triangles(v));
+    b.tris = test::leaf_order_triangles(v, b.bvh);
+    b.nodes = b.bvh.nodes;
+    make_triangle_blocks(b.nodes, 0, b.tris, b.blocks);
+    return b;
+}
+
 TEST(TriangleBlocks, EveryLeafNamesABlockOfItsTrianglesInOrder)
 {
-    auto v = test::jittered_sphere(20, 40, 3);
-    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
-    std::vector<BvhNode> nodes = bvh.nodes;
-    std::vector<TriangleBlock> blocks;
-    make_triangle_blocks(nodes, 0, tris, blocks);
+    const BlockedBvh blocked = blocked_bvh(test::jittered_sphere(20, 40, 3));
+    const Bvh& bvh = blocked.bvh;
+    const std::vector<Triangle>& tris = blocked.tris;
+    const std::vector<BvhNode>& nodes = blocked.nodes;
+    const std::vector<TriangleBlock>& blocks = blocked.blocks;
     ASSERT_EQ(blocks.size(), static_cast<std::size_t>(bvh.leaf_count));
     std::set<int> seen_blocks, seen_triangles;
     for (std::size_t n = 0; n < nodes.size(); ++n)
@@ -118,13 +135,8 @@ void expect_leaves_hold_their_triangles(const std::vector<BvhNode>& nodes, std::
 
 TEST(TriangleLeaves, EachTriangleIsInTheBlockItsNodeNames)
 {
-    auto v = test::jittered_sphere(20, 40, 6);
-    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
-    std::vector<BvhNode> nodes = bvh.nodes;
-    std::vector<TriangleBlock> blocks;
-    make_triangle_blocks(nodes, 0, tris, blocks);
-    expect_leaves_hold_their_triangles(nodes, 0, blocks, tris.size());
+    const BlockedBvh b = blocked_bvh(test::jittered_sphere(20, 40, 6));
+    expect_leaves_hold_their_triangles(b.nodes, 0, b.blocks, b.tris.size());
 }
 
 TEST(TriangleLeaves, ATopLevelsLeavesAreNotTriangles)
@@ -144,13 +156,8 @@ TEST(TriangleLeaves, ATopLevelsLeavesAreNotTriangles)
 
 TEST(TriangleLeaves, ATriangleInNoLeafIsRefused)
 {
-    auto v = test::random_triangle_soup(50, 8);
-    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
-    std::vector<BvhNode> nodes = bvh.nodes;
-    std::vector<TriangleBlock> blocks;
-    make_triangle_blocks(nodes, 0, tris, blocks);
-    EXPECT_THROW(triangle_leaves(nodes, 0, blocks, tris.size() + 1), std::logic_error);
+    const BlockedBvh b = blocked_bvh(test::random_triangle_soup(50, 8));
+    EXPECT_THROW(triangle_leaves(b.nodes, 0, b.blocks, b.tris.size() + 1), std::logic_error);
 }
 
 } // namespace
