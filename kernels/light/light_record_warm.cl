@@ -17,17 +17,6 @@ static inline void light_record_warm(const KernelData* kd, int light)
     cache_line_warm(words + sizeof(Light) / sizeof(int) - 1);
 }
 
-#ifdef PATHCL_PREFETCH
-/* Starts every cache line of the `bytes` bytes at p on its way into the cache. */
-static inline void cache_lines_warm(__global const int* p, uint bytes)
-{
-    const uint words = bytes / (uint)sizeof(int);
-    for (uint w = 0; w < words; w += 16u) /* 64-byte lines */
-        cache_line_warm(p + w);
-    cache_line_warm(p + words - 1u); /* the last line, where p is not on a line's start */
-}
-#endif
-
 /* The fewest lights for which light samples warm their shadow rays' leaves: among the 768
  * lamps of tools/make_many_lights.py, and in the Cornell box, the leaves stay cached and
  * warming them made renders 1-2 % slower; among the glowing sphere's 101,762 emitters it

@@ -22,4 +22,16 @@ static inline void cache_line_warm(__global const int* p)
 #endif
 }
 
+#ifdef PATHCL_PREFETCH
+/* Starts every cache line of the `bytes` bytes at p on its way into the cache. Only where
+ * a line is started without a wait: volatile reads of several lines would wait for each. */
+static inline void cache_lines_warm(__global const int* p, uint bytes)
+{
+    const uint words = bytes / (uint)sizeof(int);
+    for (uint w = 0; w < words; w += 16u) /* 64-byte lines */
+        cache_line_warm(p + w);
+    cache_line_warm(p + words - 1u); /* the last line, where p is not on a line's start */
+}
+#endif
+
 #endif /* PATHCL_UTIL_PREFETCH_CL */
