@@ -160,5 +160,29 @@ TEST(TriangleLeaves, ATriangleInNoLeafIsRefused)
     EXPECT_THROW(triangle_leaves(b.nodes, 0, b.blocks, b.tris.size() + 1), std::logic_error);
 }
 
+TEST(TriangleLeaves, ATriangleInTwoLeavesIsRefused)
+{
+    // One slot pointed at another leaf's block of as many triangles: every triangle is
+    // still counted once on the whole, so only the check of each one's leaf can tell.
+    BlockedBvh b = blocked_bvh(test::random_triangle_soup(200, 9));
+    std::vector<std::pair<std::size_t, int>> slots; // leaf slots: node, lane
+    for (std::size_t n = 0; n < b.nodes.size(); ++n)
+        for (int k = 0; k < kBvhWidth; ++k)
+            if (b.nodes[n].count.s[k] > 0)
+                slots.emplace_back(n, k);
+    bool redirected = false;
+    for (std::size_t i = 0; i < slots.size() && !redirected; ++i)
+        for (std::size_t j = i + 1; j < slots.size() && !redirected; ++j) {
+            const BvhNode& first = b.nodes[slots[i].first];
+            BvhNode& second = b.nodes[slots[j].first];
+            if (first.count.s[slots[i].second] == second.count.s[slots[j].second]) {
+                second.index.s[slots[j].second] = first.index.s[slots[i].second];
+                redirected = true;
+            }
+        }
+    ASSERT_TRUE(redirected) << "no two leaves of as many triangles";
+    EXPECT_THROW(triangle_leaves(b.nodes, 0, b.blocks, b.tris.size()), std::logic_error);
+}
+
 } // namespace
 } // namespace pathcl::test_triangle_blocks
