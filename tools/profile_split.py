@@ -77,9 +77,13 @@ def mitsuba_class(dso, sym):
     if dso.startswith("[JIT]"):
         return "rest"
     if dso.startswith("libembree"):
-        if sym.endswith("::intersect"):
+        # A hybrid intersector traces a packet in intersect, or where few of its rays
+        # are active one ray at a time in intersect1 (most of the closest hits on a
+        # large mesh), and coherent packets in intersectCoherent; occluded likewise.
+        name = sym.rsplit("::", 1)[-1]
+        if name in ("intersect", "intersect1", "intersectCoherent") or name.startswith("rtcIntersect"):
             return "closest"
-        if sym.endswith("::occluded"):
+        if name in ("occluded", "occluded1", "occludedCoherent") or name.startswith("rtcOccluded"):
             return "shadow"
     return None  # Embree's BVH build, Python, Dr.Jit's compiler, the kernel
 

@@ -5,7 +5,8 @@
 # files in $OUT/src with its two traversal functions out of line (so that perf names
 # them; a call per ray costs a little, so pathcl's figures are upper bounds), the venv
 # comes from tools/mitsuba_venv.sh, perf from Debian's linux-perf. Arguments go to
-# tools/profile_split.py (e.g. --spp 64). Output: ${OUT:-profile-split}.
+# tools/profile_split.py (e.g. --spp 64); SCENES (paths separated by spaces) replaces the
+# three scenes. Output: ${OUT:-profile-split}.
 set -eu
 cd "$(dirname "$0")/.."
 OUT=${OUT:-profile-split}
@@ -29,6 +30,10 @@ if [ "$(grep -c '__attribute__((noinline))' "$TRAVERSAL")" -ne 2 ]; then
 fi
 cmake -S "$SRC" -B "$OUT/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$OUT/build" --target pathcl >/dev/null
-[ -e "$OUT/cornell-box-dense.gltf" ] || python3 tools/make_cornell_box.py --variant dense "$OUT/cornell-box-dense.gltf"
+if [ -z "${SCENES:-}" ]; then
+    [ -e "$OUT/cornell-box-dense.gltf" ] || python3 tools/make_cornell_box.py --variant dense "$OUT/cornell-box-dense.gltf"
+    SCENES="scenes/cornell-box.gltf scenes/cornell-box-glass-mirror.gltf $OUT/cornell-box-dense.gltf"
+fi
+# shellcheck disable=SC2086 # SCENES is a list of paths
 DRJIT_LIBLLVM_PATH=$LLVM "$VENV/bin/python" tools/profile_split.py --pathcl "$OUT/build/pathcl" --out "$OUT" \
-    scenes/cornell-box.gltf scenes/cornell-box-glass-mirror.gltf "$OUT/cornell-box-dense.gltf" "$@"
+    $SCENES "$@"
