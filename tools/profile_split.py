@@ -78,8 +78,8 @@ def mitsuba_class(dso, sym):
         return "rest"
     if dso.startswith("libembree"):
         # A hybrid intersector traces a packet in intersect, or where few of its rays
-        # are active one ray at a time in intersect1 (most of the closest hits on a
-        # large mesh), and coherent packets in intersectCoherent; occluded likewise.
+        # are active one ray at a time in intersect1 (most of the closest hits on every
+        # scene profiled), and coherent packets in intersectCoherent; occluded likewise.
         name = sym.rsplit("::", 1)[-1]
         if name in ("intersect", "intersect1", "intersectCoherent") or name.startswith("rtcIntersect"):
             return "closest"

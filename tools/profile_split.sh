@@ -5,8 +5,8 @@
 # files in $OUT/src with its two traversal functions out of line (so that perf names
 # them; a call per ray costs a little, so pathcl's figures are upper bounds), the venv
 # comes from tools/mitsuba_venv.sh, perf from Debian's linux-perf. Arguments go to
-# tools/profile_split.py (e.g. --spp 64); SCENES (paths separated by spaces) replaces the
-# three scenes. Output: ${OUT:-profile-split}.
+# tools/profile_split.py (e.g. --spp 64); SCENES (paths separated by spaces, relative to
+# the repository like OUT) replaces the three scenes. Output: ${OUT:-profile-split}.
 set -eu
 cd "$(dirname "$0")/.."
 OUT=${OUT:-profile-split}
