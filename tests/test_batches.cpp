@@ -138,6 +138,15 @@ TEST(FilmAccumulator, SumsPastTheirRangeLeaveNoEstimateRatherThanZeroOrNan)
     EXPECT_LT(acc.relmse_estimate(), 0.0);
     EXPECT_LT(acc.pixel_relmse_estimate(0), 0.0);
     EXPECT_GE(acc.pixel_relmse_estimate(1), 0.0); // the other pixel keeps its own
+    // The image's variance channel: unbounded where the square was lost, not 0, which
+    // would claim an exact pixel; the other channels and pixels keep theirs.
+    const Image img = acc.image(2, 1, 8);
+    EXPECT_EQ(img.rgb[1], 1e20f);
+    EXPECT_EQ(img.variance[1], INFINITY);
+    EXPECT_EQ(img.variance[0], 0.0f);
+    EXPECT_EQ(img.variance[2], 0.0f);
+    for (int c = 3; c < 6; ++c)
+        EXPECT_EQ(img.variance[static_cast<std::size_t>(c)], 0.0f);
 }
 
 TEST(FilmAccumulator, APartialBatchAddsToTheImageAndScalesTheEstimate)
