@@ -18,7 +18,7 @@
 namespace pathcl::test_triangle_blocks {
 namespace {
 
-// A BVH over the triangles of v, and its leaves' blocks made (its nodes rewritten).
+// A BVH, its triangles in leaf order, its nodes and their leaf blocks.
 struct BlockedBvh {
     Bvh bvh;
     std::vector<Triangle> tris;
@@ -26,13 +26,22 @@ struct BlockedBvh {
     std::vector<TriangleBlock> blocks;
 };
 
-BlockedBvh blocked_bvh(const std::vector<glm::vec3>& v)
+// A BVH over the triangles of v and its leaves' blocks made (its nodes rewritten); under
+// a stand-in top level of a two-level BVH where asked: a copy of the BVH's nodes put before
+// them, whose leaves name instances by index, not triangles, and the blocks made from the
+// first node after it (bvh.nodes.size()).
+BlockedBvh blocked_bvh(const std::vector<glm::vec3>& v, bool under_a_top_level = false)
 {
     BlockedBvh b;
     b.bvh = build_bvh(bvh_input_from_triangles(v));
     b.tris = test::leaf_order_triangles(v, b.bvh);
     b.nodes = b.bvh.nodes;
-    make_triangle_blocks(b.nodes, 0, b.tris, b.blocks);
+    std::size_t first = 0;
+    if (under_a_top_level) {
+        b.nodes.insert(b.nodes.begin(), b.bvh.nodes.begin(), b.bvh.nodes.end());
+        first = b.bvh.nodes.size();
+    }
+    make_triangle_blocks(b.nodes, first, b.tris, b.blocks);
     return b;
 }
 
@@ -83,17 +92,11 @@ TEST(TriangleBlocks, EveryLeafNamesABlockOfItsTrianglesInOrder)
 TEST(TriangleBlocks, NodesBeforeTheFirstAreLeftAlone)
 {
     // A two-level BVH's top-level leaves name instances, not triangles.
-    auto v = test::random_triangle_soup(200, 4);
-    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
-    std::vector<BvhNode> nodes = bvh.nodes;
-    nodes.insert(nodes.begin(), bvh.nodes.begin(), bvh.nodes.end()); // a stand-in top level
-    std::vector<TriangleBlock> blocks;
-    make_triangle_blocks(nodes, bvh.nodes.size(), tris, blocks);
-    EXPECT_EQ(blocks.size(), static_cast<std::size_t>(bvh.leaf_count));
-    for (std::size_t n = 0; n < bvh.nodes.size(); ++n)
+    const BlockedBvh b = blocked_bvh(test::random_triangle_soup(200, 4), true);
+    EXPECT_EQ(b.blocks.size(), static_cast<std::size_t>(b.bvh.leaf_count));
+    for (std::size_t n = 0; n < b.bvh.nodes.size(); ++n)
         for (int k = 0; k < kBvhWidth; ++k)
-            EXPECT_EQ(nodes[n].index.s[k], bvh.nodes[n].index.s[k]);
+            EXPECT_EQ(b.nodes[n].index.s[k], b.bvh.nodes[n].index.s[k]);
 }
 
 TEST(TriangleBlocks, ALeafPastTheTrianglesIsRefused)
@@ -143,15 +146,9 @@ TEST(TriangleLeaves, ATopLevelsLeavesAreNotTriangles)
 {
     // The stand-in top level's leaves name instances by index: read as blocks, they would
     // put triangles in two leaves.
-    auto v = test::random_triangle_soup(200, 7);
-    const Bvh bvh = build_bvh(bvh_input_from_triangles(v));
-    const std::vector<Triangle> tris = test::leaf_order_triangles(v, bvh);
-    std::vector<BvhNode> nodes = bvh.nodes;
-    nodes.insert(nodes.begin(), bvh.nodes.begin(), bvh.nodes.end());
-    std::vector<TriangleBlock> blocks;
-    make_triangle_blocks(nodes, bvh.nodes.size(), tris, blocks);
-    expect_leaves_hold_their_triangles(nodes, bvh.nodes.size(), blocks, tris.size());
-    EXPECT_THROW(triangle_leaves(nodes, 0, blocks, tris.size()), std::logic_error);
+    const BlockedBvh b = blocked_bvh(test::random_triangle_soup(200, 7), true);
+    expect_leaves_hold_their_triangles(b.nodes, b.bvh.nodes.size(), b.blocks, b.tris.size());
+    EXPECT_THROW(triangle_leaves(b.nodes, 0, b.blocks, b.tris.size()), std::logic_error);
 }
 
 TEST(TriangleLeaves, ATriangleInNoLeafIsRefused)
