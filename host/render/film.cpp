@@ -72,13 +72,13 @@ FilmAccumulator::Moments FilmAccumulator::moments(std::size_t i, int c) const
     m.n = state_.samples[i]; // samples actually accumulated (bad ones excluded)
     const double s = state_.sum[i * 3 + c].value(), q = state_.sum_sq[i * 3 + c].value();
     m.mean = m.n > 0.0 ? s / m.n : 0.0;
+    if (!(m.n > 1.0))
+        return m; // variance 0
     const double variance = (q - s * m.mean) / (m.n - 1.0);
     // A square past the sums' range (ExactSum::poisoned) leaves a spread no figure bounds:
     // +inf, not the 0 that max(0, NaN) would make of it, which claims an exact pixel. A
     // poisoned sum leaves no mean either: NaN.
-    if (!(m.n > 1.0))
-        m.variance = 0.0;
-    else if (std::isnan(variance))
+    if (std::isnan(variance))
         m.variance = std::isnan(s) ? NAN : INFINITY;
     else
         m.variance = std::max(0.0, variance);
