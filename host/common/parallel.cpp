@@ -1,8 +1,15 @@
 #include "common/parallel.h"
 
-#include <OpenImageIO/parallel.h>
+#include <atomic>
+
+#include "common/shared_work.h"
 
 namespace pathcl {
+namespace {
+
+std::atomic<unsigned> parallel_threads{0};
+
+} // namespace
 
 void parallel_chunks(std::size_t count, const std::function<void(std::size_t, std::size_t)>& fn)
 {
@@ -13,10 +20,12 @@ void parallel_chunks(std::size_t count, const std::function<void(std::size_t, st
             fn(0, count);
         return;
     }
-    OIIO::parallel_for_chunked(0, static_cast<std::int64_t>(count), static_cast<std::int64_t>(kMinChunk),
-                               [&fn](std::int64_t begin, std::int64_t end) {
-                                   fn(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-                               });
+    SharedWork::for_pieces(count, kMinChunk, parallel_threads.load(std::memory_order_relaxed), fn);
+}
+
+void set_parallel_threads(unsigned threads)
+{
+    parallel_threads.store(threads, std::memory_order_relaxed);
 }
 
 } // namespace pathcl

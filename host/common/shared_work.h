@@ -2,9 +2,9 @@
 // (the light tree's subtrees): a task hands a piece of its work to another thread only
 // while one is waiting for work, so that no thread idles while another still has a
 // large piece, and no piece is split off that a busy thread would rather do itself. Its
-// threads are its own and sleep while they wait: OpenImageIO's pool (common/parallel.h)
-// keeps its threads spinning for a while after a loop, which slowed a light tree built
-// next to it from 0.65 to 1.1 s on a 2-core machine.
+// threads are its own and sleep while they wait: OpenImageIO's thread pool, which the
+// film's loops once ran on, keeps its threads spinning for a while after a loop, which
+// slowed a light tree built next to it from 0.65 to 1.1 s on a 2-core machine.
 #pragma once
 
 #include <atomic>
