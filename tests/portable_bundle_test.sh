@@ -1,8 +1,9 @@
 #!/bin/sh
 # tools/portable_bundle.py, the way pathcl reaches a machine without Debian's packages (a
-# GPU node): the bundle's binaries load no library from outside it but the system's C and
-# C++ runtimes, OpenImageIO's video and VDB libraries are stubs, and the bundled pathcl
-# renders and writes PNG and EXR through the bundled OpenImageIO, and plots through the
+# GPU node): the bundle's binaries and image module load no library from outside it but
+# the system's C and C++ runtimes, OpenImageIO's video and VDB libraries are stubs, and the
+# bundled pathcl renders and writes PNG and EXR through the bundled image module and
+# OpenImageIO, and plots through the
 # bundled PLplot driver; its bench_light_tree runs.
 #   sh tests/portable_bundle_test.sh BUILD_DIR SOURCE_DIR
 set -eu
@@ -13,7 +14,7 @@ trap 'rm -rf "$WORK"' EXIT
 B=$WORK/bundle
 python3 "$SRC/tools/portable_bundle.py" "$BUILD" "$B"
 outside=$(LD_LIBRARY_PATH="$B/lib" ldd "$B/bin/pathcl" "$B/bin/device_tests" "$B/bin/bench_light_tree" \
-    "$B/lib/plplot-drivers/cairo.so" |
+    "$B/bin/libpathcl_oiio.so" "$B/lib/plplot-drivers/cairo.so" |
     grep "=>" | grep -v "=> $B/lib/" |
     grep -v -E "^\s*(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt)\.so" || true)
 if [ -n "$outside" ]; then

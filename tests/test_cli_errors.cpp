@@ -172,6 +172,29 @@ TEST_F(Cli, UnsupportedOutputExtension)
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
 }
 
+// (d'') an image module beside the program that is not one (a broken installation): the
+// error names it, and comes before the render (no kernel was built into the empty
+// cache). Broken variant seen to fail: the module loaded only when the image was written.
+TEST_F(Cli, ABrokenImageModuleIsNamedBeforeTheRender)
+{
+    const fs::path bin = root_ / "bin";
+    fs::create_directories(bin);
+    fs::copy_file(kBinary, bin / "pathcl");
+    write_file(bin / "libpathcl_oiio.so", "not a shared library");
+    const fs::path err = capture_ / "stderr.txt", cache = root_ / "cache";
+    fs::create_directories(cache);
+    std::string cmd = "cd " + quoted(work_.string()) + " && PATHCL_CACHE_DIR=" + quoted(cache.string()) + " " +
+                      quoted((bin / "pathcl").string()) + " render " + quoted(kCornell) +
+                      " -o out.png --width 4 --height 4 --spp 1 2>" + quoted(err.string());
+    int rc = std::system(cmd.c_str());
+    RunResult r;
+    r.status = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    r.err = read_file(err);
+    expect_clean_failure(r, (bin / "libpathcl_oiio.so").string() + ": cannot load pathcl's image module");
+    EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
+    EXPECT_EQ(listing(cache), std::set<std::string>{}) << "the render began";
+}
+
 // (d') a bad output next to a good one: nothing is written at all
 TEST_F(Cli, UnsupportedSecondOutputWritesNeitherOutput)
 {

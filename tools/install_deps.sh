@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="build-essential cmake ninja-build pkg-config
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers
-  libopenimageio-dev libtinygltf-dev libdraco-dev draco nlohmann-json3-dev libglm-dev libcli11-dev libgtest-dev libembree-dev
+  libopenimageio-dev libpng-dev libtinygltf-dev libdraco-dev draco nlohmann-json3-dev libglm-dev libcli11-dev libgtest-dev libembree-dev
   libplplot-dev plplot-driver-cairo fonts-dejavu-core clang-format python3 python3-venv"
 missing=""
 for p in $PACKAGES; do

@@ -4,8 +4,9 @@ that runs on another x86-64 Linux machine without Debian's packages (a GPU node,
 
     python3 tools/portable_bundle.py BUILD_DIR OUT_DIR
 
-OUT_DIR/bin holds pathcl, device_tests and bench_light_tree (stripped), OUT_DIR/lib their
-libraries, the OpenCL ICD loader among them; run them with LD_LIBRARY_PATH=OUT_DIR/lib (and
+OUT_DIR/bin holds pathcl, device_tests and bench_light_tree (stripped) with the image
+module they load from their own folder (libpathcl_oiio.so, host/image/image_module.h),
+OUT_DIR/lib their libraries, the OpenCL ICD loader among them; run them with LD_LIBRARY_PATH=OUT_DIR/lib (and
 OCL_ICD_VENDORS pointing at a folder of .icd files where the machine registers none);
 tools/device_check.sh does that. glibc, libstdc++ and libgcc stay the machine's own (newer
 ones run older binaries).
@@ -38,7 +39,7 @@ STUBBED = ["libopencv_core.so.406", "libopencv_imgproc.so.406", "libopencv_video
            "libdcmimgle.so.17", "libdcmdata.so.17", "liboflog.so.17", "libofstd.so.17", "libavcodec.so.59",
            "libavformat.so.59", "libavutil.so.57", "libswscale.so.6", "libopenvdb.so.10.0", "libheif.so.1",
            "libraw_r.so.20"]
-BINARIES = ["pathcl", "tests/device_tests", "bench_light_tree"]
+BINARIES = ["pathcl", "tests/device_tests", "bench_light_tree", "libpathcl_oiio.so"]
 PLPLOT_DRIVER = "cairo"  # host/plot/plot.cpp draws with its memcairo device
 
 

@@ -54,14 +54,14 @@ PATHCL_PLATFORM="$intel" sh tools/intel_opencl.sh ctest --test-dir build -L devi
 # against 36 s).
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DPATHCL_SANITIZE=ON
-cmake --build build-sanitize --target unit_tests cli_tests pathcl tls_probe
+cmake --build build-sanitize --target unit_tests image_tests cli_tests pathcl tls_probe
 export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0" UBSAN_OPTIONS=print_stacktrace=1
-# unit_tests runs once, all its tests in one process (in ctest's working directory): with
+# unit_tests and image_tests run once each, all their tests in one process (in ctest's working directory): with
 # a process a test, their starts under the sanitizers took three quarters of the time
 # (219 s against 54 s on two cores). Then ctest runs the command-line tests and the
 # hostile corpus, a test a core, and the check that the sanitized programs' default
 # options (host/common/sanitizer_options.cpp) keep LeakSanitizer's tracer alive
 # (tests/sanitizer/tls_probe.cpp); the checks of the sources and the repository's text
 # ran above.
-(cd build-sanitize/tests && ./unit_tests --gtest_brief=1)
+(cd build-sanitize/tests && ./unit_tests --gtest_brief=1 && ./image_tests --gtest_brief=1)
 ctest --test-dir build-sanitize -L 'cli|corpus|sanitizer' --output-on-failure -j "$jobs"

@@ -16,6 +16,7 @@
 #include "common/file_identity.h"
 #include "common/staged_files.h"
 #include "image/image_io.h"
+#include "image/image_module.h"
 #include "render/checkpoint.h"
 #include "render/partial_renders.h"
 #include "render/ray_log.h"
@@ -271,6 +272,9 @@ int run_render(RenderRequest rq)
             throw Error("--ray-log cannot be combined with --resume (the logged rays are those of the first passes)");
         resume = read_checkpoint(rq.resume, static_cast<std::size_t>(opt.width) * opt.height);
     }
+    // The module that writes the outputs (and OpenImageIO's libraries), loaded here: a
+    // broken installation fails before the render, and a scene refused above never loads it.
+    (void)image_module();
     Renderer renderer(scene, opt);
     catch_interrupts();
     RenderResult r;

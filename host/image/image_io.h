@@ -1,5 +1,5 @@
-// Image files through OpenImageIO. EXR: linear float RGB plus the per-sample variance as
-// channels variance.R/G/B, the sample count as attribute "pathcl:spp" (and, where pixels
+// Image files, read and written by OpenImageIO in the image module (image/image_module.h). EXR: linear float RGB plus
+// the per-sample variance as channels variance.R/G/B, the sample count as attribute "pathcl:spp" (and, where pixels
 // differ, per pixel as channel "samples"), Image::metadata as string attributes
 // "pathcl:<key>", and a partial render's film state as a second part. PNG: the same
 // radiance through a DisplayTransform (exposure and tone curve; by default clamped to

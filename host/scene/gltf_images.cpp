@@ -5,13 +5,11 @@
 #include <filesystem>
 #include <memory>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <tiny_gltf.h>
 
 #include "common/error.h"
-#include "common/muted_stderr.h"
 #include "image/image_io.h"
+#include "image/image_module.h"
 
 namespace pathcl {
 namespace {
@@ -63,41 +61,34 @@ SceneImage decode_image(const unsigned char* bytes, std::size_t size, const std:
     const char* format = image_format(bytes, size);
     if (!format)
         throw Error(what + ": not a PNG or JPEG image (the formats glTF 2.0 allows)");
-    MutedStderr muted; // libpng prints its errors too; OpenImageIO hands them to us
-    OIIO::Filesystem::IOMemReader reader(bytes, size);
-    auto in = OIIO::ImageInput::create(format);
-    if (!in || !in->set_ioproxy(&reader))
-        throw Error(what + ": OpenImageIO cannot read " + format + " from memory");
-    OIIO::ImageSpec config, spec;
-    config.attribute("oiio:UnassociatedAlpha", 1); // keep colours as stored, not premultiplied
-    if (!in->open(std::string("image.") + format, spec, config))
-        throw Error(what + ": cannot decode the " + format + " image: " + one_line(in->geterror()));
-    int channels = spec.nchannels;
-    if (channels < 1 || channels > 4)
-        throw Error(what + ": has " + std::to_string(channels) + " channels (1 to 4 are supported)");
-    std::size_t w = static_cast<std::size_t>(std::max(spec.width, 0));
-    std::size_t h = static_cast<std::size_t>(std::max(spec.height, 0));
-    check_size(w, h, what);
     SceneImage img;
     img.name = what;
-    img.width = static_cast<std::uint32_t>(w);
-    img.height = static_cast<std::uint32_t>(h);
-    img.bits = spec.format.size() > 1 ? 16 : 8;
-    std::size_t values = w * h * static_cast<std::size_t>(channels);
-    if (admit)
-        admit((values + w * h * 4) * static_cast<std::size_t>(img.bits / 8));
-    bool ok;
-    if (img.bits == 16) {
-        std::vector<std::uint16_t> raw(values);
-        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT16, raw.data());
-        img.rgba16 = expand_to_rgba<std::uint16_t>(raw.data(), w * h, channels, 65535);
-    } else {
-        std::vector<std::uint8_t> raw(values);
-        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data());
-        img.rgba8 = expand_to_rgba<std::uint8_t>(raw.data(), w * h, channels, 255);
-    }
-    if (!ok)
-        throw Error(what + ": cannot decode the " + format + " image: " + one_line(in->geterror()));
+    DecodedShape shape;
+    std::vector<std::uint8_t> raw8;
+    std::vector<std::uint16_t> raw16;
+    const std::string why = image_module().decode(
+        bytes, size, format,
+        [&](const DecodedShape& s) {
+            if (s.channels < 1 || s.channels > 4)
+                throw Error(what + ": has " + std::to_string(s.channels) + " channels (1 to 4 are supported)");
+            const std::size_t w = static_cast<std::size_t>(std::max(s.width, 0));
+            const std::size_t h = static_cast<std::size_t>(std::max(s.height, 0));
+            check_size(w, h, what);
+            if (admit)
+                admit((w * h * static_cast<std::size_t>(s.channels) + w * h * 4) *
+                      static_cast<std::size_t>(s.bits / 8));
+        },
+        shape, raw8, raw16);
+    if (!why.empty())
+        throw Error(what + ": " + one_line(why));
+    img.width = static_cast<std::uint32_t>(shape.width);
+    img.height = static_cast<std::uint32_t>(shape.height);
+    img.bits = shape.bits;
+    const std::size_t texels = static_cast<std::size_t>(img.width) * img.height;
+    if (img.bits == 16)
+        img.rgba16 = expand_to_rgba<std::uint16_t>(raw16.data(), texels, shape.channels, 65535);
+    else
+        img.rgba8 = expand_to_rgba<std::uint8_t>(raw8.data(), texels, shape.channels, 255);
     return img;
 }
 

@@ -1,5 +1,5 @@
 // Images of a glTF file: PNG and JPEG bytes (from files, data: URIs and bufferViews)
-// decoded by OpenImageIO into RGBA SceneImages, and the rule for which image URIs are
+// decoded by OpenImageIO (image/image_module.h) into RGBA SceneImages, and the rule for which image URIs are
 // read. tinygltf decodes nothing itself: load_gltf installs keep_encoded_image as its
 // image loader, and the importer decodes the images textures use with decode_image.
 #pragma once

@@ -1,13 +1,13 @@
 #include "support/gltf_builder.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <numbers>
 #include <stdexcept>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <png.h>
 
 namespace pathcl::test {
 
@@ -260,16 +260,37 @@ int GltfBuilder::add_sphere_mesh(double radius, int stacks, int slices, int mate
 
 namespace {
 
-std::vector<unsigned char> encode_png(int width, int height, OIIO::TypeDesc type, const void* rgba)
+void append_png_bytes(png_structp png, png_bytep data, png_size_t size)
 {
+    auto* bytes = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
+    bytes->insert(bytes->end(), data, data + size);
+}
+
+// An RGBA PNG of 8 or 16 bits a channel, as stored (alpha unassociated), by libpng: a
+// writer independent of the image module that decodes it.
+template <typename T>
+std::vector<unsigned char> encode_png(int width, int height, const std::vector<T>& rgba)
+{
+    constexpr int bits = 8 * sizeof(T);
+    if (rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
+        throw std::runtime_error("a test PNG's pixels do not match its size");
     std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput out_proxy(bytes);
-    auto out = OIIO::ImageOutput::create("png");
-    OIIO::ImageSpec spec(width, height, 4, type);
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out || !out->set_ioproxy(&out_proxy) || !out->open("image.png", spec) || !out->write_image(type, rgba) ||
-        !out->close())
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
         throw std::runtime_error("cannot encode a test PNG");
+    }
+    png_set_write_fn(png, &bytes, append_png_bytes, nullptr);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), bits,
+                 PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    if (bits == 16 && std::endian::native == std::endian::little)
+        png_set_swap(png); // PNG stores 16-bit values big-endian
+    for (int y = 0; y < height; ++y)
+        png_write_row(png, reinterpret_cast<png_const_bytep>(rgba.data() + static_cast<std::size_t>(y) * width * 4));
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
     return bytes;
 }
 
@@ -286,12 +307,12 @@ int GltfBuilder::add_image_bytes(const std::vector<unsigned char>& bytes, const 
 
 int GltfBuilder::add_png_image(int width, int height, const std::vector<std::uint8_t>& rgba8)
 {
-    return add_image_bytes(encode_png(width, height, OIIO::TypeDesc::UINT8, rgba8.data()), "image/png");
+    return add_image_bytes(encode_png(width, height, rgba8), "image/png");
 }
 
 int GltfBuilder::add_png_image16(int width, int height, const std::vector<std::uint16_t>& rgba16)
 {
-    return add_image_bytes(encode_png(width, height, OIIO::TypeDesc::UINT16, rgba16.data()), "image/png");
+    return add_image_bytes(encode_png(width, height, rgba16), "image/png");
 }
 
 int GltfBuilder::add_sampler(int mag_filter, int wrap_s, int wrap_t)
