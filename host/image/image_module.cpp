@@ -48,9 +48,8 @@ const ImageModule& load_module()
                 why.erase(0, path.string().size() + 2); // dlerror names the file too
             throw Error(path.string() + ": cannot load pathcl's image module: " + why);
         }
-        using Entry = const ImageModule* (*)(std::uint32_t);
-        auto entry = reinterpret_cast<Entry>(::dlsym(handle, "pathcl_image_module"));
-        const ImageModule* module = entry ? entry(kImageModuleAbi) : nullptr;
+        auto entry = reinterpret_cast<decltype(&pathcl_image_module)>(::dlsym(handle, "pathcl_image_module"));
+        const ImageModule* module = entry ? entry(kImageModuleAbi, sizeof(Image), sizeof(ImageModule)) : nullptr;
         if (!module)
             throw Error(path.string() + ": is not the image module of this pathcl (another build's?)");
         return *module;

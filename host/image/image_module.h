@@ -7,7 +7,8 @@
 // The module's functions report failure as a message (what went wrong, without the
 // file's name, for the caller to prefix), never as an exception of their own; a callback
 // passed in may throw through them. The module is built from the same tree as the
-// program that loads it: kImageModuleAbi changes whenever this table or Image does.
+// program that loads it; kImageModuleAbi changes whenever this table or Image does, and
+// the sizes of both are checked as well, so that a module from another build is refused.
 #pragma once
 
 #include <cstddef>
@@ -53,5 +54,7 @@ const ImageModule& image_module();
 
 } // namespace pathcl
 
-// The one symbol the module exports: its table, or nullptr for another `abi`.
-extern "C" const pathcl::ImageModule* pathcl_image_module(std::uint32_t abi);
+// The one symbol the module exports: its table, or nullptr where `abi` or the sizes the
+// caller has of Image and ImageModule are not its own.
+extern "C" const pathcl::ImageModule* pathcl_image_module(std::uint32_t abi, std::size_t image_size,
+                                                          std::size_t module_size);

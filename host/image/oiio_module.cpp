@@ -293,7 +293,10 @@ const ImageModule kModule{write_exr, write_png, read_image, read_film_part, deco
 } // namespace
 } // namespace pathcl
 
-extern "C" __attribute__((visibility("default"))) const pathcl::ImageModule* pathcl_image_module(std::uint32_t abi)
+extern "C" __attribute__((visibility("default"))) const pathcl::ImageModule*
+pathcl_image_module(std::uint32_t abi, std::size_t image_size, std::size_t module_size)
 {
-    return abi == pathcl::kImageModuleAbi ? &pathcl::kModule : nullptr;
+    const bool same = abi == pathcl::kImageModuleAbi && image_size == sizeof(pathcl::Image) &&
+                      module_size == sizeof(pathcl::ImageModule);
+    return same ? &pathcl::kModule : nullptr;
 }
