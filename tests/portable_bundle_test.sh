@@ -3,8 +3,7 @@
 # GPU node): the bundle's binaries and image module load no library from outside it but
 # the system's C and C++ runtimes, OpenImageIO's video and VDB libraries are stubs, and the
 # bundled pathcl renders and writes PNG and EXR through the bundled image module and
-# OpenImageIO, and plots through the
-# bundled PLplot driver; its bench_light_tree runs.
+# OpenImageIO, and plots through the bundled PLplot driver; its bench_light_tree runs.
 #   sh tests/portable_bundle_test.sh BUILD_DIR SOURCE_DIR
 set -eu
 BUILD=$1

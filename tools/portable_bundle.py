@@ -6,8 +6,8 @@ that runs on another x86-64 Linux machine without Debian's packages (a GPU node,
 
 OUT_DIR/bin holds pathcl, device_tests and bench_light_tree (stripped) with the image
 module they load from their own folder (libpathcl_oiio.so, host/image/image_module.h),
-OUT_DIR/lib their libraries, the OpenCL ICD loader among them; run them with LD_LIBRARY_PATH=OUT_DIR/lib (and
-OCL_ICD_VENDORS pointing at a folder of .icd files where the machine registers none);
+OUT_DIR/lib their libraries, the OpenCL ICD loader among them; run them with
+LD_LIBRARY_PATH=OUT_DIR/lib (and OCL_ICD_VENDORS pointing at a folder of .icd files where the machine registers none);
 tools/device_check.sh does that. glibc, libstdc++ and libgcc stay the machine's own (newer
 ones run older binaries).
 
@@ -158,7 +158,7 @@ def main():
     source_dir = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", cache, re.M).group(1)
     open(os.path.join(out, "paths.txt"), "w").write(f"{source_dir} {os.path.abspath(build)}/pathcl\n")
     size = sum(os.path.getsize(os.path.join(d, f)) for d, _, files in os.walk(out) for f in files)
-    print(f"{out}: {len(binaries)} binaries, {len(copied)} libraries, {len(STUBBED)} stubs, {size / 2**20:.1f} MiB")
+    print(f"{out}: {len(binaries)} binaries and modules, {len(copied)} libraries, {len(STUBBED)} stubs, {size / 2**20:.1f} MiB")
 
 
 if __name__ == "__main__":
