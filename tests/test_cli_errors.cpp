@@ -97,11 +97,13 @@ protected:
 
     RunResult run(const std::string& args) const { return run_limited("", args); }
 
-    // The binary run after the shell commands `prelude` (limits, traps) in the same shell.
-    RunResult run_limited(const std::string& prelude, const std::string& args) const
+    // The binary (or a copy of it elsewhere) run after the shell commands `prelude`
+    // (limits, traps) in the same shell.
+    RunResult run_limited(const std::string& prelude, const std::string& args,
+                          const std::string& binary = kBinary) const
     {
         fs::path out = capture_ / "stdout.txt", err = capture_ / "stderr.txt";
-        std::string cmd = "cd " + quoted(work_.string()) + " && " + prelude + quoted(kBinary) + " " + args + " >" +
+        std::string cmd = "cd " + quoted(work_.string()) + " && " + prelude + quoted(binary) + " " + args + " >" +
                           quoted(out.string()) + " 2>" + quoted(err.string());
         int rc = std::system(cmd.c_str());
         RunResult r;
@@ -181,15 +183,10 @@ TEST_F(Cli, ABrokenImageModuleIsNamedBeforeTheRender)
     fs::create_directories(bin);
     fs::copy_file(kBinary, bin / "pathcl");
     write_file(bin / "libpathcl_oiio.so", "not a shared library");
-    const fs::path err = capture_ / "stderr.txt", cache = root_ / "cache";
+    const fs::path cache = root_ / "cache";
     fs::create_directories(cache);
-    std::string cmd = "cd " + quoted(work_.string()) + " && PATHCL_CACHE_DIR=" + quoted(cache.string()) + " " +
-                      quoted((bin / "pathcl").string()) + " render " + quoted(kCornell) +
-                      " -o out.png --width 4 --height 4 --spp 1 2>" + quoted(err.string());
-    int rc = std::system(cmd.c_str());
-    RunResult r;
-    r.status = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    r.err = read_file(err);
+    RunResult r = run_limited("PATHCL_CACHE_DIR=" + quoted(cache.string()) + " ",
+                              "render " + quoted(kCornell) + " -o out.png" + kTiny, (bin / "pathcl").string());
     expect_clean_failure(r, (bin / "libpathcl_oiio.so").string() + ": cannot load pathcl's image module");
     EXPECT_EQ(listing(work_), std::set<std::string>{}) << "an output file was created";
     EXPECT_EQ(listing(cache), std::set<std::string>{}) << "the render began";

@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 constexpr const char* kModuleName = "libpathcl_oiio.so";
 
 // Where the module may be: beside the program (the build tree, a portable bundle), in
-// lib/pathcl of the folder above (an installed pathcl), or where the build that made the program put it
-// (the test programs, one folder below).
+// lib/pathcl of the folder above (an installed pathcl), or where the build that made the
+// program put it (the test programs, one folder below).
 std::vector<fs::path> module_candidates()
 {
     std::vector<fs::path> paths;
@@ -55,7 +55,7 @@ const ImageModule& load_module()
         return *module;
     }
     throw Error(std::string("pathcl's image module ") + kModuleName +
-                " (which reads and writes images) is missing: " + "looked for " + tried);
+                " (which reads and writes images) is missing: looked for " + tried);
 }
 
 } // namespace
