@@ -44,6 +44,14 @@ LightCone whole_sphere(double cos_e)
     return {{0.0, 0.0, 1.0}, -1.0, cos_e};
 }
 
+// std::acos, without the call for the cosines of a triangle's cone (1: one direction; 0:
+// its emission, pi/2 past it), which every emissive triangle's record takes.
+double arc_cosine(double c)
+{
+    static const double zero = std::acos(0.0);
+    return c == 1.0 ? 0.0 : c == 0.0 ? zero : std::acos(c);
+}
+
 // A LightCone with its angles and sine, computed once: the build unites and weighs cones
 // millions of times.
 struct Cone {
@@ -53,7 +61,7 @@ struct Cone {
     Cone() = default;
     explicit Cone(const LightCone& c)
         : axis(c.axis), cos_o(std::clamp(c.cos_o, -1.0, 1.0)), sin_o(std::sqrt(1.0 - cos_o * cos_o)),
-          theta_o(std::acos(cos_o)), cos_e(std::clamp(c.cos_e, -1.0, 1.0)), theta_e(std::acos(cos_e))
+          theta_o(arc_cosine(cos_o)), cos_e(std::clamp(c.cos_e, -1.0, 1.0)), theta_e(arc_cosine(cos_e))
     {}
     Cone(const glm::dvec3& a, double theta, const Cone& spread)
         : axis(a), cos_o(std::cos(theta)), sin_o(std::sin(theta)), theta_o(theta), cos_e(spread.cos_e),
@@ -196,10 +204,17 @@ struct Bounds {
 // paper's M_Omega): the solid angle its directions sweep, weighted by their cosine.
 double orientation_measure(const Cone& c)
 {
-    const double theta_w = std::min(c.theta_o + c.theta_e, kPi);
+    // The paper's cos(theta_o - 2 theta_w), theta_w = min(theta_o + theta_e, pi), without
+    // a cosine: cos(theta_o) where theta_w is pi, else cos(theta_o + 2 theta_e) from the
+    // double angle's cosine and sine.
+    double theta_w = kPi, cos_ow = c.cos_o;
+    if (c.theta_o + c.theta_e < kPi) {
+        theta_w = c.theta_o + c.theta_e;
+        const double sin_e = std::sqrt(std::max(0.0, 1.0 - c.cos_e * c.cos_e));
+        cos_ow = c.cos_o * (2.0 * c.cos_e * c.cos_e - 1.0) - c.sin_o * (2.0 * sin_e * c.cos_e);
+    }
     return 2.0 * kPi * (1.0 - c.cos_o) +
-           kPi / 2.0 *
-               (2.0 * theta_w * c.sin_o - std::cos(c.theta_o - 2.0 * theta_w) - 2.0 * c.theta_o * c.sin_o + c.cos_o);
+           kPi / 2.0 * (2.0 * theta_w * c.sin_o - cos_ow - 2.0 * c.theta_o * c.sin_o + c.cos_o);
 }
 
 double saoh_cost(const Bounds& b)
