@@ -11,6 +11,7 @@
 // cluster pmf that finds only its first light. The importance of a one-sided emitter is
 // zero exactly where it cannot reach.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -307,61 +308,142 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
 // made as unions of their children's, not tightened about their lights, 1.64 to 1.94
 // (mean 1.79); and before that, with coplanar neighbours' cones united into the whole
 // sphere, 2.6 to 2.9 (many picks end where no triangle faces the point).
-TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
+// How close light_tree_pmf comes to the ideal pmf q over emitters (one-sided triangles)
+// seen from a shading point: q is each triangle's area times the cosines at both ends over
+// the squared distance, and the second moment sum q^2 / p is the factor by which the pick
+// alone multiplies the light estimate's mean square (1: the ideal). `power` is the same
+// moment of a pick by power (area), `unreached` the share of q the tree never picks.
+struct PickMoments {
+    double moment = 0.0, power = 0.0, unreached = 0.0;
+};
+
+PickMoments pick_moments(const test::GlowingSphere& emitters, const Shading& sp)
 {
-    const int stacks = 80, slices = 80;
-    const glm::dvec3 centre(2.0, 0.9, 2.0);
-    const double radius = 0.4;
-    const test::GlowingSphere sphere = test::glowing_sphere(stacks, slices, centre, radius);
-    const std::vector<LightBounds>& lights = sphere.lights;
-    const std::vector<glm::dvec3>&centroid = sphere.centroid, &normal = sphere.normal;
-    const std::vector<double>& area = sphere.area;
-    ASSERT_GT(glm::dot(normal[0], centroid[0] - centre), 0.0) << "the triangles face outward";
+    const std::vector<LightBounds>& lights = emitters.lights;
     const TreeScene scene = tree_scene(build_light_tree(lights), lights.size());
     ClDevice& dev = test::test_device();
     cl::Program program =
         test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
     DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
+    cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
+    cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+    bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
+    dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
+    const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
+    const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
+    std::vector<double> q(lights.size());
+    double q_sum = 0.0, area_sum = 0.0;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const glm::dvec3 d = p - emitters.centroid[i];
+        const double d2 = glm::dot(d, d);
+        const glm::dvec3 w = d / std::sqrt(d2);
+        q[i] = emitters.area[i] * std::max(0.0, glm::dot(emitters.normal[i], w)) * std::max(0.0, -glm::dot(n, w)) / d2;
+        q_sum += q[i];
+        area_sum += emitters.area[i];
+    }
+    PickMoments m;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const double qi = q[i] / q_sum;
+        if (qi == 0.0)
+            continue;
+        if (pmf[i] > 0.0f)
+            m.moment += qi * qi / pmf[i];
+        else
+            m.unreached += qi;
+        m.power += qi * qi / (emitters.area[i] / area_sum);
+    }
+    return m;
+}
+
+// A glowing sphere (12,640 one-sided triangles facing out; each quad's two are exactly
+// coplanar), seen from points below and beside it (the power table, with half its picks
+// facing away, gives 3.7 to 6.7 here). Measured: 1.43 to 1.73, mean 1.56. Children
+// weighed by their upper bounds alone give a mean of 1.68; nodes' cones made as unions of
+// their children's, not tightened about their lights, 1.64 to 1.94 (mean 1.79); and
+// before that, with coplanar neighbours' cones united into the whole sphere, 2.6 to 2.9
+// (many picks end where no triangle faces the point).
+TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
+{
+    const glm::dvec3 centre(2.0, 0.9, 2.0);
+    const test::GlowingSphere sphere = test::glowing_sphere(80, 80, centre, 0.4);
+    ASSERT_GT(glm::dot(sphere.normal[0], sphere.centroid[0] - centre), 0.0) << "the triangles face outward";
     const std::vector<Shading> points = {{{2.6f, 0.0f, 2.3f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{2.0f, 0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{3.0f, 0.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{4.0f, 1.4f, 2.5f, 0.0f}, {-1.0f, 0.0f, 0.0f, 0.0f}}};
     double mean_moment = 0.0;
     for (std::size_t k = 0; k < points.size(); ++k) {
-        const Shading& sp = points[k];
-        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
-        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
-        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
-        const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
-        const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
-        std::vector<double> q(lights.size());
-        double q_sum = 0.0, area_sum = 0.0;
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            const glm::dvec3 d = p - centroid[i];
-            const double d2 = glm::dot(d, d);
-            const glm::dvec3 w = d / std::sqrt(d2);
-            q[i] = area[i] * std::max(0.0, glm::dot(normal[i], w)) * std::max(0.0, -glm::dot(n, w)) / d2;
-            q_sum += q[i];
-            area_sum += area[i];
-        }
-        double moment = 0.0, power_moment = 0.0, unreached = 0.0;
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            const double qi = q[i] / q_sum;
-            if (qi == 0.0)
-                continue;
-            if (pmf[i] > 0.0f)
-                moment += qi * qi / pmf[i];
-            else
-                unreached += qi;
-            power_moment += qi * qi / (area[i] / area_sum);
-        }
-        EXPECT_EQ(unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
-        EXPECT_LE(moment, 1.85) << "point " << k;
-        mean_moment += moment / static_cast<double>(points.size());
-        std::cout << "point " << k << ": second moment " << moment << " (power table " << power_moment << ")\n";
+        const PickMoments m = pick_moments(sphere, points[k]);
+        EXPECT_EQ(m.unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
+        EXPECT_LE(m.moment, 1.85) << "point " << k;
+        mean_moment += m.moment / static_cast<double>(points.size());
+        std::cout << "point " << k << ": second moment " << m.moment << " (power table " << m.power << ")\n";
     }
     EXPECT_LE(mean_moment, 1.62);
+}
+
+// `count` small cubes at random places, each turned at random, glowing from all six faces:
+// neighbouring triangles that face apart.
+test::GlowingSphere glowing_cubes(int count, std::mt19937& rng)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::GlowingSphere cubes;
+    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+        const glm::dvec3 cr = glm::cross(b - a, c - a);
+        LightBounds t;
+        t.lo = glm::min(a, glm::min(b, c));
+        t.hi = glm::max(a, glm::max(b, c));
+        t.phi = 0.5 * glm::length(cr);
+        t.cone = {glm::normalize(cr), 1.0, 0.0};
+        cubes.lights.push_back(t);
+        cubes.centroid.push_back((a + b + c) / 3.0);
+        cubes.normal.push_back(t.cone.axis);
+        cubes.area.push_back(t.phi);
+    };
+    auto random_vector = [&] { return glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5); };
+    for (int cube = 0; cube < count; ++cube) {
+        const glm::dvec3 centre(4.0 * u(rng), 0.5 + 1.5 * u(rng), 4.0 * u(rng));
+        const double half = 0.015 + 0.06 * u(rng);
+        const glm::dvec3 e0 = glm::normalize(random_vector());
+        const glm::dvec3 e1 = glm::normalize(glm::cross(e0, random_vector()));
+        const std::array<glm::dvec3, 3> axes = {e0, e1, glm::cross(e0, e1)};
+        for (int f = 0; f < 3; ++f)
+            for (double side : {-1.0, 1.0}) {
+                // The face whose outward normal is n, its corners counter-clockwise seen
+                // from outside (t1 x t2 = n).
+                const glm::dvec3 n = side * axes[f], t1 = axes[(f + 1) % 3], t2 = side * axes[(f + 2) % 3];
+                const glm::dvec3 o = centre + half * n;
+                const glm::dvec3 a = o - half * t1 - half * t2, b = o + half * t1 - half * t2,
+                                 c = o + half * t1 + half * t2, d = o - half * t1 + half * t2;
+                add(a, b, c);
+                add(a, c, d);
+            }
+    }
+    return cubes;
+}
+
+// 400 glowing cubes (4,800 triangles), seen from twelve points of the floor below them.
+// The pmfs are exact, so the bound can be tight. Measured: 1.23 to 1.40, mean 1.300 (the
+// power table 6.3 to 15.3). Ranges of at most eight lights split by the SAOH as well
+// (kPlacedLights 0) gave a mean of 1.295; every range split by power and box area alone
+// (the paper's SAH, no orientation measure) 1.321.
+TEST(LightTreeSampling, PicksAmongGlowingCubesComeCloseToTheIdeal)
+{
+    std::mt19937 rng(5);
+    const test::GlowingSphere cubes = glowing_cubes(400, rng);
+    std::uniform_real_distribution<double> u(0.0, 4.0);
+    double mean_moment = 0.0;
+    const int points = 12;
+    for (int k = 0; k < points; ++k) {
+        const Shading sp{{static_cast<float>(u(rng)), 0.0f, static_cast<float>(u(rng)), 0.0f},
+                         {0.0f, 1.0f, 0.0f, 0.0f}};
+        const PickMoments m = pick_moments(cubes, sp);
+        EXPECT_EQ(m.unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
+        EXPECT_LE(m.moment, 1.45) << "point " << k;
+        mean_moment += m.moment / points;
+        std::cout << "point " << k << ": second moment " << m.moment << " (power table " << m.power << ")\n";
+    }
+    EXPECT_LE(mean_moment, 1.31);
 }
 
 } // namespace

@@ -48,8 +48,9 @@ struct LightTree {
 };
 
 // Builds the tree by the surface area orientation heuristic (the paper's SAOH: binned
-// along each axis, power x orientation measure x box area), one light per leaf of the
-// binary tree; in the eight-wide one, a few neighbouring lights of one surface that face
+// along the longest axis of the lights' centroids, power x orientation measure x box
+// area; ranges of at most eight lights by power x box area alone), one light per leaf of
+// the binary tree; in the eight-wide one, a few neighbouring lights of one surface that face
 // nearly one way may share a leaf (a cluster). Throws pathcl::Error if a light's bounds
 // are not finite, or if there are more lights than a leaf can index (2^28).
 LightTree build_light_tree(const std::vector<LightBounds>& lights);
