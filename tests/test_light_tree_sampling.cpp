@@ -388,18 +388,6 @@ test::GlowingSphere glowing_cubes(int count, std::mt19937& rng)
 {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     test::GlowingSphere cubes;
-    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        const glm::dvec3 cr = glm::cross(b - a, c - a);
-        LightBounds t;
-        t.lo = glm::min(a, glm::min(b, c));
-        t.hi = glm::max(a, glm::max(b, c));
-        t.phi = 0.5 * glm::length(cr);
-        t.cone = {glm::normalize(cr), 1.0, 0.0};
-        cubes.lights.push_back(t);
-        cubes.centroid.push_back((a + b + c) / 3.0);
-        cubes.normal.push_back(t.cone.axis);
-        cubes.area.push_back(t.phi);
-    };
     auto random_vector = [&] { return glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5); };
     for (int cube = 0; cube < count; ++cube) {
         const glm::dvec3 centre(4.0 * u(rng), 0.5 + 1.5 * u(rng), 4.0 * u(rng));
@@ -415,8 +403,8 @@ test::GlowingSphere glowing_cubes(int count, std::mt19937& rng)
                 const glm::dvec3 o = centre + half * n;
                 const glm::dvec3 a = o - half * t1 - half * t2, b = o + half * t1 - half * t2,
                                  c = o + half * t1 + half * t2, d = o - half * t1 + half * t2;
-                add(a, b, c);
-                add(a, c, d);
+                test::add_emitter(cubes, a, b, c);
+                test::add_emitter(cubes, a, c, d);
             }
     }
     return cubes;

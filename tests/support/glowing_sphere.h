@@ -13,11 +13,27 @@
 
 namespace pathcl::test {
 
+// Emissive triangles as the light tree sees them (a glowing sphere's, or any).
 struct GlowingSphere {
     std::vector<LightBounds> lights; // power = area
     std::vector<glm::dvec3> centroid, normal;
     std::vector<double> area;
 };
+
+// Appends the one-sided emissive triangle a, b, c (facing where it winds counter-clockwise).
+inline void add_emitter(GlowingSphere& s, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+{
+    const glm::dvec3 cr = glm::cross(b - a, c - a);
+    LightBounds t;
+    t.lo = glm::min(a, glm::min(b, c));
+    t.hi = glm::max(a, glm::max(b, c));
+    t.phi = 0.5 * glm::length(cr);
+    t.cone = {glm::normalize(cr), 1.0, 0.0};
+    s.lights.push_back(t);
+    s.centroid.push_back((a + b + c) / 3.0);
+    s.normal.push_back(t.cone.axis);
+    s.area.push_back(t.phi);
+}
 
 // The sphere around `centre`, its poles on y turned by turn_z about z and then by turn_x
 // about x (radians; 0 and 0 leave them on y): turned, its poles, where the triangles
@@ -33,18 +49,7 @@ inline GlowingSphere glowing_sphere(int stacks, int slices, const glm::dvec3& ce
         return centre + radius * v;
     };
     GlowingSphere s;
-    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        const glm::dvec3 cr = glm::cross(b - a, c - a);
-        LightBounds t;
-        t.lo = glm::min(a, glm::min(b, c));
-        t.hi = glm::max(a, glm::max(b, c));
-        t.phi = 0.5 * glm::length(cr);
-        t.cone = {glm::normalize(cr), 1.0, 0.0};
-        s.lights.push_back(t);
-        s.centroid.push_back((a + b + c) / 3.0);
-        s.normal.push_back(t.cone.axis);
-        s.area.push_back(t.phi);
-    };
+    auto add = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) { add_emitter(s, a, b, c); };
     for (int i = 0; i < stacks; ++i)
         for (int j = 0; j < slices; ++j) {
             // Wound outward: counter-clockwise seen from outside.
