@@ -10,11 +10,11 @@
 # ${PATHCL_INTEL_OPENCL_DIR:-$HOME/.cache/pathcl-intel-opencl}, once; writes an ICD folder
 # beside it naming the wheel's libintelocl.so and holding a copy of every ICD file in
 # /etc/OpenCL/vendors; and sets OCL_ICD_VENDORS to that folder and puts the wheel's lib/
-# first on LD_LIBRARY_PATH. The latter is needed: pathcl loads Debian's TBB with
-# OpenImageIO (its image module, when a scene's textures are decoded) before the ICD
-# loader opens libintelocl.so, which needs the newer TBB of the wheel and otherwise fails
-# to load, and the ICD loader then leaves the platform out without a word. Nothing outside
-# the cache folder changes.
+# first on LD_LIBRARY_PATH. The latter serves programs that load OpenImageIO, and with it
+# Debian's TBB, before they list OpenCL platforms: libintelocl.so needs the wheel's newer
+# TBB and otherwise fails to load, and the ICD loader then leaves the platform out without
+# a word (pathcl's own commands list them first; docs/devices.md). Nothing outside the
+# cache folder changes.
 #
 # Without PyPI (or pip) the install fails with one line and exit status 2, as any other
 # missing dependency of the test suite does; an interrupted install is never taken for a

@@ -49,6 +49,19 @@ exact="$exact|Samplers|Film|LightSampling|LightTreeSampling|PointLight|SpotLight
 exact="$exact|MaterialInputs|KernelMath|KernelSource|DeviceCompiler|Wavefront|WavefrontTool)\\."
 PATHCL_PLATFORM="$intel" sh tools/intel_opencl.sh ctest --test-dir build -L device -R "$exact" --output-on-failure -j "$jobs"
 
+# A textured scene rendered on Intel's runtime with its ICD file alone, without the wheel's
+# lib/ on the library path, as where the runtime is installed system-wide: pathcl loads the
+# OpenCL implementations before OpenImageIO brings Debian's TBB, older than the one the
+# runtime needs, or the platform drops out of the list (docs/devices.md).
+(
+    library_path=${LD_LIBRARY_PATH-}
+    eval "$(sh tools/intel_opencl.sh)"
+    out=$(mktemp -d)
+    LD_LIBRARY_PATH=$library_path PATHCL_PLATFORM="$intel" ./build/pathcl render scenes/textured.gltf --width 32 \
+        --height 32 --spp 1 --quiet -o "$out/textured.exr"
+    rm -rf "$out"
+)
+
 # -O1 with line tables only (-g1): the sanitizers' reports keep their files and lines, and
 # the build takes about half the time it takes at -O2 -g (a command-line source: 17 s
 # against 36 s).

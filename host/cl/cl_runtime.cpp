@@ -150,6 +150,11 @@ std::vector<PlatformInfo> list_platforms()
     return out;
 }
 
+void load_opencl_platforms()
+{
+    (void)platforms();
+}
+
 std::vector<DeviceInfo> list_devices()
 {
     std::vector<DeviceInfo> out;

@@ -36,6 +36,13 @@ struct PlatformInfo {
 // configuration), which is not an error.
 std::vector<PlatformInfo> list_platforms();
 
+// Has the ICD loader load every OpenCL implementation it knows of, as the first listing
+// of platforms or devices does. Rendering commands do this before OpenImageIO's
+// libraries are loaded (set_image_module_prelude): Debian's TBB comes with them, and
+// Intel's CPU runtime, which needs its own newer TBB, fails to load after it and drops
+// out of the list without a word (docs/devices.md).
+void load_opencl_platforms();
+
 // A device with its context and in-order queue.
 struct ClDevice {
     DeviceInfo info;

@@ -4,9 +4,11 @@
 #include <cstdio>
 
 #include "bench/kernel_bench.h"
+#include "cl/cl_runtime.h"
 #include "cli/commands.h"
 #include "cli/help_format.h"
 #include "cli/options.h"
+#include "image/image_module.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 
@@ -34,6 +36,7 @@ int run_kernel_bench(const Scene& scene, const BenchRequest& rq)
 
 int run_bench(BenchRequest rq)
 {
+    set_image_module_prelude(load_opencl_platforms); // the OpenCL implementations before OpenImageIO
     Scene scene = load_gltf(rq.scene_path, {-1, "", rq.copy_instances});
     rq.options.devices = parse_devices(rq.device);
     if (rq.kernels)

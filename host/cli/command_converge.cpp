@@ -11,6 +11,7 @@
 #include <fstream>
 #include <optional>
 
+#include "cl/cl_runtime.h"
 #include "cli/commands.h"
 #include "cli/help_format.h"
 #include "cli/interrupt.h"
@@ -24,6 +25,7 @@
 #include "converge/convergence_plots.h"
 #include "converge/convergence_summary.h"
 #include "image/image_io.h"
+#include "image/image_module.h"
 #include "render/batches.h"
 #include "scene/gltf_loader.h"
 
@@ -135,6 +137,7 @@ std::vector<double> parse_targets(const std::string& text)
 
 int run_converge(ConvergeRequest rq)
 {
+    set_image_module_prelude(load_opencl_platforms); // the OpenCL implementations before OpenImageIO
     if (rq.vary.empty())
         throw Error("--vary: give at least one knob to vary (KNOB=V1,V2,...)");
     rq.ladder = parse_ladder(rq.ladder_text);

@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "common/error.h"
 #include "compile/kernel_features.h"
+#include "image/image_module.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 
@@ -33,6 +34,7 @@ std::string join(const std::vector<std::string>& items)
 
 int run_info(const InfoRequest& rq)
 {
+    set_image_module_prelude(load_opencl_platforms); // the OpenCL implementations before OpenImageIO
     Scene scene = load_gltf(rq.scene_path, {-1, rq.variant, rq.copy_instances});
     SceneSummary s = summarize_scene(scene);
     std::printf("scene        %s\n", rq.scene_path.c_str());

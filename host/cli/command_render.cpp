@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "cl/cl_runtime.h"
 #include "cli/commands.h"
 #include "cli/help_format.h"
 #include "cli/interrupt.h"
@@ -219,6 +220,7 @@ void print_summary(const RenderRequest& rq, const RenderResult& r)
 
 int run_render(RenderRequest rq)
 {
+    set_image_module_prelude(load_opencl_platforms); // the OpenCL implementations before OpenImageIO
     if (!std::isfinite(rq.display.exposure_ev) || std::fabs(rq.display.exposure_ev) > 64.0)
         throw Error("--exposure: must be a finite number of stops between -64 and 64");
     for (const std::string& output : rq.outputs)

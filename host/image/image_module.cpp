@@ -2,7 +2,9 @@
 
 #include <dlfcn.h>
 #include <filesystem>
+#include <functional>
 #include <system_error>
+#include <utility>
 
 #include "common/error.h"
 
@@ -31,8 +33,17 @@ std::vector<fs::path> module_candidates()
     return paths;
 }
 
+// set_image_module_prelude's function, or empty.
+std::function<void()>& module_prelude()
+{
+    static std::function<void()> prelude;
+    return prelude;
+}
+
 const ImageModule& load_module()
 {
+    if (module_prelude())
+        module_prelude()();
     std::string tried;
     for (const fs::path& path : module_candidates()) {
         std::error_code ec;
@@ -59,6 +70,11 @@ const ImageModule& load_module()
 }
 
 } // namespace
+
+void set_image_module_prelude(std::function<void()> prelude)
+{
+    module_prelude() = std::move(prelude);
+}
 
 const ImageModule& image_module()
 {

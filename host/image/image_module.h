@@ -52,6 +52,12 @@ struct ImageModule {
 // pathcl::Error naming the file when it cannot be loaded.
 const ImageModule& image_module();
 
+// Runs `prelude` just before the module is first loaded, whichever image it is loaded
+// for (a scene's texture, an output): rendering commands load the OpenCL implementations
+// there (load_opencl_platforms), before the libraries the module brings. Set before any
+// image is read or written.
+void set_image_module_prelude(std::function<void()> prelude);
+
 } // namespace pathcl
 
 // The one symbol the module exports: its table, or nullptr where `abi` or the sizes the
