@@ -234,7 +234,8 @@ constexpr std::uint32_t kMedianDepth = 30;
 // binning their cones took about a sixth of the build's time. Over randomly turned glowing
 // cubes the picks' second moment went from 1.295 to 1.300 (1 is ideal;
 // LightTreeSampling.PicksAmongGlowingCubesComeCloseToTheIdeal); the trees of the glowing
-// sphere and of the lamps are the same but for ulps of a few cones.
+// sphere and of the lamps are the same but for ulps of a few cones and the bits of some
+// lights' paths past their cluster, which nothing reads.
 constexpr std::uint32_t kPlacedLights = LIGHT_TREE_WIDTH;
 // Trees of more lights than this are built on every core (SharedWork): subtrees of more
 // than kShareLights are handed to a core that has nothing left to build, and the records
