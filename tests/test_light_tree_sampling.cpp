@@ -9,7 +9,8 @@
 // its neighbouring triangles, picked among by power. A descent that does not rescale its
 // number fails the same test, as do a cluster that always gives its first light and a
 // cluster pmf that finds only its first light. The importance of a one-sided emitter is
-// zero exactly where it cannot reach.
+// zero exactly where it cannot reach. Over a glowing sphere and over glowing cubes, the
+// pmfs come within a bound of the ideal one.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -298,16 +299,6 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     EXPECT_GT(behind, 1000u);
 }
 
-// The pmf light_tree_pmf gives each triangle of a glowing sphere (12,640 one-sided
-// triangles facing out; each quad's two are exactly coplanar), seen from points below and
-// beside it, against the ideal pmf q: each triangle's area times the cosines at both ends
-// over the squared distance. The second moment sum q^2 / p is the factor by which the
-// pick alone multiplies the light estimate's mean square (1: the ideal; the power table,
-// with half its picks facing away, gives 3.7 to 6.7 here). Measured: 1.43 to 1.73, mean
-// 1.56. Children weighed by their upper bounds alone give a mean of 1.68; nodes' cones
-// made as unions of their children's, not tightened about their lights, 1.64 to 1.94
-// (mean 1.79); and before that, with coplanar neighbours' cones united into the whole
-// sphere, 2.6 to 2.9 (many picks end where no triangle faces the point).
 // How close light_tree_pmf comes to the ideal pmf q over emitters (one-sided triangles)
 // seen from a shading point: q is each triangle's area times the cosines at both ends over
 // the squared distance, and the second moment sum q^2 / p is the factor by which the pick
