@@ -308,7 +308,8 @@ struct PickMoments {
     double moment = 0.0, power = 0.0, unreached = 0.0;
 };
 
-PickMoments pick_moments(const test::GlowingSphere& emitters, const Shading& sp)
+// The PickMoments of one tree over the emitters, seen from each of `points`.
+std::vector<PickMoments> pick_moments(const test::GlowingSphere& emitters, const std::vector<Shading>& points)
 {
     const std::vector<LightBounds>& lights = emitters.lights;
     const TreeScene scene = tree_scene(build_light_tree(lights), lights.size());
@@ -316,34 +317,41 @@ PickMoments pick_moments(const test::GlowingSphere& emitters, const Shading& sp)
     cl::Program program =
         test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
     DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
-    cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
-    cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-    bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
-    dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
-    const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
-    const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
-    std::vector<double> q(lights.size());
-    double q_sum = 0.0, area_sum = 0.0;
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const glm::dvec3 d = p - emitters.centroid[i];
-        const double d2 = glm::dot(d, d);
-        const glm::dvec3 w = d / std::sqrt(d2);
-        q[i] = emitters.area[i] * std::max(0.0, glm::dot(emitters.normal[i], w)) * std::max(0.0, -glm::dot(n, w)) / d2;
-        q_sum += q[i];
-        area_sum += emitters.area[i];
+    double area_sum = 0.0;
+    for (double area : emitters.area)
+        area_sum += area;
+    std::vector<PickMoments> moments;
+    for (const Shading& sp : points) {
+        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
+        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
+        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
+        const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
+        const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
+        std::vector<double> q(lights.size());
+        double q_sum = 0.0;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            const glm::dvec3 d = p - emitters.centroid[i];
+            const double d2 = glm::dot(d, d);
+            const glm::dvec3 w = d / std::sqrt(d2);
+            q[i] =
+                emitters.area[i] * std::max(0.0, glm::dot(emitters.normal[i], w)) * std::max(0.0, -glm::dot(n, w)) / d2;
+            q_sum += q[i];
+        }
+        PickMoments m;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            const double qi = q[i] / q_sum;
+            if (qi == 0.0)
+                continue;
+            if (pmf[i] > 0.0f)
+                m.moment += qi * qi / pmf[i];
+            else
+                m.unreached += qi;
+            m.power += qi * qi / (emitters.area[i] / area_sum);
+        }
+        moments.push_back(m);
     }
-    PickMoments m;
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const double qi = q[i] / q_sum;
-        if (qi == 0.0)
-            continue;
-        if (pmf[i] > 0.0f)
-            m.moment += qi * qi / pmf[i];
-        else
-            m.unreached += qi;
-        m.power += qi * qi / (emitters.area[i] / area_sum);
-    }
-    return m;
+    return moments;
 }
 
 // A glowing sphere (12,640 one-sided triangles facing out; each quad's two are exactly
@@ -362,9 +370,10 @@ TEST(LightTreeSampling, PicksOnAGlowingSphereComeCloseToTheIdeal)
                                          {{2.0f, 0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{3.0f, 0.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}},
                                          {{4.0f, 1.4f, 2.5f, 0.0f}, {-1.0f, 0.0f, 0.0f, 0.0f}}};
+    const std::vector<PickMoments> moments = pick_moments(sphere, points);
     double mean_moment = 0.0;
     for (std::size_t k = 0; k < points.size(); ++k) {
-        const PickMoments m = pick_moments(sphere, points[k]);
+        const PickMoments& m = moments[k];
         EXPECT_EQ(m.unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
         EXPECT_LE(m.moment, 1.85) << "point " << k;
         mean_moment += m.moment / static_cast<double>(points.size());
@@ -411,15 +420,17 @@ TEST(LightTreeSampling, PicksAmongGlowingCubesComeCloseToTheIdeal)
     std::mt19937 rng(5);
     const test::GlowingSphere cubes = glowing_cubes(400, rng);
     std::uniform_real_distribution<double> u(0.0, 4.0);
+    std::vector<Shading> points;
+    for (int k = 0; k < 12; ++k)
+        points.push_back(
+            {{static_cast<float>(u(rng)), 0.0f, static_cast<float>(u(rng)), 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}});
+    const std::vector<PickMoments> moments = pick_moments(cubes, points);
     double mean_moment = 0.0;
-    const int points = 12;
-    for (int k = 0; k < points; ++k) {
-        const Shading sp{{static_cast<float>(u(rng)), 0.0f, static_cast<float>(u(rng)), 0.0f},
-                         {0.0f, 1.0f, 0.0f, 0.0f}};
-        const PickMoments m = pick_moments(cubes, sp);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const PickMoments& m = moments[k];
         EXPECT_EQ(m.unreached, 0.0) << "point " << k << ": facing triangles of pmf 0";
         EXPECT_LE(m.moment, 1.45) << "point " << k;
-        mean_moment += m.moment / points;
+        mean_moment += m.moment / static_cast<double>(points.size());
         std::cout << "point " << k << ": second moment " << m.moment << " (power table " << m.power << ")\n";
     }
     EXPECT_LE(mean_moment, 1.31);
