@@ -313,13 +313,17 @@ typedef struct {
 #define LIGHT_TREE_MAX_LEAF_INDEX 0x0fffffff
 #define LIGHT_TREE_CLUSTER_MAX 256
 
-/* An entry of light_tree_cluster. A cluster is a header (light: the number of its lights;
- * phi_sum: their power) and then its lights in the order of their indices, each with the
- * sum of the powers (luminance, W) up to and including its own: a pick by power and a
- * light's pmf are both binary searches. 8 bytes. */
+/* An entry of light_tree_cluster. A cluster is a header (light: the number of its lights)
+ * and then its lights in the order of their indices, each with its probability among
+ * them (pmf: in proportion to power) and its slot of their alias table: the slot keeps
+ * its light where the coin falls below keep, and gives the light of entry alias (from 0,
+ * after the header) elsewhere. A pick reads one entry, or two; a light's pmf is a binary
+ * search over the indices. 16 bytes. */
 typedef struct {
     pcl_int light;
-    pcl_float phi_sum;
+    pcl_float pmf;
+    pcl_float keep;
+    pcl_int alias;
 } LightTreeClusterLight;
 
 /* Camera projections */

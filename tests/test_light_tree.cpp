@@ -388,9 +388,9 @@ std::vector<ClusterLane> cluster_lanes(const LightTree& tree)
 
 // In a node over many lights, a lane over neighbouring triangles of one surface that face
 // nearly one way ends the descent: a cluster of up to LIGHT_TREE_CLUSTER_MAX, whose lights
-// the kernel picks among by power (stored with them as running sums, in the order of the
-// lights' indices). Lamps apart, or triangles that face different ways, stay lanes of
-// their own.
+// the kernel picks among by power (stored in the order of the lights' indices, each with
+// its probability and its slot of an alias table that realizes it). Lamps apart, or
+// triangles that face different ways, stay lanes of their own.
 TEST(LightTree, NeighbouringTrianglesFacingOneWayEndTheDescentAsAClusterPickedByPower)
 {
     // 40 x 40: neighbouring quads 4.5 and 9 degrees apart; 120 x 120, 1.5 and 3 degrees.
@@ -404,16 +404,33 @@ TEST(LightTree, NeighbouringTrianglesFacingOneWayEndTheDescentAsAClusterPickedBy
             EXPECT_GE(c.lights.size(), 4u) << "node " << c.node << " lane " << c.lane; // two halves of two or more
             EXPECT_LE(c.lights.size(), std::size_t(LIGHT_TREE_CLUSTER_MAX));
             EXPECT_GE(lane.cone.cos_o, std::cos(0.25) - 1e-6) << "node " << c.node << " lane " << c.lane;
+            const std::size_t count = c.lights.size();
             double phi = 0.0;
-            for (std::size_t i = 0; i < c.lights.size(); ++i) {
-                const std::size_t l = c.lights[i];
-                EXPECT_TRUE(i == 0 || c.lights[i - 1] < l) << "cluster " << c.header << ": lights out of order";
+            for (std::size_t l : c.lights)
                 phi += sphere.lights[l].phi;
-                EXPECT_EQ(tree.cluster.at(static_cast<std::size_t>(c.header) + 1 + i).phi_sum, static_cast<float>(phi))
-                    << "cluster " << c.header << ", light " << l << ": not the running sum of power";
+            // Each light's share of the alias slots: its own slot's keep and what other
+            // slots give it, each slot 1 / count.
+            std::vector<double> realized(count, 0.0);
+            for (std::size_t i = 0; i < count; ++i) {
+                const LightTreeClusterLight& e = tree.cluster.at(static_cast<std::size_t>(c.header) + 1 + i);
+                ASSERT_GE(e.alias, 0);
+                ASSERT_LT(static_cast<std::size_t>(e.alias), count) << "cluster " << c.header;
+                EXPECT_GE(e.keep, 0.0f);
+                EXPECT_LE(e.keep, 1.0f);
+                realized[i] += e.keep / static_cast<double>(count);
+                realized[static_cast<std::size_t>(e.alias)] += (1.0 - e.keep) / static_cast<double>(count);
+            }
+            for (std::size_t i = 0; i < count; ++i) {
+                const std::size_t l = c.lights[i];
+                const LightTreeClusterLight& e = tree.cluster.at(static_cast<std::size_t>(c.header) + 1 + i);
+                EXPECT_TRUE(i == 0 || c.lights[i - 1] < l) << "cluster " << c.header << ": lights out of order";
+                const double share = sphere.lights[l].phi / phi;
+                EXPECT_NEAR(e.pmf, share, 1e-6 * share)
+                    << "cluster " << c.header << ", light " << l << ": not by power";
+                EXPECT_NEAR(realized[i], e.pmf, 2e-7 * share)
+                    << "cluster " << c.header << ", light " << l << ": the alias slots give another probability";
                 EXPECT_GE(glm::dot(lane.cone.axis, sphere.normal[l]), lane.cone.cos_o - 1e-6) << "light " << l;
             }
-            EXPECT_EQ(tree.cluster.at(static_cast<std::size_t>(c.header)).phi_sum, static_cast<float>(phi));
             EXPECT_NEAR(lane.phi, phi, 1e-5 * phi) << "node " << c.node << " lane " << c.lane;
             clustered += c.lights.size();
             largest = std::max(largest, c.lights.size());

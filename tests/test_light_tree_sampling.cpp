@@ -7,10 +7,10 @@
 // light_tree_pmf computes for its light bit for bit, and a light of pmf 0 is never picked.
 // A tessellated panel among them (one triangle of power 0) ends descents in clusters of
 // its neighbouring triangles, picked among by power. A descent that does not rescale its
-// number fails the same test, as do a cluster that always gives its first light and a
-// cluster pmf that finds only its first light. The importance of a one-sided emitter is
-// zero exactly where it cannot reach. Over a glowing sphere and over glowing cubes, the
-// pmfs come within a bound of the ideal one.
+// number fails the same test, as do a cluster that always takes its first slot, one that
+// ignores its aliases and a cluster pmf that finds only its first light. The importance of
+// a one-sided emitter is zero exactly where it cannot reach. Over a glowing sphere and
+// over glowing cubes, the pmfs come within a bound of the ideal one.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -226,10 +226,18 @@ TEST(LightTreeSampling, PicksFollowThePmfAndReportIt)
     check_picks({}, true);
 }
 
-TEST(LightTreeSampling, AClusterThatAlwaysGivesItsFirstLightFails)
+TEST(LightTreeSampling, AClusterThatAlwaysTakesItsFirstSlotFails)
 {
     EXPECT_GE(make_scene().arrays.light_tree_cluster.size(), 16u) << "no clusters to test";
-    const int failed = check_picks({{"light/light_tree.cl", "if (target < c[mid].phi_sum)", "if (true)"}}, false);
+    const int failed = check_picks({{"light/light_tree.cl", "int slot = min((int)x, n - 1);", "int slot = 0;"}}, false);
+    EXPECT_GT(failed, 0);
+}
+
+TEST(LightTreeSampling, AClusterThatIgnoresItsAliasesFails)
+{
+    // Every slot keeps its own light: the panel's lights, of powers up to 3x apart, come up
+    // alike.
+    const int failed = check_picks({{"light/light_tree.cl", "if (!(x - (float)slot < e->keep))", "if (false)"}}, false);
     EXPECT_GT(failed, 0);
 }
 

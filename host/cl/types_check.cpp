@@ -35,7 +35,8 @@ static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) 
 static_assert(sizeof(LightTreeNode) == 448 && offsetof(LightTreeNode, phi) == 128 &&
               offsetof(LightTreeNode, cos_e) == 320 && offsetof(LightTreeNode, child) == 352 &&
               offsetof(LightTreeNode, two_sided) == 384 && offsetof(LightTreeNode, code) == 416);
-static_assert(sizeof(LightTreeClusterLight) == 8 && offsetof(LightTreeClusterLight, phi_sum) == 4);
+static_assert(sizeof(LightTreeClusterLight) == 16 && offsetof(LightTreeClusterLight, keep) == 8 &&
+              offsetof(LightTreeClusterLight, alias) == 12);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&
               offsetof(Camera, focus_distance) == 72);
 static_assert(sizeof(FrameParams) == 64 && offsetof(FrameParams, sampler) == 36 && offsetof(FrameParams, spp) == 40 &&

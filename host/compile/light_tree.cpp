@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "common/shared_work.h"
+#include "compile/alias_table.h"
 
 namespace pathcl {
 namespace {
@@ -817,8 +818,10 @@ private:
     }
 
     // Appends binary node b's lights to the clusters' array (LightTreeClusterLight: a
-    // header, then the lights in the order of their indices with their running sums of
-    // power, each the double sum rounded once); returns the leaf that stands for them.
+    // header, then the lights in the order of their indices, each with its slot of their
+    // alias table by power and its probability as the kernel realizes that table: the
+    // slot's share of 1 / lights kept with the keep stored as a float, the rest of it
+    // given to its alias); returns the leaf that stands for them.
     pcl_int add_cluster(std::uint32_t b)
     {
         const BinaryNode& n = binary_.nodes[b];
@@ -826,14 +829,22 @@ private:
         for (std::uint32_t i = 0; i < n.lights; ++i)
             lights[i] = {binary_.records[n.first + i].light, binary_.records[n.first + i].phi};
         std::sort(lights.begin(), lights.begin() + n.lights);
-        const auto header = static_cast<pcl_int>(tree_.cluster.size());
-        tree_.cluster.push_back({static_cast<pcl_int>(n.lights), 0.0f});
-        double sum = 0.0;
+        std::vector<double> power(n.lights);
+        for (std::uint32_t i = 0; i < n.lights; ++i)
+            power[i] = lights[i].second;
+        const AliasTable table = build_alias_table(power);
+        const double slot = 1.0 / static_cast<double>(n.lights);
+        std::vector<double> pmf(n.lights, 0.0);
         for (std::uint32_t i = 0; i < n.lights; ++i) {
-            sum += lights[i].second;
-            tree_.cluster.push_back({static_cast<pcl_int>(lights[i].first), static_cast<pcl_float>(sum)});
+            const double keep = static_cast<float>(table.keep[i]);
+            pmf[i] += slot * keep;
+            pmf[table.alias[i]] += slot * (1.0 - keep);
         }
-        tree_.cluster[static_cast<std::size_t>(header)].phi_sum = static_cast<pcl_float>(sum);
+        const auto header = static_cast<pcl_int>(tree_.cluster.size());
+        tree_.cluster.push_back({static_cast<pcl_int>(n.lights), 1.0f, 1.0f, 0});
+        for (std::uint32_t i = 0; i < n.lights; ++i)
+            tree_.cluster.push_back({static_cast<pcl_int>(lights[i].first), static_cast<pcl_float>(pmf[i]),
+                                     static_cast<pcl_float>(table.keep[i]), static_cast<pcl_int>(table.alias[i])});
         return header | LIGHT_TREE_CLUSTER;
     }
 

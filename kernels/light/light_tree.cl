@@ -123,31 +123,21 @@ static inline void light_tree_cluster_warm(const KernelData* kd, int first)
     cache_line_warm((__global const int*)&kd->light_tree_cluster[first]);
 }
 
-/* The power of the k-th light (from 1) of the cluster whose header is c[0], as pick and
- * pmf both take it: the difference of its running sums. */
-static inline float light_tree_cluster_phi(__global const LightTreeClusterLight* c, int k)
-{
-    return c[k].phi_sum - (k > 1 ? c[k - 1].phi_sum : 0.0f);
-}
-
 /* Picks one of the lights of the cluster whose header is light_tree_cluster[first] by the
- * number u, in proportion to their power: the first whose running sum passes u times the
- * total (lights of power 0 hold no share); its probability times p in *pmf. */
+ * number u, in proportion to their power, through their alias table: u times their
+ * number gives the slot, its fraction the coin (lights of power 0 keep no share); its
+ * probability times p in *pmf. */
 static inline int light_tree_cluster_pick(const KernelData* kd, int first, float u, float p, float* pmf)
 {
-    __global const LightTreeClusterLight* c = kd->light_tree_cluster + first;
-    int lo = 1, hi = c[0].light;
-    float total = c[0].phi_sum;
-    float target = fmin(u * total, nextafter(total, 0.0f)); /* u total may round up to the total */
-    while (lo < hi) {
-        int mid = (lo + hi) >> 1;
-        if (target < c[mid].phi_sum)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    *pmf = p * (light_tree_cluster_phi(c, lo) / total);
-    return c[lo].light;
+    __global const LightTreeClusterLight* c = kd->light_tree_cluster + first + 1;
+    int n = c[-1].light;
+    float x = u * (float)n; /* below n: u < 1, n at most LIGHT_TREE_CLUSTER_MAX */
+    int slot = min((int)x, n - 1);
+    __global const LightTreeClusterLight* e = c + slot;
+    if (!(x - (float)slot < e->keep))
+        e = c + e->alias;
+    *pmf = p * e->pmf;
+    return e->light;
 }
 
 /* p times the probability that light_tree_cluster_pick picks `light` of that cluster (0
@@ -163,7 +153,7 @@ static inline float light_tree_cluster_pmf(const KernelData* kd, int first, int 
         else
             hi = mid;
     }
-    return c[lo].light == light ? p * (light_tree_cluster_phi(c, lo) / c[0].phi_sum) : 0.0f;
+    return c[lo].light == light ? p * c[lo].pmf : 0.0f;
 }
 
 /* Picks a light for the shading point ref with normal n by the number u; its probability
