@@ -256,5 +256,28 @@ TEST(BvhTraversal, ClosedSphereHasNoHolesFromInside)
     EXPECT_GT(naive_misses, 0u) << "the rays must be able to find a leaky triangle test";
 }
 
+TEST(BvhTraversal, ARayThatGrazesATriangleStillHitsIt)
+{
+    // Two triangles of a 12 x 24 sphere of radius 1 (a shared edge), and a ray from the
+    // first, next to a vertex, towards a point 5e-5 outside the sphere's next vertex along
+    // the latitude: it leaves the sphere through the second triangle 0.0098 from its
+    // origin, 0.016 degrees from its plane. Float's conservative bound on t (pbrt-v3) came
+    // out at 0.0562 for a t of 0.0527 and dropped the hit, so that a shadow ray saw a
+    // point light through the sphere (Robustness.NoLightLeaksAcrossA1em4Gap... passed by
+    // the luck of which light each sample picked); such lanes now ask again in double.
+    const float h = 0.5f, r = 0x1.6a09e6p-1f;
+    const glm::vec3 a(-0x1.bb67aep-2f, -h, -0x1.8p-1f), b(-0x1.cb0bf0p-3f, -h, -0x1.ac4bdep-1f),
+        c(-0x1.76cf5ep-3f, -r, -0x1.5db3d8p-1f), d(-0x1.2b8388p-53f, -r, -r);
+    DeviceMesh mesh = make_mesh({a, b, c, b, d, c});
+    const glm::vec3 origin(-0x1.793f54p-3f, -0x1.66ff02p-1f, -0x1.5ff484p-1f);
+    const glm::vec3 light(-0x1.2b8p-53f, -0x1.6a0e88p-1f, -0x1.6a0e88p-1f);
+    const glm::vec3 dir = light - origin; // a shadow ray's: unnormalized
+    TraceResults t = trace(mesh, {{origin.x, origin.y, origin.z, 0}}, {{dir.x, dir.y, dir.z, 0}});
+    for (const pcl_float4& hit : {t.bvh[0], t.brute[0]}) {
+        EXPECT_GE(std::bit_cast<int>(hit.w), 0) << "the ray passed the triangle it grazes";
+        EXPECT_NEAR(hit.x, 0.0527f, 1e-4f);
+    }
+}
+
 } // namespace
 } // namespace pathcl::test_bvh_traversal

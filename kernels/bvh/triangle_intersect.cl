@@ -1,6 +1,6 @@
 /* The watertight ray/triangle test of Woop, Benthin and Wald (JCGT 2013), with the ray's
  * shear set up once per ray, and pbrt-v3's conservative bound on t that keeps spawned
- * rays off their own surface.
+ * rays off their own surface (asked again in double where float's bound rejects a hit).
  *
  * Watertightness needs each edge function computed identically by both triangles that
  * share the edge, so floating-point contraction (fma) is off for this file: an fma would
@@ -73,6 +73,36 @@ static inline float4 edge_function_double4(float4 px, float4 py, float4 qx, floa
 {
     double4 dpx = convert_double4(px), dpy = convert_double4(py), dqx = convert_double4(qx), dqy = convert_double4(qy);
     return convert_float4(dpx * dqy - dpy * dqx);
+}
+
+#define DOUBLE_GAMMA(n) ((double)(n)*0x1.0p-53 / (1.0 - (double)(n)*0x1.0p-53))
+
+/* Whether four lanes' hits lie beyond the rounding error of their t, with t and its
+ * conservative bound (the float test's arithmetic, below) in double from the lanes'
+ * vertices (a, b, c: x, y, z in the ray's permuted order) and the ray's origin and
+ * shear. The vertices' differences from the origin are exact in double. */
+static inline int4 t_beyond_error_double4(float4 pax, float4 pay, float4 paz, float4 pbx, float4 pby, float4 pbz,
+                                          float4 pcx, float4 pcy, float4 pcz, float3 o, float3 shear)
+{
+    double sx = shear.x, sy = shear.y, sz = shear.z;
+    double4 a_z = convert_double4(paz) - o.z, b_z = convert_double4(pbz) - o.z, c_z = convert_double4(pcz) - o.z;
+    double4 ax = convert_double4(pax) - o.x - sx * a_z, ay = convert_double4(pay) - o.y - sy * a_z;
+    double4 bx = convert_double4(pbx) - o.x - sx * b_z, by = convert_double4(pby) - o.y - sy * b_z;
+    double4 cx = convert_double4(pcx) - o.x - sx * c_z, cy = convert_double4(pcy) - o.y - sy * c_z;
+    double4 u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    double4 inv_det = 1.0 / (u + v + w);
+    double4 az = sz * a_z, bz = sz * b_z, cz = sz * c_z;
+    double4 t = (u * az + v * bz + w * cz) * inv_det;
+    double4 max_zt = fmax(fabs(az), fmax(fabs(bz), fabs(cz)));
+    double4 max_xt = fmax(fabs(ax), fmax(fabs(bx), fabs(cx)));
+    double4 max_yt = fmax(fabs(ay), fmax(fabs(by), fabs(cy)));
+    double4 delta_x = DOUBLE_GAMMA(5) * (max_xt + max_zt);
+    double4 delta_y = DOUBLE_GAMMA(5) * (max_yt + max_zt);
+    double4 delta_z = DOUBLE_GAMMA(3) * max_zt;
+    double4 delta_e = 2.0 * (DOUBLE_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    double4 max_e = fmax(fabs(u), fmax(fabs(v), fabs(w)));
+    double4 delta_t = 3.0 * (DOUBLE_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
+    return convert_int4(t > delta_t);
 }
 #endif
 
@@ -154,7 +184,25 @@ PATHCL_HOT_INLINE uint ray_triangle_block(const RayTraversal* r, __global const 
     float8 delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     float8 max_e = max(fabs(u), max(fabs(v), fabs(w)));
     float8 delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
-    hit &= (t > delta_t) & (block->triangle >= 0);
+    int8 beyond_error = t > delta_t;
+#ifdef cl_khr_fp64
+    /* A ray that grazes a triangle has a small determinant beside the bound's terms, and
+     * float's bound can exceed a t that is clearly in front: a shadow ray leaving one face
+     * of a convex mesh near an edge, along that edge, towards a light just outside its far
+     * end, crossed the neighbouring face unseen (t 0.0527, bound 0.0562). Such lanes ask
+     * again in double, whose bound is 2^29 times tighter. */
+    int8 unsure = hit & ~beyond_error;
+    if (lane_bits(unsure) != 0u) {
+        float3 shear = (float3)(sx, sy, sz);
+        int8 beyond_in_double =
+            (int8)(t_beyond_error_double4(p[kx].lo, p[ky].lo, p[kz].lo, p[3 + kx].lo, p[3 + ky].lo, p[3 + kz].lo,
+                                          p[6 + kx].lo, p[6 + ky].lo, p[6 + kz].lo, o, shear),
+                   t_beyond_error_double4(p[kx].hi, p[ky].hi, p[kz].hi, p[3 + kx].hi, p[3 + ky].hi, p[3 + kz].hi,
+                                          p[6 + kx].hi, p[6 + ky].hi, p[6 + kz].hi, o, shear));
+        beyond_error |= unsure & beyond_in_double;
+    }
+#endif
+    hit &= beyond_error & (block->triangle >= 0);
     *t_out = t;
     *b1_out = v * inv_det;
     *b2_out = w * inv_det;
