@@ -64,6 +64,20 @@ static inline uint lane_bits(int8 mask)
 #define PATHCL_HOT_INLINE static inline
 #endif
 
+/* pbrt-v3's conservative bound on the rounding error of a triangle hit's t (section
+ * 3.9.6), from the largest magnitudes of the vertices' ray-space coordinates and of the
+ * edge functions, for float or for double (GAMMA: FLOAT_GAMMA or DOUBLE_GAMMA): one
+ * expression, so that the double re-test bounds exactly what the float test does. */
+#define TRIANGLE_T_ERROR_BOUND(GAMMA, max_xt, max_yt, max_zt, max_e, inv_det)                                          \
+    (3 *                                                                                                               \
+     (GAMMA(3) * (max_e) * (max_zt) +                                                                                  \
+      2 *                                                                                                              \
+          (GAMMA(2) * (max_xt) * (max_yt) + GAMMA(5) * ((max_yt) + (max_zt)) * (max_xt) +                              \
+           GAMMA(5) * ((max_xt) + (max_zt)) * (max_yt)) *                                                              \
+          (max_zt) +                                                                                                   \
+      GAMMA(3) * (max_zt) * (max_e)) *                                                                                 \
+     fabs(inv_det))
+
 #ifdef cl_khr_fp64
 /* The edge function px qy - py qx of four lanes, in double. Four at a time, not eight: PoCL
  * on a CPU without AVX-512 warns at every build from source that a double8 passed to or
@@ -96,13 +110,8 @@ static inline int4 t_beyond_error_double4(float4 pax, float4 pay, float4 paz, fl
     double4 max_zt = fmax(fabs(az), fmax(fabs(bz), fabs(cz)));
     double4 max_xt = fmax(fabs(ax), fmax(fabs(bx), fabs(cx)));
     double4 max_yt = fmax(fabs(ay), fmax(fabs(by), fabs(cy)));
-    double4 delta_x = DOUBLE_GAMMA(5) * (max_xt + max_zt);
-    double4 delta_y = DOUBLE_GAMMA(5) * (max_yt + max_zt);
-    double4 delta_z = DOUBLE_GAMMA(3) * max_zt;
-    double4 delta_e = 2.0 * (DOUBLE_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     double4 max_e = fmax(fabs(u), fmax(fabs(v), fabs(w)));
-    double4 delta_t = 3.0 * (DOUBLE_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
-    return convert_int4(t > delta_t);
+    return convert_int4(t > TRIANGLE_T_ERROR_BOUND(DOUBLE_GAMMA, max_xt, max_yt, max_zt, max_e, inv_det));
 }
 #endif
 
@@ -178,13 +187,8 @@ PATHCL_HOT_INLINE uint ray_triangle_block(const RayTraversal* r, __global const 
     float8 max_zt = max(fabs(az), max(fabs(bz), fabs(cz)));
     float8 max_xt = max(fabs(ax), max(fabs(bx), fabs(cx)));
     float8 max_yt = max(fabs(ay), max(fabs(by), fabs(cy)));
-    float8 delta_x = FLOAT_GAMMA(5) * (max_xt + max_zt);
-    float8 delta_y = FLOAT_GAMMA(5) * (max_yt + max_zt);
-    float8 delta_z = FLOAT_GAMMA(3) * max_zt;
-    float8 delta_e = 2.0f * (FLOAT_GAMMA(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     float8 max_e = max(fabs(u), max(fabs(v), fabs(w)));
-    float8 delta_t = 3.0f * (FLOAT_GAMMA(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * fabs(inv_det);
-    int8 beyond_error = t > delta_t;
+    int8 beyond_error = t > TRIANGLE_T_ERROR_BOUND(FLOAT_GAMMA, max_xt, max_yt, max_zt, max_e, inv_det);
 #ifdef cl_khr_fp64
     /* A ray that grazes a triangle has a small determinant beside the bound's terms, and
      * float's bound can exceed a t that is clearly in front: a shadow ray leaving one face
