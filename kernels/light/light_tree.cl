@@ -21,16 +21,10 @@
  * level, the first one has few bits left after about six. */
 #define LIGHT_TREE_FRESH_LEVELS 5u
 
-/* cos(max(0, a - b)) and sin(max(0, a - b)) from the cosines and sines of angles a, b in
- * [0, pi], per lane. */
+/* cos(max(0, a - b)) from the cosines and sines of angles a, b in [0, pi], per lane. */
 static inline float8 cos_of_clamped_difference8(float8 cos_a, float8 sin_a, float8 cos_b, float8 sin_b)
 {
     return select(cos_a * cos_b + sin_a * sin_b, (float8)(1.0f), cos_a > cos_b);
-}
-
-static inline float8 sin_of_clamped_difference8(float8 cos_a, float8 sin_a, float8 cos_b, float8 sin_b)
-{
-    return select(sin_a * cos_b - cos_a * sin_b, (float8)(0.0f), cos_a > cos_b);
 }
 
 /* The importance of each of a node's eight children at the point ref with shading normal
@@ -50,36 +44,47 @@ static inline float8 sin_of_clamped_difference8(float8 cos_a, float8 sin_a, floa
  * lights can emit towards the point, and in empty lanes. */
 static inline float8 light_tree_importance(__global const LightTreeNode* node, float3 ref, float3 n)
 {
+    /* Every cosine and sine of an angle at the point comes from a product with the
+     * unnormalized direction d, computed while 1 / |d| is: the chain of square roots and
+     * divisions a lane waits on is one long, not three. */
     float8 dx = (float8)(ref.x) - node->centre_x, dy = (float8)(ref.y) - node->centre_y,
            dz = (float8)(ref.z) - node->centre_z;
     float8 dist2 = dx * dx + dy * dy + dz * dz;
     float8 radius2 = node->radius2;
+    float8 ax = node->axis_x, ay = node->axis_y, az = node->axis_z;
+    float8 dot_w = ax * dx + ay * dy + az * dz;
+    float8 cx = ay * dz - az * dy, cy = az * dx - ax * dz, cz = ax * dy - ay * dx;
+    float8 cross_w = sqrt(cx * cx + cy * cy + cz * cz); /* |axis x d| = |d| sin(theta) */
+    int8 outside = dist2 > radius2;                     /* inside the sphere it subtends every direction */
+    float8 leg = sqrt(fmax(dist2 - radius2, 0.0f));     /* to where a tangent touches the sphere */
+    float8 radius = sqrt(radius2);
     float8 inv_dist = 1.0f / sqrt(dist2);
+    /* At the centre itself (d = 0) every direction lies within theta_b = pi, which alone
+     * decides there: any angle theta serves. */
     int8 apart = dist2 > 0.0f;
-    float8 wx = select((float8)(0.0f), dx * inv_dist, apart), wy = select((float8)(0.0f), dy * inv_dist, apart),
-           wz = select((float8)(1.0f), dz * inv_dist, apart);
-    float8 cos_w = node->axis_x * wx + node->axis_y * wy + node->axis_z * wz;
-    cos_w = select(cos_w, fabs(cos_w), node->two_sided);
-    float8 sin_w = sqrt(fmax(0.0f, 1.0f - cos_w * cos_w));
-    int8 outside = dist2 > radius2;                /* inside the sphere it subtends every direction */
-    float8 sin2_b = radius2 * inv_dist * inv_dist; /* read where outside: inv_dist finite */
-    float8 cos_b = select((float8)(-1.0f), sqrt(fmax(0.0f, 1.0f - sin2_b)), outside);
-    float8 sin_b = select((float8)(0.0f), sqrt(fmin(sin2_b, 1.0f)), outside);
+    float8 cos_w = select((float8)(1.0f), dot_w * inv_dist, apart);
+    cos_w = fmin(select(cos_w, fabs(cos_w), node->two_sided), 1.0f);
+    float8 sin_w = select((float8)(0.0f), fmin(cross_w * inv_dist, 1.0f), apart);
+    float8 cos_b = select((float8)(-1.0f), fmin(leg * inv_dist, 1.0f), outside);   /* read where outside: */
+    float8 sin_b = select((float8)(0.0f), fmin(radius * inv_dist, 1.0f), outside); /* inv_dist finite */
     float8 cos_o = node->cos_o, sin_o = node->sin_o, cos_e = node->cos_e;
-    float8 cos_x = cos_of_clamped_difference8(cos_w, sin_w, cos_o, sin_o);
-    float8 sin_x = sin_of_clamped_difference8(cos_w, sin_w, cos_o, sin_o);
-    float8 cos_p = cos_of_clamped_difference8(cos_x, sin_x, cos_b, sin_b);
+    /* theta_o + theta_b, at most pi (past it, pi: every direction within it either way). */
+    float8 cos_ob = cos_o * cos_b - sin_o * sin_b, sin_ob = sin_o * cos_b + cos_o * sin_b;
+    int8 past_pi = sin_ob < 0.0f;
+    cos_ob = select(cos_ob, (float8)(-1.0f), past_pi);
+    sin_ob = select(sin_ob, (float8)(0.0f), past_pi);
+    float8 cos_p = cos_of_clamped_difference8(cos_w, sin_w, cos_ob, sin_ob);
     float8 inv_d2 = 1.0f / fmax(dist2, radius2);
     float8 importance = node->phi * cos_p * inv_d2;
     /* The lower bound, where theta + theta_b + theta_o <= theta_e. With each of the three
      * at most pi/2, their sum is at most pi where its sine is not negative, and there its
      * cosine orders it. */
-    float8 cos_wb = cos_w * cos_b - sin_w * sin_b, sin_wb = sin_w * cos_b + cos_w * sin_b;
-    float8 cos_wbo = cos_wb * cos_o - sin_wb * sin_o, sin_wbo = sin_wb * cos_o + cos_wb * sin_o;
+    float8 cos_wbo = cos_w * cos_ob - sin_w * sin_ob, sin_wbo = sin_w * cos_ob + cos_w * sin_ob;
     int8 inside_e = (cos_w >= 0.0f) & (cos_b >= 0.0f) & (cos_o >= 0.0f) & (sin_wbo >= 0.0f) & (cos_wbo >= cos_e);
     float8 low = select((float8)(0.0f), node->phi * cos_wbo * inv_d2, inside_e);
     if (any(n != 0.0f)) {
-        float8 cos_i = fabs((float8)(n.x) * wx + (float8)(n.y) * wy + (float8)(n.z) * wz);
+        float8 dot_i = (float8)(n.x) * dx + (float8)(n.y) * dy + (float8)(n.z) * dz;
+        float8 cos_i = select((float8)(1.0f), fmin(fabs(dot_i) * inv_dist, 1.0f), apart);
         float8 sin_i = sqrt(fmax(0.0f, 1.0f - cos_i * cos_i));
         importance *= cos_of_clamped_difference8(cos_i, sin_i, cos_b, sin_b);
         low *= fmax(cos_i * cos_b - sin_i * sin_b, 0.0f);
