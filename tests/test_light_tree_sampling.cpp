@@ -307,6 +307,67 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     EXPECT_GT(behind, 1000u);
 }
 
+TEST(LightTreeSampling, LanesOverPointLightsReachPointsInsideTheirSpheres)
+{
+    // Point lights emit every way, so a lane over several reaches every point: one inside
+    // its bounding sphere too, where the sphere alone subtends every direction (theta_b =
+    // pi) and its cone of normals is the whole sphere (theta_o = pi) as well. An importance
+    // of 0 there would leave the lane's lights unsampled from points between them.
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<LightBounds> lights(64);
+    for (LightBounds& b : lights) {
+        b.lo = b.hi = {u(rng), u(rng), u(rng)};
+        b.phi = std::pow(10.0, u(rng));
+        b.cone = {{0.0, 0.0, 1.0}, -1.0, 0.0};
+    }
+    const LightTree tree = build_light_tree(lights);
+    const LightTreeNode& root = tree.nodes[0];
+    std::vector<pcl_float4> points;
+    std::size_t inside = 0;
+    for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
+        if (!(root.phi.s[k] > 0.0f) || !(root.radius2.s[k] > 0.0f))
+            continue;
+        const glm::dvec3 c(root.centre_x.s[k], root.centre_y.s[k], root.centre_z.s[k]);
+        const double r = std::sqrt(double(root.radius2.s[k]));
+        // The centre, and points a quarter and three quarters of the way out along the
+        // 26 directions to a cube's corners, edges and faces (inside, on every side of
+        // the lane's axis), and 1.5 radii out (outside).
+        points.push_back({float(c.x), float(c.y), float(c.z), 0.0f});
+        for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+                for (int z = -1; z <= 1; ++z) {
+                    if (x == 0 && y == 0 && z == 0)
+                        continue;
+                    const glm::dvec3 d = glm::normalize(glm::dvec3(x, y, z));
+                    for (double f : {0.25, 0.75, 1.5}) {
+                        const glm::dvec3 p = c + f * r * d;
+                        points.push_back({float(p.x), float(p.y), float(p.z), 0.0f});
+                        inside += f < 1.0 ? 1 : 0;
+                    }
+                }
+    }
+    ASSERT_GT(inside, 100u) << "the root has no lane over several lights";
+    ClDevice& dev = test::test_device();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    const TreeScene scene = tree_scene(tree, lights.size());
+    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
+    const std::vector<pcl_float4> normals(points.size(), pcl_float4{0.0f, 0.0f, 0.0f, 0.0f}); // no surface
+    cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * LIGHT_TREE_WIDTH * sizeof(float));
+    cl::Kernel kernel(program, "test_light_tree_importance8");
+    bind_kernel(kernel, a, p_buf, n_buf, out);
+    dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(points.size()));
+    const std::vector<float> importance = test::read_back<float>(out, points.size() * LIGHT_TREE_WIDTH);
+    std::size_t zero = 0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (int k = 0; k < LIGHT_TREE_WIDTH; ++k)
+            if (root.phi.s[k] > 0.0f && !(importance[i * LIGHT_TREE_WIDTH + std::size_t(k)] > 0.0f))
+                ++zero;
+    EXPECT_EQ(zero, 0u) << "lane importances of 0 at " << points.size() << " points";
+}
+
 // How close light_tree_pmf comes to the ideal pmf q over emitters (one-sided triangles)
 // seen from a shading point: q is each triangle's area times the cosines at both ends over
 // the squared distance, and the second moment sum q^2 / p is the factor by which the pick

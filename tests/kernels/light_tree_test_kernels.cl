@@ -38,3 +38,13 @@ PATHCL_KERNEL void test_light_tree_importance(PATHCL_KERNEL_PARAMS __global cons
     uint i = get_global_id(0);
     importance[i] = light_tree_importance(&kd.light_tree[0], points[i].xyz, normals[i].xyz).s0;
 }
+
+/* The importance of each of the root's eight lanes at point i (points[i].xyz) with normal
+ * normals[i].xyz: importance[8 i + k] for lane k. */
+PATHCL_KERNEL void test_light_tree_importance8(PATHCL_KERNEL_PARAMS __global const float4* points,
+                                               __global const float4* normals, __global float* importance)
+{
+    PATHCL_KERNEL_DATA;
+    uint i = get_global_id(0);
+    vstore8(light_tree_importance(&kd.light_tree[0], points[i].xyz, normals[i].xyz), i, importance);
+}
