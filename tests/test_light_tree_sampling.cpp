@@ -368,6 +368,137 @@ TEST(LightTreeSampling, LanesOverPointLightsReachPointsInsideTheirSpheres)
     EXPECT_EQ(zero, 0u) << "lane importances of 0 at " << points.size() << " points";
 }
 
+// light_tree_importance's bound as its comment defines it, in double and with the angles
+// themselves, for lane k of `node` at point ref with normal n (zero: none). Sets *near
+// where ref lies within `margin` of one of the bound's edges (the sphere's surface,
+// theta' = theta_e, the lower bound's conditions), where float and double may fall on
+// different sides.
+double reference_importance(const LightTreeNode& node, int k, const glm::dvec3& ref, const glm::dvec3& n, double margin,
+                            bool* near)
+{
+    const double pi = std::numbers::pi;
+    const glm::dvec3 c(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
+    const glm::dvec3 axis(node.axis_x.s[k], node.axis_y.s[k], node.axis_z.s[k]);
+    const double r2 = node.radius2.s[k], phi = node.phi.s[k];
+    const double theta_o = std::acos(std::clamp(double(node.cos_o.s[k]), -1.0, 1.0));
+    const double theta_e = std::acos(std::clamp(double(node.cos_e.s[k]), -1.0, 1.0));
+    const glm::dvec3 d = ref - c;
+    const double dist2 = glm::dot(d, d), dist = std::sqrt(dist2);
+    const bool outside = dist2 > r2;
+    const double theta_b = outside ? std::asin(std::sqrt(r2 / dist2)) : pi;
+    double cos_w = dist > 0.0 ? glm::dot(axis, d) / (glm::length(axis) * dist) : 1.0;
+    if (node.two_sided.s[k])
+        cos_w = std::abs(cos_w);
+    const double theta_w = std::acos(std::clamp(cos_w, -1.0, 1.0));
+    const double theta_p = std::max(0.0, theta_w - std::min(pi, theta_o + theta_b));
+    const double sum = theta_w + theta_b + theta_o;
+    const bool has_normal = glm::dot(n, n) > 0.0;
+    const double theta_i =
+        has_normal && dist > 0.0 ? std::acos(std::min(1.0, std::abs(glm::dot(n, d)) / (glm::length(n) * dist))) : 0.0;
+    *near = std::abs(dist2 - r2) < margin * std::max(r2, 1e-6) || (dist2 > 0.0 && dist < margin) ||
+            std::abs(theta_p - theta_e) < margin || std::abs(sum - theta_e) < margin || std::abs(sum - pi) < margin ||
+            std::abs(theta_w - pi / 2) < margin || std::abs(theta_b - pi / 2) < margin ||
+            std::abs(theta_o - pi / 2) < margin;
+    if (!(phi > 0.0) || theta_p > theta_e)
+        return 0.0;
+    const double inv_d2 = 1.0 / std::max(dist2, r2);
+    double upper = phi * std::cos(theta_p) * inv_d2, lower = 0.0;
+    if (theta_w <= pi / 2 && theta_b <= pi / 2 && theta_o <= pi / 2 && sum <= pi && sum <= theta_e)
+        lower = phi * std::cos(sum) * inv_d2;
+    if (has_normal) {
+        upper *= std::cos(std::max(0.0, theta_i - theta_b));
+        lower *= std::max(0.0, std::cos(std::min(pi, theta_i + theta_b)));
+    }
+    upper = std::max(upper, 0.0);
+    return 0.5 * (upper + std::min(std::max(lower, 0.0), upper));
+}
+
+TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
+{
+    // Nodes of random lanes: cones of one direction, of every direction and between,
+    // Lambertian, narrow and wide spreads, one- and two-sided, spheres of radius 0 and
+    // more, empty lanes; weighed at the centres, inside the spheres, just outside and far
+    // off, with a random normal or none, against the bound in double.
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto direction = [&] {
+        const double z = 2.0 * u(rng) - 1.0, a = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
+        return glm::dvec3(r * std::cos(a), r * std::sin(a), z);
+    };
+    ClDevice& dev = test::test_device();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    std::size_t compared = 0, inside = 0, off = 0;
+    std::string worst;
+    for (int t = 0; t < 48; ++t) {
+        LightTreeNode node{};
+        for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
+            const glm::dvec3 c(4.0 * u(rng) - 2.0, 4.0 * u(rng) - 2.0, 4.0 * u(rng) - 2.0), a = direction();
+            const int cone = (t + k) % 4;
+            const double cos_o = cone == 0 ? 1.0 : cone == 1 ? -1.0 : 2.0 * u(rng) - 1.0;
+            const int spread = (t / 4 + k) % 3;
+            const double cos_e = spread == 0 ? 0.0 : spread == 1 ? std::cos(0.001) : 2.0 * u(rng) - 1.0;
+            node.centre_x.s[k] = float(c.x);
+            node.centre_y.s[k] = float(c.y);
+            node.centre_z.s[k] = float(c.z);
+            node.radius2.s[k] = (t + 3 * k) % 5 == 0 ? 0.0f : float(std::pow(u(rng), 2.0));
+            node.phi.s[k] = (t + 5 * k) % 11 == 0 ? 0.0f : float(std::pow(10.0, 2.0 * u(rng) - 1.0));
+            node.axis_x.s[k] = float(a.x);
+            node.axis_y.s[k] = float(a.y);
+            node.axis_z.s[k] = float(a.z);
+            node.cos_o.s[k] = float(cos_o);
+            node.sin_o.s[k] = float(std::sqrt(std::max(0.0, 1.0 - cos_o * cos_o)));
+            node.cos_e.s[k] = float(cos_e);
+            node.two_sided.s[k] = (t + k) % 3 == 0 ? -1 : 0;
+            node.child.s[k] = -1 - k;
+        }
+        std::vector<pcl_float4> points, normals;
+        std::vector<glm::dvec3> refs, ns;
+        for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
+            const glm::dvec3 c(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
+            const double r = std::sqrt(double(node.radius2.s[k]));
+            for (double f : {0.0, 0.3, 0.9, 1.1, 3.0, 30.0})
+                for (int j = 0; j < (f == 0.0 ? 1 : 6); ++j) {
+                    const glm::dvec3 p = c + (f * r + (f > 1.0 ? f : 0.0)) * direction();
+                    const glm::dvec3 nrm = j % 2 ? direction() : glm::dvec3(0.0);
+                    points.push_back({float(p.x), float(p.y), float(p.z), 0.0f});
+                    normals.push_back({float(nrm.x), float(nrm.y), float(nrm.z), 0.0f});
+                    refs.emplace_back(double(points.back().x), double(points.back().y), double(points.back().z));
+                    ns.emplace_back(double(normals.back().x), double(normals.back().y), double(normals.back().z));
+                }
+        }
+        TreeScene scene;
+        scene.arrays.light_tree = {node};
+        DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
+        cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
+        cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * LIGHT_TREE_WIDTH * sizeof(float));
+        cl::Kernel kernel(program, "test_light_tree_importance8");
+        bind_kernel(kernel, a, p_buf, n_buf, out);
+        dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(points.size()));
+        const std::vector<float> importance = test::read_back<float>(out, points.size() * LIGHT_TREE_WIDTH);
+        for (std::size_t i = 0; i < points.size(); ++i)
+            for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
+                bool near = false;
+                const double expected = reference_importance(node, k, refs[i], ns[i], 1e-3, &near);
+                if (near)
+                    continue;
+                const double got = importance[i * LIGHT_TREE_WIDTH + std::size_t(k)];
+                const glm::dvec3 d = refs[i] - glm::dvec3(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
+                const double scale = double(node.phi.s[k]) / std::max(glm::dot(d, d), double(node.radius2.s[k]));
+                ++compared;
+                inside += glm::dot(d, d) <= double(node.radius2.s[k]) ? 1 : 0;
+                if (!(std::abs(got - expected) <= 1e-4 * scale)) {
+                    if (off++ == 0)
+                        worst = "node " + std::to_string(t) + " lane " + std::to_string(k) + " point " +
+                                std::to_string(i) + ": " + std::to_string(got) + " against " + std::to_string(expected);
+                }
+            }
+    }
+    EXPECT_GT(compared, 15000u);
+    EXPECT_GT(inside, 2000u);
+    EXPECT_EQ(off, 0u) << "of " << compared << " (" << inside << " inside the sphere), first: " << worst;
+}
+
 // How close light_tree_pmf comes to the ideal pmf q over emitters (one-sided triangles)
 // seen from a shading point: q is each triangle's area times the cosines at both ends over
 // the squared distance, and the second moment sum q^2 / p is the factor by which the pick
