@@ -307,6 +307,26 @@ TEST(LightTreeSampling, ImportanceIsZeroOnlyBehindAOneSidedEmitter)
     EXPECT_GT(behind, 1000u);
 }
 
+// light_tree_importance of each of the eight lanes of the root of `light_tree` (its nodes)
+// at each point with its normal (zero: none), lane k of point i at 8 i + k, through
+// test_light_tree_importance8.
+std::vector<float> root_lane_importances(const SceneVector<LightTreeNode>::vector& light_tree,
+                                         const std::vector<pcl_float4>& points, const std::vector<pcl_float4>& normals)
+{
+    ClDevice& dev = test::test_device();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    SceneArrays arrays;
+    arrays.light_tree = light_tree;
+    DeviceArrays a = upload_arrays(dev, arrays, 1);
+    cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
+    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * LIGHT_TREE_WIDTH * sizeof(float));
+    cl::Kernel kernel(program, "test_light_tree_importance8");
+    bind_kernel(kernel, a, p_buf, n_buf, out);
+    dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(points.size()));
+    return test::read_back<float>(out, points.size() * LIGHT_TREE_WIDTH);
+}
+
 TEST(LightTreeSampling, LanesOverPointLightsReachPointsInsideTheirSpheres)
 {
     // Point lights emit every way, so a lane over several reaches every point: one inside
@@ -348,18 +368,8 @@ TEST(LightTreeSampling, LanesOverPointLightsReachPointsInsideTheirSpheres)
                 }
     }
     ASSERT_GT(inside, 100u) << "the root has no lane over several lights";
-    ClDevice& dev = test::test_device();
-    cl::Program program =
-        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
-    const TreeScene scene = tree_scene(tree, lights.size());
-    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
     const std::vector<pcl_float4> normals(points.size(), pcl_float4{0.0f, 0.0f, 0.0f, 0.0f}); // no surface
-    cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
-    cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * LIGHT_TREE_WIDTH * sizeof(float));
-    cl::Kernel kernel(program, "test_light_tree_importance8");
-    bind_kernel(kernel, a, p_buf, n_buf, out);
-    dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(points.size()));
-    const std::vector<float> importance = test::read_back<float>(out, points.size() * LIGHT_TREE_WIDTH);
+    const std::vector<float> importance = root_lane_importances(tree.nodes, points, normals);
     std::size_t zero = 0;
     for (std::size_t i = 0; i < points.size(); ++i)
         for (int k = 0; k < LIGHT_TREE_WIDTH; ++k)
@@ -425,9 +435,6 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
         const double z = 2.0 * u(rng) - 1.0, a = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
         return glm::dvec3(r * std::cos(a), r * std::sin(a), z);
     };
-    ClDevice& dev = test::test_device();
-    cl::Program program =
-        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
     std::size_t compared = 0, inside = 0, off = 0;
     std::string worst;
     for (int t = 0; t < 48; ++t) {
@@ -467,15 +474,7 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
                     ns.emplace_back(double(normals.back().x), double(normals.back().y), double(normals.back().z));
                 }
         }
-        TreeScene scene;
-        scene.arrays.light_tree = {node};
-        DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
-        cl::Buffer p_buf = test::upload(points), n_buf = test::upload(normals);
-        cl::Buffer out(dev.context, CL_MEM_WRITE_ONLY, points.size() * LIGHT_TREE_WIDTH * sizeof(float));
-        cl::Kernel kernel(program, "test_light_tree_importance8");
-        bind_kernel(kernel, a, p_buf, n_buf, out);
-        dev.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(points.size()));
-        const std::vector<float> importance = test::read_back<float>(out, points.size() * LIGHT_TREE_WIDTH);
+        const std::vector<float> importance = root_lane_importances({node}, points, normals);
         for (std::size_t i = 0; i < points.size(); ++i)
             for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
                 bool near = false;
