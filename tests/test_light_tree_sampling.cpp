@@ -52,7 +52,9 @@ TreeScene tree_scene(const LightTree& tree, std::size_t light_count)
     return s;
 }
 
-TreeScene make_scene()
+// The lights of make_scene: point lights, spots and one-sided emitters of varied power
+// scattered through an 8 m cube, a panel of 128 triangles and a sun.
+std::vector<LightBounds> make_lights()
 {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -97,7 +99,12 @@ TreeScene make_scene()
     sun.infinite = true;
     sun.phi = 20.0;
     lights[7] = sun;
-    return tree_scene(build_light_tree(lights), kLights);
+    return lights;
+}
+
+TreeScene make_scene()
+{
+    return tree_scene(build_light_tree(make_lights()), kLights);
 }
 
 struct Shading {
@@ -224,6 +231,66 @@ int check_picks(const std::vector<KernelPatch>& patches, bool report)
 TEST(LightTreeSampling, PicksFollowThePmfAndReportIt)
 {
     check_picks({}, true);
+}
+
+// Whether light b can send light to p, as its bounds say (from some corner of its box,
+// along a direction within theta_o + theta_e of its axis), with no surface at p; *near
+// where that is decided within `margin` radians.
+bool reaches(const LightBounds& b, const glm::dvec3& p, double margin, bool* near)
+{
+    *near = false;
+    if (b.infinite || !(b.phi > 0.0))
+        return b.infinite && b.phi > 0.0;
+    if (b.cone.cos_o <= -1.0)
+        return true; // every direction (a point light)
+    const double edge = std::acos(std::clamp(b.cone.cos_o, -1.0, 1.0)) + std::acos(std::clamp(b.cone.cos_e, -1.0, 1.0));
+    double closest = INFINITY; // the smallest angle to the axis of a direction from a corner
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 x(corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y, corner & 4 ? b.hi.z : b.lo.z);
+        const glm::dvec3 d = glm::normalize(p - x);
+        closest = std::min(closest, std::acos(std::clamp(glm::dot(d, glm::normalize(b.cone.axis)), -1.0, 1.0)));
+    }
+    *near = std::abs(closest - edge) < margin;
+    return closest < edge;
+}
+
+TEST(LightTreeSampling, EveryLightThatReachesAPointHasAPmfAboveZero)
+{
+    // The pmf may favour any light, but one of pmf 0 is never sampled: where it can light
+    // the point, its light is missing from the image (a bias no frequency test sees, since
+    // the picks follow the pmf all the same). Points all over the lights' cube, among
+    // them and inside most nodes' spheres, and beyond it; no surface at them.
+    const std::vector<LightBounds> lights = make_lights();
+    static const TreeScene scene = make_scene();
+    cl::Program program =
+        test::build_test_program("light_tree_test_kernels.cl", FEATURE_AREA_LIGHTS | FEATURE_LIGHT_TREE);
+    ClDevice& dev = test::test_device();
+    DeviceArrays a = upload_arrays(dev, scene.arrays, 1);
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> u(-5.0, 5.0);
+    std::size_t checked = 0, missing = 0;
+    std::string first;
+    for (int k = 0; k < 96; ++k) {
+        const double scale = k < 80 ? 1.0 : 10.0;
+        const glm::dvec3 p(scale * u(rng), scale * u(rng), scale * u(rng));
+        const pcl_float4 ref{float(p.x), float(p.y), float(p.z), 0.0f}, no_normal{0.0f, 0.0f, 0.0f, 0.0f};
+        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, kLights * sizeof(float));
+        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+        bind_kernel(pmf_kernel, a, scene.frame, ref, no_normal, pmf_out);
+        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(kLights));
+        const std::vector<float> pmf = test::read_back<float>(pmf_out, kLights);
+        const glm::dvec3 at(ref.x, ref.y, ref.z);
+        for (std::size_t l = 0; l < kLights; ++l) {
+            bool near = false;
+            if (!reaches(lights[l], at, 1e-3, &near) || near)
+                continue;
+            ++checked;
+            if (!(pmf[l] > 0.0f) && missing++ == 0)
+                first = "light " + std::to_string(l) + " at point " + std::to_string(k);
+        }
+    }
+    EXPECT_GT(checked, 12000u);
+    EXPECT_EQ(missing, 0u) << "of " << checked << " lights that reach their point; first: " << first;
 }
 
 TEST(LightTreeSampling, AClusterThatAlwaysTakesItsFirstSlotFails)
