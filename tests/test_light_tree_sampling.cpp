@@ -503,7 +503,7 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
         return glm::dvec3(r * std::cos(a), r * std::sin(a), z);
     };
     std::size_t compared = 0, inside = 0, off = 0;
-    std::string worst;
+    std::string first;
     for (int t = 0; t < 48; ++t) {
         LightTreeNode node{};
         for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
@@ -555,14 +555,14 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
                 inside += glm::dot(d, d) <= double(node.radius2.s[k]) ? 1 : 0;
                 if (!(std::abs(got - expected) <= 1e-4 * scale)) {
                     if (off++ == 0)
-                        worst = "node " + std::to_string(t) + " lane " + std::to_string(k) + " point " +
+                        first = "node " + std::to_string(t) + " lane " + std::to_string(k) + " point " +
                                 std::to_string(i) + ": " + std::to_string(got) + " against " + std::to_string(expected);
                 }
             }
     }
     EXPECT_GT(compared, 15000u);
     EXPECT_GT(inside, 2000u);
-    EXPECT_EQ(off, 0u) << "of " << compared << " (" << inside << " inside the sphere), first: " << worst;
+    EXPECT_EQ(off, 0u) << "of " << compared << " (" << inside << " inside the sphere), first: " << first;
 }
 
 // How close light_tree_pmf comes to the ideal pmf q over emitters (one-sided triangles)
