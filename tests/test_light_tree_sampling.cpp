@@ -52,16 +52,21 @@ TreeScene tree_scene(const LightTree& tree, std::size_t light_count)
     return s;
 }
 
+// A direction uniform on the sphere from two of rng's numbers.
+glm::dvec3 random_direction(std::mt19937& rng)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double z = 2.0 * u(rng) - 1.0, phi = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
+    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
 // The lights of make_scene: point lights, spots and one-sided emitters of varied power
 // scattered through an 8 m cube, a panel of 128 triangles and a sun.
 std::vector<LightBounds> make_lights()
 {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto direction = [&] {
-        double z = 2.0 * u(rng) - 1.0, phi = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
-        return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
-    };
+    auto direction = [&] { return random_direction(rng); };
     // A panel of 8 x 8 quads, two triangles each, facing +y at y = -1: their powers varied
     // by up to 3x, so that a cluster's pick by power differs from a uniform one.
     std::vector<LightBounds> lights(kLights);
@@ -157,6 +162,18 @@ double chi_square_p_value(const std::vector<std::size_t>& counts, const std::vec
     return test::chi_square_survival(statistic, cells - 1);
 }
 
+// light_tree_pmf of each of the first `count` lights at (ref, n), through test_light_tree_pmf.
+std::vector<float> light_pmfs(const cl::Program& program, const DeviceArrays& a, const FrameParams& frame,
+                              const pcl_float4& ref, const pcl_float4& n, std::size_t count)
+{
+    ClDevice& dev = test::test_device();
+    cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, count * sizeof(float));
+    cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
+    bind_kernel(pmf_kernel, a, frame, ref, n, pmf_out);
+    dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(count));
+    return test::read_back<float>(pmf_out, count);
+}
+
 // Runs the checks at every shading point; returns how many points failed the chi-square
 // test (the other checks are expectations).
 int check_picks(const std::vector<KernelPatch>& patches, bool report)
@@ -171,11 +188,7 @@ int check_picks(const std::vector<KernelPatch>& patches, bool report)
     int failed = 0;
     for (std::size_t k = 0; k < points.size(); ++k) {
         const Shading& sp = points[k];
-        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, kLights * sizeof(float));
-        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
-        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(kLights));
-        std::vector<float> pmf = test::read_back<float>(pmf_out, kLights);
+        const std::vector<float> pmf = light_pmfs(program, a, scene.frame, sp.ref, sp.n, kLights);
 
         cl::Buffer light_out(dev.context, CL_MEM_WRITE_ONLY, kPicks * sizeof(int));
         cl::Buffer pick_pmf_out(dev.context, CL_MEM_WRITE_ONLY, kPicks * sizeof(float));
@@ -274,11 +287,7 @@ TEST(LightTreeSampling, EveryLightThatReachesAPointHasAPmfAboveZero)
         const double scale = k < 80 ? 1.0 : 10.0;
         const glm::dvec3 p(scale * u(rng), scale * u(rng), scale * u(rng));
         const pcl_float4 ref{float(p.x), float(p.y), float(p.z), 0.0f}, no_normal{0.0f, 0.0f, 0.0f, 0.0f};
-        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, kLights * sizeof(float));
-        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-        bind_kernel(pmf_kernel, a, scene.frame, ref, no_normal, pmf_out);
-        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(kLights));
-        const std::vector<float> pmf = test::read_back<float>(pmf_out, kLights);
+        const std::vector<float> pmf = light_pmfs(program, a, scene.frame, ref, no_normal, kLights);
         const glm::dvec3 at(ref.x, ref.y, ref.z);
         for (std::size_t l = 0; l < kLights; ++l) {
             bool near = false;
@@ -498,10 +507,7 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
     // off, with a random normal or none, against the bound in double.
     std::mt19937 rng(31);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto direction = [&] {
-        const double z = 2.0 * u(rng) - 1.0, a = 2.0 * std::numbers::pi * u(rng), r = std::sqrt(1.0 - z * z);
-        return glm::dvec3(r * std::cos(a), r * std::sin(a), z);
-    };
+    auto direction = [&] { return random_direction(rng); };
     std::size_t compared = 0, inside = 0, off = 0;
     std::string first;
     for (int t = 0; t < 48; ++t) {
@@ -527,7 +533,6 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
             node.child.s[k] = -1 - k;
         }
         std::vector<pcl_float4> points, normals;
-        std::vector<glm::dvec3> refs, ns;
         for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
             const glm::dvec3 c(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
             const double r = std::sqrt(double(node.radius2.s[k]));
@@ -537,19 +542,20 @@ TEST(LightTreeSampling, ImportanceIsTheBoundItsCommentDefines)
                     const glm::dvec3 nrm = j % 2 ? direction() : glm::dvec3(0.0);
                     points.push_back({float(p.x), float(p.y), float(p.z), 0.0f});
                     normals.push_back({float(nrm.x), float(nrm.y), float(nrm.z), 0.0f});
-                    refs.emplace_back(double(points.back().x), double(points.back().y), double(points.back().z));
-                    ns.emplace_back(double(normals.back().x), double(normals.back().y), double(normals.back().z));
                 }
         }
         const std::vector<float> importance = root_lane_importances({node}, points, normals);
         for (std::size_t i = 0; i < points.size(); ++i)
             for (int k = 0; k < LIGHT_TREE_WIDTH; ++k) {
+                // The point and normal as the kernel reads them.
+                const glm::dvec3 ref(points[i].x, points[i].y, points[i].z),
+                    n(normals[i].x, normals[i].y, normals[i].z);
                 bool near = false;
-                const double expected = reference_importance(node, k, refs[i], ns[i], 1e-3, &near);
+                const double expected = reference_importance(node, k, ref, n, 1e-3, &near);
                 if (near)
                     continue;
                 const double got = importance[i * LIGHT_TREE_WIDTH + std::size_t(k)];
-                const glm::dvec3 d = refs[i] - glm::dvec3(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
+                const glm::dvec3 d = ref - glm::dvec3(node.centre_x.s[k], node.centre_y.s[k], node.centre_z.s[k]);
                 const double scale = double(node.phi.s[k]) / std::max(glm::dot(d, d), double(node.radius2.s[k]));
                 ++compared;
                 inside += glm::dot(d, d) <= double(node.radius2.s[k]) ? 1 : 0;
@@ -588,11 +594,7 @@ std::vector<PickMoments> pick_moments(const test::GlowingSphere& emitters, const
         area_sum += area;
     std::vector<PickMoments> moments;
     for (const Shading& sp : points) {
-        cl::Buffer pmf_out(dev.context, CL_MEM_WRITE_ONLY, lights.size() * sizeof(float));
-        cl::Kernel pmf_kernel(program, "test_light_tree_pmf");
-        bind_kernel(pmf_kernel, a, scene.frame, sp.ref, sp.n, pmf_out);
-        dev.queue.enqueueNDRangeKernel(pmf_kernel, cl::NullRange, cl::NDRange(lights.size()));
-        const std::vector<float> pmf = test::read_back<float>(pmf_out, lights.size());
+        const std::vector<float> pmf = light_pmfs(program, a, scene.frame, sp.ref, sp.n, lights.size());
         const glm::dvec3 p(sp.ref.x, sp.ref.y, sp.ref.z), n(sp.n.x, sp.n.y, sp.n.z);
         std::vector<double> q(lights.size());
         double q_sum = 0.0;
