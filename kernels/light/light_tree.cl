@@ -69,10 +69,11 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     float8 sin_b = select((float8)(0.0f), fmin(radius * inv_dist, 1.0f), outside); /* inv_dist finite */
     float8 cos_o = node->cos_o, sin_o = node->sin_o, cos_e = node->cos_e;
     /* theta_o + theta_b, at most pi (past it, pi: every direction within it either way).
-     * Past pi where its sine is negative, and inside the sphere (theta_b = pi), where the
-     * sum may be 2 pi, of sine -0 and cosine 1. */
+     * It reaches pi where theta_o >= pi - theta_b, cos_o <= -cos_b: decided on the stored
+     * cosines, not on the sign of the sum's sine, which is -0 at 2 pi (a cone of every
+     * direction seen from inside its sphere). */
     float8 cos_ob = cos_o * cos_b - sin_o * sin_b, sin_ob = sin_o * cos_b + cos_o * sin_b;
-    int8 past_pi = (sin_ob < 0.0f) | (outside == 0);
+    int8 past_pi = cos_o <= -cos_b;
     cos_ob = select(cos_ob, (float8)(-1.0f), past_pi);
     sin_ob = select(sin_ob, (float8)(0.0f), past_pi);
     float8 cos_p = cos_of_clamped_difference8(cos_w, sin_w, cos_ob, sin_ob);
