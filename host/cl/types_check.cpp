@@ -32,9 +32,10 @@ static_assert(sizeof(SphereLight) == 32 && offsetof(SphereLight, radius) == 16);
 static_assert(sizeof(Light) == 96 && offsetof(Light, radiance) == 64 && offsetof(Light, type) == 80 &&
               offsetof(Light, leaf_node) == 84 && offsetof(Light, leaf_block) == 88);
 static_assert(sizeof(LightAliasEntry) == 16 && offsetof(LightAliasEntry, alias) == 8);
-static_assert(sizeof(LightTreeNode) == 448 && offsetof(LightTreeNode, phi) == 128 &&
-              offsetof(LightTreeNode, cos_e) == 320 && offsetof(LightTreeNode, child) == 352 &&
-              offsetof(LightTreeNode, two_sided) == 384 && offsetof(LightTreeNode, code) == 416);
+static_assert(sizeof(LightTreeNode) == 512 && offsetof(LightTreeNode, phi) == 128 &&
+              offsetof(LightTreeNode, cos_e) == 320 && offsetof(LightTreeNode, mean_axis_across) == 384 &&
+              offsetof(LightTreeNode, child) == 416 && offsetof(LightTreeNode, two_sided) == 448 &&
+              offsetof(LightTreeNode, code) == 480);
 static_assert(sizeof(LightTreeClusterLight) == 16 && offsetof(LightTreeClusterLight, keep) == 8 &&
               offsetof(LightTreeClusterLight, alias) == 12);
 static_assert(sizeof(Camera) == 80 && offsetof(Camera, type) == 64 && offsetof(Camera, lens_radius) == 68 &&

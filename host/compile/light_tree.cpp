@@ -886,6 +886,18 @@ private:
         node.sin_o.s[k] = float_up(std::sqrt(std::max(0.0, 1.0 - double(cos_o) * double(cos_o))));
         node.cos_e.s[k] = float_down(b.cone.cos_e);
         node.two_sided.s[k] = b.two_sided ? -1 : 0;
+        // The mean axis, for the estimate between the bounds; none where the cone holds
+        // every direction (its lights' axes say nothing: a point light's is arbitrary) or
+        // where lights emit from both sides.
+        float along = 0.0f, across = 0.0f;
+        if (!b.two_sided && b.cone.cos_o > -1.0 && b.phi > 0.0) {
+            const glm::dvec3 m = b.axis_sum / b.phi;
+            const double a = glm::dot(m, b.cone.axis);
+            along = static_cast<float>(a);
+            across = static_cast<float>(glm::length(m - a * b.cone.axis));
+        }
+        node.mean_axis_along.s[k] = along;
+        node.mean_axis_across.s[k] = across;
     }
 
     const BinaryTree& binary_;

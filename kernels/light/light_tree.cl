@@ -28,8 +28,8 @@ static inline float8 cos_of_clamped_difference8(float8 cos_a, float8 sin_a, floa
 }
 
 /* The importance of each of a node's eight children at the point ref with shading normal
- * n (zero: none): the mean of an upper and a lower bound on how much of its power can
- * reach the point. The upper bound (Conty Estevez and Kulla 2018) is
+ * n (zero: none): an estimate of how much of its power reaches the point, held between an
+ * upper and a lower bound. The upper bound (Conty Estevez and Kulla 2018) is
  *   phi cos(theta') / d^2, times cos(theta'_i) at a surface,
  * where d is the distance to its bounding sphere's centre (at least its radius), theta'
  * the smallest angle between the direction from it to the point and any direction its
@@ -37,11 +37,18 @@ static inline float8 cos_of_clamped_difference8(float8 cos_a, float8 sin_a, floa
  * and theta'_i the smallest angle between the normal (either side: transmission) and any
  * direction to the sphere. The lower bound takes the largest angles instead,
  * theta + theta_o + theta_b and theta_i + theta_b, and is 0 unless every light of the
- * child emits towards every point of the sphere around the point's direction. Alone, the
- * upper bound weighs a child that might face the point (a patch of a glowing sphere seen
- * edge-on) like one that surely does; with the mean, the child that surely does counts up
- * to twice as much (Cycles' light tree mixes the two bounds too). Zero where none of its
- * lights can emit towards the point, and in empty lanes. */
+ * child emits towards every point of the sphere around the point's direction. The
+ * estimate is what Lambertian emitters at the centre would send towards the point:
+ *   phi max(0, m . w) / d^2, times cos(theta'_i) at a surface,
+ * with m the power-weighted mean of their normals (m . w is at least mean_axis_along
+ * cos(theta) - mean_axis_across sin(theta)). It comes close to what a small patch of
+ * emitters that all face the point sends, where the upper bound weighs a patch of a
+ * glowing sphere seen edge-on like one that faces the point. The importance is
+ *   s upper + (1 - s) min(upper, max(lower, estimate)),  s = LIGHT_TREE_UPPER_SHARE:
+ * the share s of the upper bound keeps every child that might reach the point above 0
+ * (the pmf must be wherever the light can be), and bounds how far an estimate that is
+ * too low (emitters that face every way, whose mean normal is short) can lower a child's
+ * weight. Zero where none of its lights can emit towards the point, and in empty lanes. */
 static inline float8 light_tree_importance(__global const LightTreeNode* node, float3 ref, float3 n)
 {
     /* Every cosine and sine of an angle at the point comes from a product with the
@@ -85,16 +92,20 @@ static inline float8 light_tree_importance(__global const LightTreeNode* node, f
     float8 cos_wbo = cos_w * cos_ob - sin_w * sin_ob, sin_wbo = sin_w * cos_ob + cos_w * sin_ob;
     int8 inside_e = (cos_w >= 0.0f) & (cos_b >= 0.0f) & (cos_o >= 0.0f) & (sin_wbo >= 0.0f) & (cos_wbo >= cos_e);
     float8 low = select((float8)(0.0f), node->phi * cos_wbo * inv_d2, inside_e);
+    float8 estimate = node->phi * fmax(node->mean_axis_along * cos_w - node->mean_axis_across * sin_w, 0.0f) * inv_d2;
     if (any(n != 0.0f)) {
         float8 dot_i = (float8)(n.x) * dx + (float8)(n.y) * dy + (float8)(n.z) * dz;
         float8 cos_i = select((float8)(1.0f), fmin(fabs(dot_i) * inv_dist, 1.0f), apart);
         float8 sin_i = sqrt(fmax(0.0f, 1.0f - cos_i * cos_i));
-        importance *= cos_of_clamped_difference8(cos_i, sin_i, cos_b, sin_b);
+        float8 cos_pi = cos_of_clamped_difference8(cos_i, sin_i, cos_b, sin_b);
+        importance *= cos_pi;
+        estimate *= cos_pi;
         low *= fmax(cos_i * cos_b - sin_i * sin_b, 0.0f);
     }
     int8 reaches = (cos_p >= node->cos_e) & (node->phi > 0.0f);
     importance = select((float8)(0.0f), fmax(importance, 0.0f), reaches);
-    return 0.5f * (importance + fmin(fmax(low, 0.0f), importance));
+    float8 between = fmin(fmax(fmax(low, estimate), 0.0f), importance);
+    return LIGHT_TREE_UPPER_SHARE * importance + (1.0f - LIGHT_TREE_UPPER_SHARE) * between;
 }
 
 /* The weights of a node's children at (ref, n) in weight[] (the largest 1; a child of
