@@ -318,9 +318,10 @@ typedef struct {
 #define LIGHT_TREE_MAX_LEAF_INDEX 0x0fffffff
 #define LIGHT_TREE_CLUSTER_MAX 256
 /* The share of a child's importance given by its upper bound alone (light_tree_importance):
- * the rest by an estimate between its bounds. Of 0.1, 0.15, 0.2, 0.25, 0.3 and 0.5 (the
- * mean of the bounds) this brought the picks' second moment closest to the ideal's over a
- * glowing sphere and randomly turned cubes together (LightTreeSampling.Picks*Ideal). */
+ * the rest by an estimate between its bounds. Lower shares bring the picks over a glowing
+ * sphere closer to the ideal, higher ones those over randomly turned cubes, whose mean
+ * normals say little; 0.2 improves both most together (docs/accuracy.md; the tests
+ * LightTreeSampling.Picks*Ideal). */
 #define LIGHT_TREE_UPPER_SHARE 0.2f
 
 /* An entry of light_tree_cluster. A cluster is a header (light: the number of its lights)

@@ -65,7 +65,7 @@ LightTree build_light_tree(const std::vector<Light>& lights, const std::vector<d
 // point, spot and sphere lights) spread over at least a quarter of the scene's diagonal,
 // and the power table elsewhere (and always with the wavefront, whose stages have no
 // tree). Measured (docs/accuracy.md, "Light samplers"): the tree gains 1.5-5.7x where
-// lamps light different rooms and 2.3-3.0x on a glowing sphere of a hundred thousand
+// lamps light different rooms and 4.2-5.0x on a glowing sphere of a hundred thousand
 // triangles, and loses 17-32 % on one area light.
 LightSampler resolve_light_sampler(const Scene& scene, const RenderOptions& options);
 
