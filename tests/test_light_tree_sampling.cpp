@@ -455,9 +455,10 @@ TEST(LightTreeSampling, LanesOverPointLightsReachPointsInsideTheirSpheres)
 }
 
 // light_tree_importance as its comment defines it (the bounds and the estimate between
-// them), in double and with the angles themselves, for lane k of `node` at point ref with normal n (zero: none). Sets
-// *near where ref lies within `margin` of one of the bound's edges (the sphere's surface, theta' = theta_e, the lower
-// bound's conditions), where float and double may fall on different sides.
+// them), in double and with the angles themselves, for lane k of `node` at point ref with
+// normal n (zero: none). Sets *near where ref lies within `margin` of one of the bounds'
+// edges (the sphere's surface, theta' = theta_e, the lower bound's conditions), where
+// float and double may fall on different sides.
 double reference_importance(const LightTreeNode& node, int k, const glm::dvec3& ref, const glm::dvec3& n, double margin,
                             bool* near)
 {
