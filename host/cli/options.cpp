@@ -121,8 +121,8 @@ void add_render_options(CLI::App* command, RenderOptions& options, std::string& 
     add_enum_option(command, "--triangle-sampling", options.triangle_sampling, triangle_samplings,
                     "how a light sample finds a point on an emissive triangle: area (uniform by area), solid-angle "
                     "(uniform within the solid angle it subtends where it looks large: area over squared distance "
-                    "above 0.3), or auto (solid-angle where a surface lies that close in front of an emitter, else "
-                    "area; area with the wavefront integrator)")
+                    "above 0.3), or auto (solid-angle where half the emitters' light meets surfaces that close, or a "
+                    "surface comes very close to one, else area; area with the wavefront integrator)")
         ->group(kSamplingGroup);
     add_sampler_option(command, options.sampler)->group(kSamplingGroup);
     command

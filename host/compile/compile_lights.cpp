@@ -8,15 +8,11 @@
 
 #include "compile/compile_scene.h"
 #include "compile/environment.h"
+#include "compile/luminance.h"
 #include "compile/texture_lookup.h"
 
 namespace pathcl {
 namespace {
-
-double luminance(const glm::vec3& c)
-{
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
 
 // Luminance with a floor, so that every light keeps a (tiny) power.
 double power_luminance(const glm::vec3& c)

@@ -1,8 +1,9 @@
-// What --triangle-sampling auto decides from the scene: whether any surface lies in front
-// of an emissive triangle close enough that the kernels would sample that triangle by
-// solid angle there (its area over the squared distance to its centroid above
-// TRIANGLE_SOLID_ANGLE_MIN, kernels/light/triangle_sampling.h). Where none does, solid-angle
-// sampling would only test every light sample and gain nothing (3-6 % of the samples per
+// What --triangle-sampling auto decides from the scene: whether emissive triangles send
+// enough of their light onto surfaces close enough that the kernels sample them by solid
+// angle there (area over the squared distance to the centroid above
+// TRIANGLE_SOLID_ANGLE_MIN, kernels/light/triangle_sampling.h), or onto one so close that
+// area sampling's rare samples on its near part carry huge weights. Elsewhere solid-angle
+// sampling would test every light sample and gain too little (3-6 % of the samples per
 // second on the Cornell box and the textured scene, docs/accuracy.md), so auto compiles
 // area sampling alone, bit for bit the same as --triangle-sampling area.
 #pragma once
@@ -12,14 +13,19 @@
 
 namespace pathcl {
 
-// Whether some triangle of the scene other than the emitter itself has a point in front
-// of an emissive triangle's plane (by more than the rounding of float coordinates) and
-// within sqrt(area / TRIANGLE_SOLID_ANGLE_MIN) of its centroid. Instanced copies of
-// meshes are not looked at.
-bool surfaces_near_emitters(const Scene& scene);
+// How much of the emissive triangles' light meets other surfaces near them, where the
+// kernels would sample them by solid angle: sent from each one's centroid in directions
+// of density cos / pi, the first triangle met within sqrt(area / TRIANGLE_SOLID_ANGLE_MIN)
+// (instanced copies of meshes are not looked at).
+struct NearEmitters {
+    double power_share = 0.0; // of the emitters' power (area x luminance of the emission)
+    double closeness = 0.0;   // the largest area / t^2 of an emitter whose light meets one at t
+};
+NearEmitters near_emitters(const Scene& scene);
 
 // The triangle sampling a render uses: auto is area with the wavefront integrator (which
-// has only area) and where no surface is near an emitter, else solid-angle.
+// has only area), solid-angle where near_emitters finds at least half the emitters' power
+// meeting surfaces near them or a closeness of 10 or more, else area.
 TriangleSampling resolve_triangle_sampling(const Scene& scene, const RenderOptions& options);
 
 } // namespace pathcl

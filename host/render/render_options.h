@@ -70,7 +70,7 @@ inline const char* light_sampler_name(LightSampler s)
 enum class TriangleSampling : std::uint32_t {
     Area,       // uniformly by area
     SolidAngle, // uniformly within the solid angle it subtends, where that is large enough
-    Auto,       // solid-angle where a surface is near an emitter (compile/near_emitters.h), else area
+    Auto,       // solid-angle where emitters light surfaces near them (compile/near_emitters.h), else area
 };
 
 // "area", "solid-angle" or "auto".
