@@ -18,13 +18,13 @@ namespace pathcl {
 namespace {
 
 // When auto samples by solid angle: where at least kNearPowerShare of the emitters'
-// power lands near them, or where a surface comes so close to one that an emitter's area
-// over the squared distance along some direction it sends light reaches kNearCloseness.
+// power lands near them, or where a surface comes so close to one that the emitter's area
+// over the squared distance from its centroid to the surface reaches kNearCloseness.
 // Measured (docs/accuracy.md, "Triangle sampling"), solid-angle against area sampling's
 // error per sample: a 1 x 0.5 m panel parallel to a wall and a floor 3 cm to 40 cm away
 // (share 1.0 to 0.85) 1.47-1.65x, at 80 cm (share 0.23, closeness 0.39) 1.08x, about what
-// the test every light sample takes costs; the textured scene (0.14, 1.5) 1.01x for about
-// 6 % of its speed; 384 lamps, a few against the walls (0.015, 56) 1.10x.
+// the test every light sample takes costs; the textured scene (0.14, 1.7) 1.01x for about
+// 6 % of its speed; 384 lamps, a few against the walls (0.015, 58) 1.10x.
 constexpr double kNearPowerShare = 0.5;
 constexpr double kNearCloseness = 10.0;
 
@@ -145,11 +145,11 @@ double segment_distance2(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
     return glm::dot(d, d);
 }
 
-// Whether triangle v has a point in region r: the part of it in front of the plane
-// (x - centre) . normal = margin, clipped, within r.radius of the centre. The margin
+// The squared distance from region r's centre to the nearest point of triangle v in
+// front of the plane (x - centre) . normal = margin (INFINITY where none is). The margin
 // (about 8 float ulps of the coordinates) keeps out neighbours that the rounding of float
 // vertices puts in front of a curved mesh's triangle.
-bool reaches_region(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
+double front_distance2(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
 {
     const glm::dvec3 size = glm::abs(r.centre) + glm::dvec3(r.radius);
     const double margin = 1e-6 * std::max({size.x, size.y, size.z});
@@ -164,25 +164,22 @@ bool reaches_region(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
             poly[count++] = a + (da / (da - db)) * (b - a);
     }
     if (count == 0)
-        return false;
-    const double radius2 = r.radius * r.radius;
+        return INFINITY;
     double best = INFINITY;
     for (std::size_t k = 0; k < count; ++k)
         best = std::min(best, segment_distance2(r.centre, poly[k], poly[(k + 1) % count]));
-    if (best < radius2)
-        return true;
     // The centre's projection inside the clipped polygon: its distance is the plane's.
     const glm::dvec3 m = glm::cross(v[1] - v[0], v[2] - v[0]);
     const double m_len = glm::length(m);
     if (!(m_len > 0.0))
-        return false;
+        return best;
     const glm::dvec3 unit = m / m_len;
     const double h = glm::dot(r.centre - v[0], unit);
     const glm::dvec3 q = r.centre - h * unit;
     for (std::size_t k = 0; k < count; ++k)
         if (glm::dot(glm::cross(poly[(k + 1) % count] - poly[k], q - poly[k]), unit) < 0.0)
-            return false;
-    return h * h < radius2;
+            return best;
+    return std::min(best, h * h);
 }
 
 // The distance along the ray o + t d (d unit) to triangle v, or INFINITY where it misses
@@ -217,40 +214,60 @@ std::array<glm::dvec3, kNearRays> cosine_directions()
     return d;
 }
 
-// What light from emitters meets near them: the share of their power that meets a
-// surface within their regions, and the largest area / t^2 along a direction where one
-// does at distance t.
-struct NearLight {
-    double power = 0.0;
-    double closeness = 0.0;
+// The triangles that reach a region, in groups of kChunk in their order in the scene
+// (neighbours in a mesh, mostly), each group with its box: a ray skips the groups whose
+// box it misses, so a dense mesh near a large emitter costs a box test per group.
+constexpr std::size_t kChunk = 32;
+struct Reaching {
+    std::vector<std::array<glm::dvec3, 3>> triangles;
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes; // of triangles [kChunk k, kChunk (k + 1))
+    void clear()
+    {
+        triangles.clear();
+        boxes.clear();
+    }
+    void add(const std::array<glm::dvec3, 3>& v)
+    {
+        const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
+        if (triangles.size() % kChunk == 0)
+            boxes.emplace_back(lo, hi);
+        boxes.back() = {glm::min(boxes.back().first, lo), glm::max(boxes.back().second, hi)};
+        triangles.push_back(v);
+    }
 };
 
-// Region r's emitter's light, sent from its centroid: kNearRays directions, each meeting
-// the nearest of `reaching` (the triangles that reach the region), counted where it lies
-// within the region.
-NearLight near_light(const Scene& scene, const NearRegion& r, const std::vector<std::uint32_t>& reaching,
-                     const std::array<glm::dvec3, kNearRays>& directions)
+// Whether the ray o + t d, 0 < t < t_max, passes through the box (the slab test; a
+// direction's zero components give infinite reciprocals, which it handles).
+bool ray_meets_box(const glm::dvec3& o, const glm::dvec3& inv_d, double t_max, const glm::dvec3& lo,
+                   const glm::dvec3& hi)
+{
+    const glm::dvec3 t0 = (lo - o) * inv_d, t1 = (hi - o) * inv_d;
+    const glm::dvec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
+    const double enter = std::max({near.x, near.y, near.z, 0.0}), leave = std::min({far.x, far.y, far.z, t_max});
+    return enter <= leave;
+}
+
+// The power of region r's emitter that, sent from its centroid in kNearRays directions,
+// meets one of the triangles that reach the region within it.
+double near_power(const NearRegion& r, const Reaching& reaching, const std::array<glm::dvec3, kNearRays>& directions)
 {
     const glm::dvec3 n = r.normal;
     const glm::dvec3 a = std::abs(n.x) > 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
     const glm::dvec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
-    NearLight light;
     std::size_t hits = 0;
     for (const glm::dvec3& l : directions) {
-        const glm::dvec3 d = l.x * t + l.y * b + l.z * n;
-        double nearest = INFINITY;
-        for (std::uint32_t i : reaching) {
-            const SceneTriangle& tri = scene.triangles[i];
-            nearest = std::min(
-                nearest, ray_distance(r.centre, d, {glm::dvec3(tri.v[0]), glm::dvec3(tri.v[1]), glm::dvec3(tri.v[2])}));
+        const glm::dvec3 d = l.x * t + l.y * b + l.z * n, inv_d = 1.0 / d;
+        bool hit = false;
+        for (std::size_t c = 0; c < reaching.boxes.size() && !hit; ++c) {
+            if (!ray_meets_box(r.centre, inv_d, r.radius, reaching.boxes[c].first, reaching.boxes[c].second))
+                continue;
+            const std::size_t end = std::min(reaching.triangles.size(), (c + 1) * kChunk);
+            for (std::size_t i = c * kChunk; i < end && !hit; ++i)
+                hit = ray_distance(r.centre, d, reaching.triangles[i]) < r.radius;
         }
-        if (nearest < r.radius) {
-            ++hits;
-            light.closeness = std::max(light.closeness, r.area / (nearest * nearest));
-        }
+        hits += hit ? 1 : 0;
     }
-    light.power = r.power * static_cast<double>(hits) / kNearRays;
-    return light;
+    return r.power * static_cast<double>(hits) / kNearRays;
 }
 
 } // namespace
@@ -283,7 +300,9 @@ NearEmitters near_emitters(const Scene& scene)
     }
     if (regions.empty() || !(total > 0.0))
         return {};
-    // Which triangles reach each region, as (emitter triangle, triangle) pairs.
+    // Which triangles reach each region, as (emitter triangle, triangle) pairs, and how
+    // close the nearest comes.
+    NearEmitters result;
     const RegionTree tree(regions);
     std::vector<std::pair<std::size_t, std::uint32_t>> pairs;
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
@@ -291,25 +310,26 @@ NearEmitters near_emitters(const Scene& scene)
         const std::array<glm::dvec3, 3> v{glm::dvec3(t.v[0]), glm::dvec3(t.v[1]), glm::dvec3(t.v[2])};
         const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
         tree.any_overlapping(lo, hi, [&](const NearRegion& r) {
-            if (r.triangle != i && reaches_region(v, r))
+            const double d2 = r.triangle != i ? front_distance2(v, r) : INFINITY;
+            if (d2 < r.radius * r.radius) {
                 pairs.emplace_back(r.triangle, static_cast<std::uint32_t>(i));
+                result.closeness = std::max(result.closeness, r.area / d2);
+            }
             return false;
         });
     }
     std::sort(pairs.begin(), pairs.end());
     const std::array<glm::dvec3, kNearRays> directions = cosine_directions();
-    NearEmitters result;
-    std::vector<std::uint32_t> reaching;
+    Reaching reaching;
+    auto p = pairs.begin();
     for (const NearRegion& r : regions) { // in the order of their triangles, as pairs is
-        const auto first = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(r.triangle, std::uint32_t{0}));
         reaching.clear();
-        for (auto p = first; p != pairs.end() && p->first == r.triangle; ++p)
-            reaching.push_back(p->second);
-        if (reaching.empty())
-            continue;
-        const NearLight light = near_light(scene, r, reaching, directions);
-        result.power_share += light.power / total;
-        result.closeness = std::max(result.closeness, light.closeness);
+        for (; p != pairs.end() && p->first == r.triangle; ++p) {
+            const SceneTriangle& t = scene.triangles[p->second];
+            reaching.add({glm::dvec3(t.v[0]), glm::dvec3(t.v[1]), glm::dvec3(t.v[2])});
+        }
+        if (!reaching.triangles.empty())
+            result.power_share += near_power(r, reaching, directions) / total;
     }
     return result;
 }

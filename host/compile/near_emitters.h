@@ -14,12 +14,13 @@
 namespace pathcl {
 
 // How much of the emissive triangles' light meets other surfaces near them, where the
-// kernels would sample them by solid angle: sent from each one's centroid in directions
-// of density cos / pi, the first triangle met within sqrt(area / TRIANGLE_SOLID_ANGLE_MIN)
-// (instanced copies of meshes are not looked at).
+// kernels would sample them by solid angle (within sqrt(area / TRIANGLE_SOLID_ANGLE_MIN)
+// of an emitter's centroid, in front of it; sent from the centroid in 256 directions of
+// density cos / pi), and how close the nearest such surface comes. Instanced copies of
+// meshes are not looked at.
 struct NearEmitters {
     double power_share = 0.0; // of the emitters' power (area x luminance of the emission)
-    double closeness = 0.0;   // the largest area / t^2 of an emitter whose light meets one at t
+    double closeness = 0.0;   // the largest area / d^2 of an emitter with a surface d in front of it
 };
 NearEmitters near_emitters(const Scene& scene);
 
