@@ -236,8 +236,8 @@ struct Reaching {
     }
 };
 
-// Whether the ray o + t d, 0 < t < t_max, passes through the box (the slab test; a
-// direction's zero components give infinite reciprocals, which it handles).
+// Whether the ray o + t d, 0 < t < t_max, passes through the box (the slab test, with
+// the reciprocals of the direction's components: see reciprocal).
 bool ray_meets_box(const glm::dvec3& o, const glm::dvec3& inv_d, double t_max, const glm::dvec3& lo,
                    const glm::dvec3& hi)
 {
@@ -245,6 +245,16 @@ bool ray_meets_box(const glm::dvec3& o, const glm::dvec3& inv_d, double t_max, c
     const glm::dvec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
     const double enter = std::max({near.x, near.y, near.z, 0.0}), leave = std::min({far.x, far.y, far.z, t_max});
     return enter <= leave;
+}
+
+// 1 / d per component, a zero component's as 1 / 1e-300: finite, so that a slab the ray's
+// origin lies on gives 0 x that, not 0 x infinity (NaN, which would skip its box).
+glm::dvec3 reciprocal(const glm::dvec3& d)
+{
+    glm::dvec3 inv;
+    for (int k = 0; k < 3; ++k)
+        inv[k] = 1.0 / (d[k] != 0.0 ? d[k] : 1e-300);
+    return inv;
 }
 
 // The power of region r's emitter that, sent from its centroid in kNearRays directions,
@@ -256,7 +266,7 @@ double near_power(const NearRegion& r, const Reaching& reaching, const std::arra
     const glm::dvec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
     std::size_t hits = 0;
     for (const glm::dvec3& l : directions) {
-        const glm::dvec3 d = l.x * t + l.y * b + l.z * n, inv_d = 1.0 / d;
+        const glm::dvec3 d = l.x * t + l.y * b + l.z * n, inv_d = reciprocal(d);
         bool hit = false;
         for (std::size_t c = 0; c < reaching.boxes.size() && !hit; ++c) {
             if (!ray_meets_box(r.centre, inv_d, r.radius, reaching.boxes[c].first, reaching.boxes[c].second))
