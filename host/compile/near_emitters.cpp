@@ -52,12 +52,12 @@ public:
             build(0, regions_.size());
     }
 
-    // Calls test(region) for every region whose box overlaps [lo, hi] until it returns true.
-    template <typename Test>
-    bool any_overlapping(const glm::dvec3& lo, const glm::dvec3& hi, Test test) const
+    // Calls visit(region) for every region whose box overlaps [lo, hi].
+    template <typename Visit>
+    void for_each_overlapping(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) const
     {
         if (nodes_.empty())
-            return false;
+            return;
         std::array<std::uint32_t, 2 * kMaxDepth> stack;
         std::size_t top = 0;
         stack[top++] = 0;
@@ -68,15 +68,14 @@ public:
             if (n.count > 0) {
                 for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
                     const NearRegion& r = regions_[order_[i]];
-                    if (!glm::any(glm::lessThan(hi, r.lo)) && !glm::any(glm::greaterThan(lo, r.hi)) && test(r))
-                        return true;
+                    if (!glm::any(glm::lessThan(hi, r.lo)) && !glm::any(glm::greaterThan(lo, r.hi)))
+                        visit(r);
                 }
                 continue;
             }
             stack[top++] = n.first;
             stack[top++] = n.first + 1;
         }
-        return false;
     }
 
 private:
@@ -135,6 +134,18 @@ private:
     std::vector<Node> nodes_;
 };
 
+// A triangle's corners in double, and their box.
+using Corners = std::array<glm::dvec3, 3>;
+Corners corners(const SceneTriangle& t)
+{
+    return {glm::dvec3(t.v[0]), glm::dvec3(t.v[1]), glm::dvec3(t.v[2])};
+}
+
+std::pair<glm::dvec3, glm::dvec3> box_of(const Corners& v)
+{
+    return {glm::min(v[0], glm::min(v[1], v[2])), glm::max(v[0], glm::max(v[1], v[2]))};
+}
+
 // The squared distance from p to the segment a b.
 double segment_distance2(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
 {
@@ -149,7 +160,7 @@ double segment_distance2(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
 // front of the plane (x - centre) . normal = margin (INFINITY where none is). The margin
 // (about 8 float ulps of the coordinates) keeps out neighbours that the rounding of float
 // vertices puts in front of a curved mesh's triangle.
-double front_distance2(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
+double front_distance2(const Corners& v, const NearRegion& r)
 {
     const glm::dvec3 size = glm::abs(r.centre) + glm::dvec3(r.radius);
     const double margin = 1e-6 * std::max({size.x, size.y, size.z});
@@ -184,7 +195,7 @@ double front_distance2(const std::array<glm::dvec3, 3>& v, const NearRegion& r)
 
 // The distance along the ray o + t d (d unit) to triangle v, or INFINITY where it misses
 // (Moller-Trumbore in double; both sides).
-double ray_distance(const glm::dvec3& o, const glm::dvec3& d, const std::array<glm::dvec3, 3>& v)
+double ray_distance(const glm::dvec3& o, const glm::dvec3& d, const Corners& v)
 {
     const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0], p = glm::cross(d, e2);
     const double det = glm::dot(e1, p);
@@ -219,16 +230,16 @@ std::array<glm::dvec3, kNearRays> cosine_directions()
 // box it misses, so a dense mesh near a large emitter costs a box test per group.
 constexpr std::size_t kChunk = 32;
 struct Reaching {
-    std::vector<std::array<glm::dvec3, 3>> triangles;
+    std::vector<Corners> triangles;
     std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes; // of triangles [kChunk k, kChunk (k + 1))
     void clear()
     {
         triangles.clear();
         boxes.clear();
     }
-    void add(const std::array<glm::dvec3, 3>& v)
+    void add(const Corners& v)
     {
-        const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
+        const auto [lo, hi] = box_of(v);
         if (triangles.size() % kChunk == 0)
             boxes.emplace_back(lo, hi);
         boxes.back() = {glm::min(boxes.back().first, lo), glm::max(boxes.back().second, hi)};
@@ -316,16 +327,14 @@ NearEmitters near_emitters(const Scene& scene)
     const RegionTree tree(regions);
     std::vector<std::pair<std::size_t, std::uint32_t>> pairs;
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        const SceneTriangle& t = scene.triangles[i];
-        const std::array<glm::dvec3, 3> v{glm::dvec3(t.v[0]), glm::dvec3(t.v[1]), glm::dvec3(t.v[2])};
-        const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
-        tree.any_overlapping(lo, hi, [&](const NearRegion& r) {
+        const Corners v = corners(scene.triangles[i]);
+        const auto [lo, hi] = box_of(v);
+        tree.for_each_overlapping(lo, hi, [&](const NearRegion& r) {
             const double d2 = r.triangle != i ? front_distance2(v, r) : INFINITY;
             if (d2 < r.radius * r.radius) {
                 pairs.emplace_back(r.triangle, static_cast<std::uint32_t>(i));
                 result.closeness = std::max(result.closeness, r.area / d2);
             }
-            return false;
         });
     }
     std::sort(pairs.begin(), pairs.end());
@@ -334,10 +343,8 @@ NearEmitters near_emitters(const Scene& scene)
     auto p = pairs.begin();
     for (const NearRegion& r : regions) { // in the order of their triangles, as pairs is
         reaching.clear();
-        for (; p != pairs.end() && p->first == r.triangle; ++p) {
-            const SceneTriangle& t = scene.triangles[p->second];
-            reaching.add({glm::dvec3(t.v[0]), glm::dvec3(t.v[1]), glm::dvec3(t.v[2])});
-        }
+        for (; p != pairs.end() && p->first == r.triangle; ++p)
+            reaching.add(corners(scene.triangles[p->second]));
         if (!reaching.triangles.empty())
             result.power_share += near_power(r, reaching, directions) / total;
     }
